@@ -1,0 +1,205 @@
+//! Plane geometry on `[f64; 2]` points: polygon area, containment, segment intersection and
+//! distances, all in metres.
+
+/// A point in the plane, (x, y) in metres.
+pub type Point = [f64; 2];
+
+/// A simple polygon given by its vertices in order (either orientation), metres.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Polygon {
+    pub vertices: Vec<Point>,
+}
+
+impl Polygon {
+    pub fn new(vertices: Vec<Point>) -> Self {
+        Polygon { vertices }
+    }
+
+    /// A regular polygon inscribed in the circle of `radius` (m) about `center`, `segments` vertices,
+    /// the first at angle 0 (on the +x axis), counter-clockwise.
+    pub fn circle(center: Point, radius: f64, segments: usize) -> Self {
+        let vertices = (0..segments)
+            .map(|k| {
+                let t = std::f64::consts::TAU * k as f64 / segments as f64;
+                [center[0] + radius * t.cos(), center[1] + radius * t.sin()]
+            })
+            .collect();
+        Polygon { vertices }
+    }
+
+    pub fn len(&self) -> usize {
+        self.vertices.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.vertices.is_empty()
+    }
+
+    /// Edge `i` as its two end points (from vertex i to vertex i+1, wrapping).
+    pub fn edge(&self, i: usize) -> (Point, Point) {
+        let n = self.vertices.len();
+        (self.vertices[i], self.vertices[(i + 1) % n])
+    }
+
+    /// Signed area (m²) by the shoelace formula, positive when counter-clockwise.
+    pub fn signed_area(&self) -> f64 {
+        let n = self.vertices.len();
+        (0..n)
+            .map(|i| {
+                let (a, b) = self.edge(i);
+                a[0] * b[1] - b[0] * a[1]
+            })
+            .sum::<f64>()
+            * 0.5
+    }
+
+    /// Centroid of the enclosed area (m).
+    pub fn centroid(&self) -> Point {
+        let n = self.vertices.len();
+        let (mut cx, mut cy) = (0.0, 0.0);
+        for i in 0..n {
+            let (a, b) = self.edge(i);
+            let c = a[0] * b[1] - b[0] * a[1];
+            cx += (a[0] + b[0]) * c;
+            cy += (a[1] + b[1]) * c;
+        }
+        let a6 = 6.0 * self.signed_area();
+        [cx / a6, cy / a6]
+    }
+
+    /// Largest extent of the polygon's bounding box (m), used as a length scale for tolerances.
+    pub fn size(&self) -> f64 {
+        let (lo, hi) = self.bounds();
+        (hi[0] - lo[0]).max(hi[1] - lo[1])
+    }
+
+    /// Bounding box as (min corner, max corner), m.
+    pub fn bounds(&self) -> (Point, Point) {
+        let mut lo = [f64::INFINITY; 2];
+        let mut hi = [f64::NEG_INFINITY; 2];
+        for p in &self.vertices {
+            for d in 0..2 {
+                lo[d] = lo[d].min(p[d]);
+                hi[d] = hi[d].max(p[d]);
+            }
+        }
+        (lo, hi)
+    }
+
+    /// Whether `p` is strictly inside (even–odd ray crossing; points on the boundary are unreliable).
+    pub fn contains(&self, p: Point) -> bool {
+        let n = self.vertices.len();
+        let mut inside = false;
+        let mut j = n - 1;
+        for i in 0..n {
+            let (a, b) = (self.vertices[i], self.vertices[j]);
+            if (a[1] > p[1]) != (b[1] > p[1]) {
+                let x = a[0] + (p[1] - a[1]) / (b[1] - a[1]) * (b[0] - a[0]);
+                if p[0] < x {
+                    inside = !inside;
+                }
+            }
+            j = i;
+        }
+        inside
+    }
+
+    /// Distance (m) from `p` to the polygon's boundary.
+    pub fn boundary_distance(&self, p: Point) -> f64 {
+        (0..self.len())
+            .map(|i| {
+                let (a, b) = self.edge(i);
+                segment_distance(p, a, b)
+            })
+            .fold(f64::INFINITY, f64::min)
+    }
+
+    /// The first pair of non-adjacent edges that intersect, if any (O(n²), fine for scene polygons).
+    pub fn self_intersection(&self) -> Option<(usize, usize)> {
+        let n = self.len();
+        for i in 0..n {
+            for j in i + 1..n {
+                let adjacent = j == i + 1 || (i == 0 && j == n - 1);
+                if adjacent {
+                    continue;
+                }
+                let (a, b) = self.edge(i);
+                let (c, d) = self.edge(j);
+                if segments_intersect(a, b, c, d) {
+                    return Some((i, j));
+                }
+            }
+        }
+        None
+    }
+}
+
+/// Cross product (b − a) × (c − a), m².
+pub fn orient(a: Point, b: Point, c: Point) -> f64 {
+    (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+}
+
+/// Whether closed segments ab and cd share a point (touching counts).
+pub fn segments_intersect(a: Point, b: Point, c: Point, d: Point) -> bool {
+    let (d1, d2) = (orient(c, d, a), orient(c, d, b));
+    let (d3, d4) = (orient(a, b, c), orient(a, b, d));
+    if ((d1 > 0.0 && d2 < 0.0) || (d1 < 0.0 && d2 > 0.0))
+        && ((d3 > 0.0 && d4 < 0.0) || (d3 < 0.0 && d4 > 0.0))
+    {
+        return true;
+    }
+    let on = |p: Point, q: Point, r: Point, o: f64| {
+        o == 0.0
+            && r[0] >= p[0].min(q[0])
+            && r[0] <= p[0].max(q[0])
+            && r[1] >= p[1].min(q[1])
+            && r[1] <= p[1].max(q[1])
+    };
+    on(c, d, a, d1) || on(c, d, b, d2) || on(a, b, c, d3) || on(a, b, d, d4)
+}
+
+/// Distance (m) from point `p` to the closed segment ab.
+pub fn segment_distance(p: Point, a: Point, b: Point) -> f64 {
+    let (ex, ey) = (b[0] - a[0], b[1] - a[1]);
+    let len2 = ex * ex + ey * ey;
+    let t = if len2 > 0.0 {
+        (((p[0] - a[0]) * ex + (p[1] - a[1]) * ey) / len2).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    let (dx, dy) = (a[0] + t * ex - p[0], a[1] + t * ey - p[1]);
+    (dx * dx + dy * dy).sqrt()
+}
+
+/// Euclidean distance (m).
+pub fn distance(a: Point, b: Point) -> f64 {
+    ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2)).sqrt()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use approx::assert_relative_eq;
+
+    #[test]
+    fn square_area_centroid_and_containment() {
+        let sq = Polygon::new(vec![[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]]);
+        assert_relative_eq!(sq.signed_area(), 4.0);
+        assert_eq!(sq.centroid(), [1.0, 1.0]);
+        assert!(sq.contains([1.0, 1.5]));
+        assert!(!sq.contains([2.5, 1.0]));
+        assert!(sq.self_intersection().is_none());
+    }
+
+    #[test]
+    fn bow_tie_is_self_intersecting() {
+        let bow = Polygon::new(vec![[0.0, 0.0], [1.0, 1.0], [1.0, 0.0], [0.0, 1.0]]);
+        assert_eq!(bow.self_intersection(), Some((0, 2)));
+    }
+
+    #[test]
+    fn circle_area_converges() {
+        let c = Polygon::circle([0.0, 0.0], 1.0, 256);
+        assert_relative_eq!(c.signed_area(), std::f64::consts::PI, max_relative = 1e-3);
+    }
+}

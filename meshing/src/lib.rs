@@ -1,0 +1,12 @@
+//! Block geometry and triangulation for adit: polygons with holes, excavation shapes, and graded
+//! constrained-Delaunay zoning (spade) of a block into constant-strain triangles.
+
+pub mod domain;
+pub mod error;
+pub mod geometry;
+pub mod triangulate;
+
+pub use domain::{Domain, Hole};
+pub use error::MeshError;
+pub use geometry::{Point, Polygon};
+pub use triangulate::{BoundaryEdge, BoundaryPart, MeshStats, TriMesh, Zoning, triangulate};

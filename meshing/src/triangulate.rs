@@ -1,0 +1,471 @@
+//! Graded constrained-Delaunay zoning of a domain into triangles (spade 2.15).
+//!
+//! The local target edge length grows linearly away from the excavations,
+//! `h(p) = min(h_far, h_exc + g · d(p))`, where d is the distance to the nearest hole wall and g the
+//! grading. Boundaries are split to h, rings of points at spacing h are laid around each hole, and
+//! spade's Ruppert refinement (angle limit, global maximum area from h_far, outer faces excluded)
+//! fills the rest; see the meshing note of `design.md`.
+
+use std::collections::{HashMap, HashSet};
+
+use spade::{
+    AngleLimit, ConstrainedDelaunayTriangulation, Point2, RefinementParameters, Triangulation,
+};
+
+use crate::domain::Domain;
+use crate::error::MeshError;
+use crate::geometry::{Point, distance, segment_distance};
+
+/// Zoning controls. Lengths in metres.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Zoning {
+    /// Target zone edge length on excavation walls, m.
+    pub h_excavation: f64,
+    /// Target (maximum) zone edge length far from excavations, m.
+    pub h_far: f64,
+    /// Growth of the edge length per metre of distance from the nearest excavation (dimensionless).
+    pub grading: f64,
+    /// Minimum interior angle the refinement aims for, degrees (at most 33).
+    pub min_angle_deg: f64,
+    /// Upper bound on the number of triangles; exceeding it is an error rather than a runaway.
+    pub max_zones: usize,
+}
+
+/// Which part of the domain boundary an edge lies on.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum BoundaryPart {
+    /// Edge `i` of the region polygon.
+    Outer(usize),
+    /// Wall of hole `j`.
+    Hole(usize),
+}
+
+/// A boundary edge of the mesh, oriented with the material on its left (outward normal to the right).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BoundaryEdge {
+    pub nodes: [u32; 2],
+    pub part: BoundaryPart,
+}
+
+/// Mesh quality figures.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MeshStats {
+    pub zones: usize,
+    pub nodes: usize,
+    /// Smallest interior angle, degrees.
+    pub min_angle_deg: f64,
+    /// Shortest and longest edge, m.
+    pub min_edge: f64,
+    pub max_edge: f64,
+    /// Total zone area, m².
+    pub area: f64,
+}
+
+/// A triangle mesh: nodes, counter-clockwise triangles and labelled boundary edges.
+#[derive(Debug, Clone)]
+pub struct TriMesh {
+    pub points: Vec<Point>,
+    pub triangles: Vec<[u32; 3]>,
+    pub boundary: Vec<BoundaryEdge>,
+}
+
+impl Zoning {
+    fn check(&self) -> Result<(), MeshError> {
+        let bad = |what: &str| Err(MeshError::Zoning(what.into()));
+        if !(self.h_excavation > 0.0 && self.h_excavation.is_finite()) {
+            return bad("edge length at the excavation must be positive");
+        }
+        if !(self.h_far >= self.h_excavation && self.h_far.is_finite()) {
+            return bad("far edge length must be finite and at least the excavation edge length");
+        }
+        if !(self.grading > 0.0 && self.grading <= 2.0) {
+            return bad("grading must be in (0, 2]");
+        }
+        if !(self.min_angle_deg > 0.0 && self.min_angle_deg <= 33.0) {
+            return bad("minimum angle must be in (0, 33] degrees");
+        }
+        Ok(())
+    }
+}
+
+/// Target edge length (m) at `p`.
+fn target_size(domain: &Domain, z: &Zoning, p: Point) -> f64 {
+    let d = domain
+        .holes
+        .iter()
+        .map(|h| h.polygon.boundary_distance(p))
+        .fold(f64::INFINITY, f64::min);
+    if d.is_finite() {
+        (z.h_excavation + z.grading * d).min(z.h_far)
+    } else {
+        z.h_far
+    }
+}
+
+/// Split segment ab into pieces of the local target length; returns interior split points.
+fn split_segment(a: Point, b: Point, size: impl Fn(Point) -> f64) -> Vec<Point> {
+    let len = distance(a, b);
+    let at = |s: f64| {
+        [
+            a[0] + (b[0] - a[0]) * s / len,
+            a[1] + (b[1] - a[1]) * s / len,
+        ]
+    };
+    let mut marks = vec![0.0];
+    let mut s = 0.0;
+    while s < len {
+        s += size(at(s)).min(len);
+        marks.push(s);
+    }
+    let n = marks.len() - 1;
+    // Rescale so the last piece ends exactly at b; drop a last piece shorter than half its target.
+    let n = if n > 1 && (len - marks[n - 1]) < 0.5 * (marks[n] - marks[n - 1]) {
+        n - 1
+    } else {
+        n
+    };
+    let total = marks[n];
+    (1..n).map(|k| at(marks[k] * len / total)).collect()
+}
+
+/// Mesh `domain` with the given zoning controls.
+pub fn triangulate(domain: &Domain, zoning: &Zoning) -> Result<TriMesh, MeshError> {
+    zoning.check()?;
+    let size = |p: Point| target_size(domain, zoning, p);
+    let mut vertices: Vec<Point2<f64>> = Vec::new();
+    let mut edges: Vec<[usize; 2]> = Vec::new();
+    let mut add_ring = |poly: &crate::geometry::Polygon, vertices: &mut Vec<Point2<f64>>| {
+        let first = vertices.len();
+        for i in 0..poly.len() {
+            let (a, b) = poly.edge(i);
+            vertices.push(Point2::new(a[0], a[1]));
+            for p in split_segment(a, b, size) {
+                vertices.push(Point2::new(p[0], p[1]));
+            }
+        }
+        let last = vertices.len();
+        for k in first..last {
+            edges.push([k, if k + 1 == last { first } else { k + 1 }]);
+        }
+    };
+    add_ring(&domain.outer, &mut vertices);
+    for hole in &domain.holes {
+        add_ring(&hole.polygon, &mut vertices);
+    }
+    let boundary_vertices = vertices.len();
+    vertices.extend(
+        graded_rings(domain, zoning)
+            .into_iter()
+            .map(|p| Point2::new(p[0], p[1])),
+    );
+
+    let mut cdt = ConstrainedDelaunayTriangulation::<Point2<f64>>::bulk_load_cdt(vertices, edges)
+        .map_err(|e| MeshError::Triangulation(format!("{e:?}")))?;
+    let budget = zoning.max_zones.max(16 * boundary_vertices);
+    let params = RefinementParameters::<f64>::new()
+        .exclude_outer_faces(true)
+        .with_angle_limit(AngleLimit::from_deg(zoning.min_angle_deg))
+        .with_max_allowed_area(0.5 * zoning.h_far * zoning.h_far)
+        .with_max_additional_vertices(budget);
+    let result = cdt.refine(params);
+    if !result.refinement_complete {
+        return Err(MeshError::Triangulation(format!(
+            "refinement did not complete within {budget} added vertices; coarsen the zoning or lower the minimum angle"
+        )));
+    }
+    let excluded: HashSet<_> = result.excluded_faces.iter().copied().collect();
+    let mut tris: Vec<[usize; 3]> = cdt
+        .inner_faces()
+        .filter(|f| !excluded.contains(&f.fix()))
+        .map(|f| f.vertices().map(|v| v.fix().index()))
+        .collect();
+    if tris.len() > zoning.max_zones {
+        return Err(MeshError::Zoning(format!(
+            "{} zones exceed the limit of {}; coarsen the zoning",
+            tris.len(),
+            zoning.max_zones
+        )));
+    }
+    let pos: Vec<Point> = cdt
+        .vertices()
+        .map(|v| [v.position().x, v.position().y])
+        .collect();
+    sort_by_morton(&mut tris, &pos);
+    let (points, triangles) = renumber(&tris, &pos);
+    let boundary = label_boundary(domain, &points, &triangles)?;
+    Ok(TriMesh {
+        points,
+        triangles,
+        boundary,
+    })
+}
+
+/// Points on rings around each hole, at the graded spacing, up to where h reaches h_far.
+fn graded_rings(domain: &Domain, z: &Zoning) -> Vec<Point> {
+    let mut out = Vec::new();
+    for (j, hole) in domain.holes.iter().enumerate() {
+        let c = hole.polygon.centroid();
+        let r0 = hole
+            .polygon
+            .vertices
+            .iter()
+            .map(|&v| distance(v, c))
+            .fold(0.0, f64::max);
+        let mut d = 0.0;
+        let mut ring = 0;
+        loop {
+            let h = (z.h_excavation + z.grading * d).min(z.h_far);
+            d += h;
+            if h >= z.h_far {
+                break;
+            }
+            ring += 1;
+            let r = r0 + d;
+            let hr = (z.h_excavation + z.grading * d).min(z.h_far);
+            let m = ((std::f64::consts::TAU * r / hr).ceil() as usize).max(6);
+            let shift = if ring % 2 == 1 { 0.5 } else { 0.0 };
+            for k in 0..m {
+                let t = std::f64::consts::TAU * (k as f64 + shift) / m as f64;
+                let p = [c[0] + r * t.cos(), c[1] + r * t.sin()];
+                if !domain.outer.contains(p) || domain.holes.iter().any(|h| h.polygon.contains(p)) {
+                    continue;
+                }
+                let hp = target_size(domain, z, p);
+                let own = hole.polygon.boundary_distance(p);
+                let nearest_other = domain
+                    .holes
+                    .iter()
+                    .enumerate()
+                    .filter(|&(i, _)| i != j)
+                    .map(|(_, h)| h.polygon.boundary_distance(p))
+                    .fold(f64::INFINITY, f64::min);
+                if own < 0.6 * hp
+                    || nearest_other < own
+                    || domain.outer.boundary_distance(p) < 0.6 * hp
+                {
+                    continue;
+                }
+                out.push(p);
+            }
+        }
+    }
+    out
+}
+
+/// Order triangles along a Morton (Z-order) curve of their centroids, for memory locality.
+fn sort_by_morton(tris: &mut [[usize; 3]], pos: &[Point]) {
+    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    for p in pos {
+        for d in 0..2 {
+            lo[d] = lo[d].min(p[d]);
+            hi[d] = hi[d].max(p[d]);
+        }
+    }
+    let span = (hi[0] - lo[0]).max(hi[1] - lo[1]).max(f64::MIN_POSITIVE);
+    let key = |t: &[usize; 3]| {
+        let mut code = 0u64;
+        let q = |d: usize| {
+            let c = (pos[t[0]][d] + pos[t[1]][d] + pos[t[2]][d]) / 3.0;
+            (((c - lo[d]) / span) * 65535.0) as u64
+        };
+        let (x, y) = (q(0), q(1));
+        for b in 0..16 {
+            code |= ((x >> b) & 1) << (2 * b) | ((y >> b) & 1) << (2 * b + 1);
+        }
+        code
+    };
+    tris.sort_by_cached_key(key);
+}
+
+/// Keep only used vertices, numbered in order of first use.
+fn renumber(tris: &[[usize; 3]], pos: &[Point]) -> (Vec<Point>, Vec<[u32; 3]>) {
+    let mut map = vec![u32::MAX; pos.len()];
+    let mut points = Vec::new();
+    let triangles = tris
+        .iter()
+        .map(|t| {
+            t.map(|v| {
+                if map[v] == u32::MAX {
+                    map[v] = points.len() as u32;
+                    points.push(pos[v]);
+                }
+                map[v]
+            })
+        })
+        .collect();
+    (points, triangles)
+}
+
+/// Find the mesh edges used by one triangle only and label each with the domain part it lies on.
+fn label_boundary(
+    domain: &Domain,
+    points: &[Point],
+    triangles: &[[u32; 3]],
+) -> Result<Vec<BoundaryEdge>, MeshError> {
+    let mut count: HashMap<(u32, u32), (u32, [u32; 2])> = HashMap::new();
+    for t in triangles {
+        for k in 0..3 {
+            let (a, b) = (t[k], t[(k + 1) % 3]);
+            count.entry((a.min(b), a.max(b))).or_insert((0, [a, b])).0 += 1;
+        }
+    }
+    let tol = 1e-9 * domain.outer.size();
+    let on = |a: Point, b: Point, p: Point, q: Point| {
+        segment_distance(a, p, q) <= tol && segment_distance(b, p, q) <= tol
+    };
+    let mut edges: Vec<BoundaryEdge> = Vec::new();
+    for &(n, nodes) in count.values() {
+        if n != 1 {
+            continue;
+        }
+        let (a, b) = (points[nodes[0] as usize], points[nodes[1] as usize]);
+        let outer = (0..domain.outer.len()).find(|&i| {
+            let (p, q) = domain.outer.edge(i);
+            on(a, b, p, q)
+        });
+        let part = match outer {
+            Some(i) => BoundaryPart::Outer(i),
+            None => {
+                let hole = domain.holes.iter().position(|h| {
+                    (0..h.polygon.len()).any(|i| {
+                        let (p, q) = h.polygon.edge(i);
+                        on(a, b, p, q)
+                    })
+                });
+                match hole {
+                    Some(j) => BoundaryPart::Hole(j),
+                    None => {
+                        return Err(MeshError::Triangulation(format!(
+                            "boundary edge ({}, {})–({}, {}) lies on no region or excavation edge",
+                            a[0], a[1], b[0], b[1]
+                        )));
+                    }
+                }
+            }
+        };
+        edges.push(BoundaryEdge { nodes, part });
+    }
+    edges.sort_by_key(|e| e.nodes);
+    Ok(edges)
+}
+
+impl TriMesh {
+    /// Quality statistics of the mesh.
+    pub fn stats(&self) -> MeshStats {
+        let mut min_angle = f64::INFINITY;
+        let (mut min_edge, mut max_edge, mut area) = (f64::INFINITY, 0.0f64, 0.0);
+        for t in &self.triangles {
+            let p = t.map(|v| self.points[v as usize]);
+            let l = [
+                distance(p[1], p[2]),
+                distance(p[2], p[0]),
+                distance(p[0], p[1]),
+            ];
+            for k in 0..3 {
+                let (a, b, c) = (l[k], l[(k + 1) % 3], l[(k + 2) % 3]);
+                let cos = ((b * b + c * c - a * a) / (2.0 * b * c)).clamp(-1.0, 1.0);
+                min_angle = min_angle.min(cos.acos().to_degrees());
+                min_edge = min_edge.min(a);
+                max_edge = max_edge.max(a);
+            }
+            area += 0.5 * crate::geometry::orient(p[0], p[1], p[2]);
+        }
+        MeshStats {
+            zones: self.triangles.len(),
+            nodes: self.points.len(),
+            min_angle_deg: min_angle,
+            min_edge,
+            max_edge,
+            area,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::domain::Hole;
+    use crate::geometry::Polygon;
+    use approx::assert_relative_eq;
+
+    fn kirsch_domain() -> Domain {
+        let outer = Polygon::new(vec![
+            [-20.0, -20.0],
+            [20.0, -20.0],
+            [20.0, 20.0],
+            [-20.0, 20.0],
+        ]);
+        let names = ["bottom", "right", "top", "left"]
+            .map(String::from)
+            .to_vec();
+        let hole = Hole {
+            name: "tunnel".into(),
+            polygon: Polygon::circle([0.0, 0.0], 1.0, 64),
+        };
+        Domain::new(outer, names, vec![hole]).unwrap()
+    }
+
+    fn zoning() -> Zoning {
+        Zoning {
+            h_excavation: 0.1,
+            h_far: 3.0,
+            grading: 0.25,
+            min_angle_deg: 28.0,
+            max_zones: 1_000_000,
+        }
+    }
+
+    #[test]
+    fn graded_mesh_covers_domain_with_good_angles() {
+        let d = kirsch_domain();
+        let mesh = triangulate(&d, &zoning()).unwrap();
+        let s = mesh.stats();
+        assert_relative_eq!(s.area, d.area(), max_relative = 1e-9);
+        assert!(s.min_angle_deg >= 27.0, "min angle {}", s.min_angle_deg);
+        assert!(s.min_edge > 0.02 && s.max_edge < 6.0, "{s:?}");
+        for t in &mesh.triangles {
+            let p = t.map(|v| mesh.points[v as usize]);
+            assert!(
+                crate::geometry::orient(p[0], p[1], p[2]) > 0.0,
+                "triangles are counter-clockwise"
+            );
+        }
+    }
+
+    #[test]
+    fn boundary_edges_are_labelled_and_close() {
+        let d = kirsch_domain();
+        let mesh = triangulate(&d, &zoning()).unwrap();
+        let mut hole_len = 0.0;
+        let mut outer_len = [0.0; 4];
+        for e in &mesh.boundary {
+            let l = distance(
+                mesh.points[e.nodes[0] as usize],
+                mesh.points[e.nodes[1] as usize],
+            );
+            match e.part {
+                BoundaryPart::Hole(0) => hole_len += l,
+                BoundaryPart::Outer(i) => outer_len[i] += l,
+                other => panic!("unexpected part {other:?}"),
+            }
+        }
+        assert_relative_eq!(
+            hole_len,
+            64.0 * 2.0 * (std::f64::consts::PI / 64.0).sin(),
+            max_relative = 1e-9
+        );
+        for l in outer_len {
+            assert_relative_eq!(l, 40.0, max_relative = 1e-12);
+        }
+    }
+
+    #[test]
+    fn bad_zoning_is_an_error() {
+        let d = kirsch_domain();
+        let z = Zoning {
+            h_far: 0.01,
+            ..zoning()
+        };
+        assert!(matches!(triangulate(&d, &z), Err(MeshError::Zoning(_))));
+    }
+}

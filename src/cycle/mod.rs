@@ -1,0 +1,148 @@
+//! One explicit cycle as a pipeline of named stages: zone forces, then motion; the monitor runs
+//! every few cycles. The `Cycle` owns only scratch space and stage timers.
+//!
+//! Detection, contact forces and structural forces join this pipeline with blocks, joints and
+//! supports; a single deformable block has none of them.
+
+pub mod monitor;
+pub mod timestep;
+
+use std::time::Instant;
+
+use rayon::prelude::*;
+
+use crate::law::StrainIncrement;
+use crate::model::{FIX_X, FIX_Y, Model};
+
+pub use monitor::Monitor;
+
+/// Numerical parameters of the cycle (filled from the scene's `solve`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CycleParams {
+    /// Time step, s (1 in static mass-scaled runs).
+    pub dt: f64,
+    /// Local non-viscous damping coefficient α (0.8 is UDEC's default for static runs).
+    pub damping: f64,
+}
+
+/// Seconds spent in each stage since the start of the run.
+#[derive(Debug, Clone, Copy, Default, PartialEq, serde::Serialize)]
+pub struct StageSeconds {
+    pub detect: f64,
+    pub contacts: f64,
+    pub zones: f64,
+    pub supports: f64,
+    pub motion: f64,
+    pub output: f64,
+}
+
+/// Scratch space and timers of the cycle.
+#[derive(Debug, Default)]
+pub struct Cycle {
+    /// Force of each zone on each of its corners, N/m, indexed zone·3 + corner.
+    pub zone_force: Vec<[f64; 2]>,
+    pub seconds: StageSeconds,
+}
+
+impl Cycle {
+    pub fn new(model: &Model) -> Cycle {
+        Cycle {
+            zone_force: vec![[0.0; 2]; 3 * model.zones.len()],
+            seconds: StageSeconds::default(),
+        }
+    }
+
+    /// Advance the model by one step.
+    pub fn run(&mut self, model: &mut Model, p: &CycleParams) {
+        let t0 = Instant::now();
+        self.zone_forces(model, p);
+        let t1 = Instant::now();
+        self.motion(model, p);
+        let t2 = Instant::now();
+        self.seconds.zones += (t1 - t0).as_secs_f64();
+        self.seconds.motion += (t2 - t1).as_secs_f64();
+    }
+
+    /// Zone stage: strain increment from node velocities, Δε = sym(∇v)Δt with the CST gradients,
+    /// stress update by the zone law, then corner forces f_i = −A σ·∇N_i
+    /// (the virtual-work nodal force of a constant-stress triangle).
+    pub fn zone_forces(&mut self, model: &mut Model, p: &CycleParams) {
+        let Model {
+            nodes, zones, laws, ..
+        } = model;
+        let vel = &nodes.vel;
+        let dt = p.dt;
+        zones
+            .stress
+            .par_iter_mut()
+            .zip(zones.state.par_iter_mut())
+            .zip(self.zone_force.par_chunks_mut(3))
+            .zip(zones.nodes.par_iter())
+            .zip(zones.grad.par_iter())
+            .zip(zones.area.par_iter())
+            .zip(zones.material.par_iter())
+            .with_min_len(1024)
+            .for_each(|((((((s, state), f), t), g), &area), mat)| {
+                let v = t.map(|n| vel[n as usize]);
+                let de: StrainIncrement = [
+                    (g[0] * v[0][0] + g[1] * v[1][0] + g[2] * v[2][0]) * dt,
+                    (g[3] * v[0][1] + g[4] * v[1][1] + g[5] * v[2][1]) * dt,
+                    (g[3] * v[0][0]
+                        + g[4] * v[1][0]
+                        + g[5] * v[2][0]
+                        + g[0] * v[0][1]
+                        + g[1] * v[1][1]
+                        + g[2] * v[2][1])
+                        * dt,
+                ];
+                laws[mat.0 as usize].update(s, state, &de);
+                for i in 0..3 {
+                    let (bx, by) = (g[i], g[3 + i]);
+                    f[i] = [
+                        -area * (s[0] * bx + s[3] * by),
+                        -area * (s[3] * bx + s[1] * by),
+                    ];
+                }
+            });
+    }
+
+    /// Motion stage: gather forces per node in a fixed order (deterministic on any thread count),
+    /// add applied loads, apply local non-viscous damping F_d = F − α|F|sign(v) per component
+    /// (Cundall 1987; UDEC's default), then the central-difference update
+    /// v ← v + F_d Δt / m, u ← u + v Δt. A fixed component keeps its velocity (zero unless
+    /// the scene or a test prescribes one), as FLAC's FIX.
+    pub fn motion(&mut self, model: &mut Model, p: &CycleParams) {
+        let Model { nodes, gather, .. } = model;
+        let zf = &self.zone_force;
+        let (alpha, dt) = (p.damping, p.dt);
+        nodes
+            .vel
+            .par_iter_mut()
+            .zip(nodes.disp.par_iter_mut())
+            .zip(nodes.force.par_iter_mut())
+            .zip(nodes.applied.par_iter())
+            .zip(nodes.mass.par_iter())
+            .zip(nodes.fixed.par_iter())
+            .enumerate()
+            .with_min_len(1024)
+            .for_each(|(n, (((((v, u), force), applied), &m), &fixed))| {
+                let mut f = *applied;
+                for &s in gather.of(n) {
+                    let c = zf[s as usize];
+                    f[0] += c[0];
+                    f[1] += c[1];
+                }
+                for (d, flag) in [(0, FIX_X), (1, FIX_Y)] {
+                    if fixed & flag != 0 {
+                        f[d] = 0.0;
+                    } else {
+                        let fd =
+                            f[d] - alpha * f[d].abs() * v[d].signum() * (v[d] != 0.0) as u8 as f64;
+                        v[d] += fd / m * dt;
+                    }
+                    u[d] += v[d] * dt;
+                }
+                *force = f;
+            });
+    }
+}

@@ -1,0 +1,104 @@
+//! Monitor stage: unbalanced-force ratio, kinetic energy, and the checks that stop a run that has
+//! gone wrong (NaN, runaway displacement) with the node or zone named.
+
+use rayon::prelude::*;
+
+use super::Cycle;
+use crate::model::Model;
+
+/// Chunk length of the deterministic reductions (independent of the thread count).
+const CHUNK: usize = 4096;
+
+/// Figures of one monitor step.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Monitor {
+    /// max_i |F_i| / mean_i Σ|f_i|: largest unbalanced nodal force over the mean gross nodal force
+    /// (sum of magnitudes of the zone and applied forces meeting at a node), as FLAC's ratio.
+    pub ratio: f64,
+    /// Kinetic energy ½ Σ m v², J/m (with the scaled masses in static runs).
+    pub kinetic: f64,
+    /// Largest unbalanced force, N/m.
+    pub max_force: f64,
+}
+
+impl Cycle {
+    /// Measure the state after a cycle; an error names the first node or zone that is not finite
+    /// or has run away.
+    pub fn monitor(&self, model: &Model) -> Result<Monitor, String> {
+        let nodes = &model.nodes;
+        let n = nodes.len();
+        let partial: Vec<(f64, f64, f64)> = (0..n.div_ceil(CHUNK))
+            .into_par_iter()
+            .map(|c| {
+                let (mut max_f, mut gross, mut ke) = (0.0f64, 0.0, 0.0);
+                for i in c * CHUNK..((c + 1) * CHUNK).min(n) {
+                    let f = nodes.force[i];
+                    max_f = max_f.max((f[0] * f[0] + f[1] * f[1]).sqrt());
+                    let a = nodes.applied[i];
+                    gross += (a[0] * a[0] + a[1] * a[1]).sqrt();
+                    for &s in model.gather.of(i) {
+                        let z = self.zone_force[s as usize];
+                        gross += (z[0] * z[0] + z[1] * z[1]).sqrt();
+                    }
+                    let v = nodes.vel[i];
+                    ke += 0.5 * nodes.mass[i] * (v[0] * v[0] + v[1] * v[1]);
+                }
+                (max_f, gross, ke)
+            })
+            .collect();
+        let (mut max_force, mut gross, mut kinetic) = (0.0f64, 0.0, 0.0);
+        for (m, g, k) in partial {
+            max_force = max_force.max(m);
+            gross += g;
+            kinetic += k;
+        }
+        if !(max_force.is_finite() && kinetic.is_finite()) {
+            return Err(self.first_bad(model));
+        }
+        let limit = 0.5 * model.size;
+        if let Some(i) = nodes
+            .disp
+            .iter()
+            .position(|u| u[0].abs() > limit || u[1].abs() > limit)
+        {
+            let p = nodes.pos[i];
+            return Err(format!(
+                "runaway displacement: node {i} at ({:.4}, {:.4}) moved more than half the model size ({limit:.3} m)",
+                p[0], p[1]
+            ));
+        }
+        let mean = gross / n as f64;
+        let ratio = if mean > 0.0 { max_force / mean } else { 0.0 };
+        Ok(Monitor {
+            ratio,
+            kinetic,
+            max_force,
+        })
+    }
+
+    fn first_bad(&self, model: &Model) -> String {
+        if let Some(z) = model
+            .zones
+            .stress
+            .iter()
+            .position(|s| s.iter().any(|v| !v.is_finite()))
+        {
+            let c = model.zones.centroid(z, &model.nodes.pos);
+            return format!(
+                "non-finite stress in zone {z} at ({:.4}, {:.4})",
+                c[0], c[1]
+            );
+        }
+        let n = model
+            .nodes
+            .vel
+            .iter()
+            .position(|v| !(v[0].is_finite() && v[1].is_finite()))
+            .unwrap_or(0);
+        let p = model.nodes.pos[n];
+        format!(
+            "non-finite velocity or force at node {n} at ({:.4}, {:.4})",
+            p[0], p[1]
+        )
+    }
+}

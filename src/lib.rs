@@ -1,0 +1,18 @@
+//! adit: a 2D distinct element engine for jointed rock.
+//!
+//! A scene (`scene`) is built (`build`) into a model of structure-of-arrays state (`model`) whose
+//! zones follow constitutive laws (`law`); a solver (`solve`) repeats the cycle's named stages
+//! (`cycle`) to equilibrium or through time, and `output` writes the results. Units are SI
+//! (m, Pa, kg, s), tension positive.
+
+pub mod build;
+pub mod cycle;
+pub mod law;
+pub mod model;
+pub mod output;
+pub mod run;
+pub mod scene;
+pub mod solve;
+
+pub use run::{RunResult, run_scene};
+pub use scene::Scene;

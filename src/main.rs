@@ -1,0 +1,151 @@
+//! The `adit` command: run, check or mesh a scene file.
+
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+use adit::build::{build, mesh};
+use adit::output::OutputWriter;
+use adit::run::default_out_dir;
+use adit::solve::{HistoryRow, Observer};
+use adit::{Scene, run_scene};
+use clap::{Parser, Subcommand};
+use indicatif::{ProgressBar, ProgressStyle};
+
+#[derive(Parser)]
+#[command(
+    name = "adit",
+    version,
+    about = "2D distinct element engine for jointed rock"
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Solve a scene and write results (.pvd/.vtu, history.csv, summary.json).
+    Run {
+        scene: PathBuf,
+        /// Output folder (default: the scene's output.folder, else out/<name>).
+        #[arg(long)]
+        out: Option<PathBuf>,
+        /// No progress bar.
+        #[arg(long)]
+        quiet: bool,
+    },
+    /// Validate a scene and print mesh statistics, without solving.
+    Check { scene: PathBuf },
+    /// Mesh a scene and write the zones with their initial stress, without solving.
+    Mesh {
+        scene: PathBuf,
+        #[arg(long)]
+        out: Option<PathBuf>,
+    },
+}
+
+/// Progress bar over cycles showing the unbalanced-force ratio.
+struct Progress(ProgressBar);
+
+impl Observer for Progress {
+    fn monitored(&mut self, row: &HistoryRow) {
+        self.0.set_position(row.cycle);
+        self.0.set_message(format!("ratio {:.2e}", row.ratio));
+    }
+}
+
+fn load(path: &Path) -> anyhow::Result<Scene> {
+    Ok(Scene::load(path)?)
+}
+
+fn run(scene_path: &Path, out: Option<PathBuf>, quiet: bool) -> anyhow::Result<bool> {
+    let scene = load(scene_path)?;
+    let out = out.unwrap_or_else(|| default_out_dir(&scene));
+    let bar = if quiet {
+        ProgressBar::hidden()
+    } else {
+        ProgressBar::new(scene.solve.max_cycles)
+    };
+    bar.set_style(
+        ProgressStyle::with_template("{elapsed_precise} [{bar:30}] {pos}/{len} cycles, {msg}")?
+            .progress_chars("=> "),
+    );
+    let mut progress = Progress(bar);
+    let result = run_scene(&scene, &out, &mut progress)?;
+    progress.0.finish_and_clear();
+    let s = &result.summary;
+    println!(
+        "scene {}: {} zones, {} nodes, min angle {:.1}°",
+        s.scene, s.zones, s.nodes, s.min_zone_angle
+    );
+    println!(
+        "time step: critical {:.3e} s (node {}), used {:.3e} s{}",
+        s.critical_timestep,
+        s.critical_node,
+        s.timestep,
+        if scene.solve.mode == adit::scene::SolveMode::Static {
+            " with mass scaling"
+        } else {
+            ""
+        }
+    );
+    println!(
+        "{} after {} cycles, ratio {:.2e}, {:.2} s wall, {:.3e} zone-cycles/s",
+        s.status, s.cycles, s.final_ratio, s.wall_seconds, s.zone_cycles_per_second
+    );
+    println!("results in {}", result.out_dir.display());
+    if let Some(reason) = &s.reason {
+        eprintln!("error: run failed: {reason}");
+        return Ok(false);
+    }
+    Ok(true)
+}
+
+fn check(scene_path: &Path) -> anyhow::Result<()> {
+    let scene = load(scene_path)?;
+    let (domain, mesh) = mesh(&scene)?;
+    let s = mesh.stats();
+    println!("scene {}: valid", scene.name);
+    println!(
+        "domain area {:.6} m², {} excavation(s)",
+        domain.area(),
+        domain.holes.len()
+    );
+    println!(
+        "mesh: {} zones, {} nodes, min angle {:.1}°, edges {:.4}–{:.4} m, zoned area {:.6} m²",
+        s.zones, s.nodes, s.min_angle_deg, s.min_edge, s.max_edge, s.area
+    );
+    Ok(())
+}
+
+fn write_mesh(scene_path: &Path, out: Option<PathBuf>) -> anyhow::Result<()> {
+    let scene = load(scene_path)?;
+    let out = out.unwrap_or_else(|| default_out_dir(&scene));
+    let built = build(&scene)?;
+    let mut writer = OutputWriter::new(&out, &format!("{}_mesh", scene.name))?;
+    writer.write_step(&built.model, 0.0)?;
+    println!(
+        "{} zones, {} nodes written to {}",
+        built.mesh.zones,
+        built.mesh.nodes,
+        out.display()
+    );
+    Ok(())
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        Command::Run { scene, out, quiet } => run(&scene, out, quiet),
+        Command::Check { scene } => check(&scene).map(|_| true),
+        Command::Mesh { scene, out } => write_mesh(&scene, out).map(|_| true),
+    };
+    match result {
+        Ok(true) => ExitCode::SUCCESS,
+        Ok(false) => ExitCode::from(2),
+        Err(e) => {
+            eprintln!("error: {e:#}");
+            ExitCode::FAILURE
+        }
+    }
+}

@@ -1,0 +1,76 @@
+//! Model state as structure-of-arrays: nodes, zones and the node→zone gather table, indexed by
+//! typed ids. Stages of the cycle borrow the parts they need.
+
+pub mod nodes;
+pub mod zones;
+
+pub use nodes::{FIX_X, FIX_Y, Nodes};
+pub use zones::{Stress, Zones};
+
+use crate::law::ZoneLaw;
+
+/// Index of a node.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub struct NodeId(pub u32);
+
+/// Index of a zone (constant-strain triangle).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub struct ZoneId(pub u32);
+
+/// Index of a zone material.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub struct MaterialId(pub u32);
+
+/// For each node, the slots of the zone-force buffer that hold its contributions, in a fixed order
+/// (compressed rows): node n gathers `slots[start[n]..start[n+1]]`, each an index into the flat
+/// per-zone force array (zone·3 + local corner).
+#[derive(Debug, Clone, Default)]
+pub struct Gather {
+    pub start: Vec<u32>,
+    pub slots: Vec<u32>,
+}
+
+impl Gather {
+    /// Build from zone connectivity.
+    pub fn new(num_nodes: usize, zone_nodes: &[[u32; 3]]) -> Gather {
+        let mut count = vec![0u32; num_nodes + 1];
+        for t in zone_nodes {
+            for &n in t {
+                count[n as usize + 1] += 1;
+            }
+        }
+        for i in 0..num_nodes {
+            count[i + 1] += count[i];
+        }
+        let mut fill = count.clone();
+        let mut slots = vec![0u32; zone_nodes.len() * 3];
+        for (z, t) in zone_nodes.iter().enumerate() {
+            for (k, &n) in t.iter().enumerate() {
+                slots[fill[n as usize] as usize] = (3 * z + k) as u32;
+                fill[n as usize] += 1;
+            }
+        }
+        Gather {
+            start: count,
+            slots,
+        }
+    }
+
+    /// Slots of node `n`.
+    pub fn of(&self, n: usize) -> &[u32] {
+        &self.slots[self.start[n] as usize..self.start[n + 1] as usize]
+    }
+}
+
+/// Everything a run evolves: nodes, zones, zone laws and the gather table.
+pub struct Model {
+    pub nodes: Nodes,
+    pub zones: Zones,
+    pub gather: Gather,
+    /// Zone laws, indexed by `MaterialId`.
+    pub laws: Vec<Box<dyn ZoneLaw>>,
+    /// Material names, indexed by `MaterialId`.
+    pub material_names: Vec<String>,
+    /// Largest extent of the model, m (a length scale for runaway checks).
+    pub size: f64,
+}

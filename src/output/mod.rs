@@ -1,0 +1,110 @@
+//! Results on disk, as the output contract of `design.md`: a ParaView collection (`.pvd`) over
+//! zone grids (`_zones_NNNN.vtu`), `history.csv` and `summary.json`, each written atomically.
+
+pub mod atomic;
+pub mod vtu;
+
+use std::path::{Path, PathBuf};
+
+use serde::Serialize;
+
+use crate::cycle::StageSeconds;
+use crate::model::Model;
+use crate::solve::HistoryRow;
+use atomic::write_atomic;
+
+/// Writes the output steps of one run into a folder.
+pub struct OutputWriter {
+    pub dir: PathBuf,
+    pub name: String,
+    /// (timestep value, file name) of each step written so far.
+    steps: Vec<(f64, String)>,
+}
+
+impl OutputWriter {
+    pub fn new(dir: &Path, name: &str) -> std::io::Result<OutputWriter> {
+        std::fs::create_dir_all(dir)?;
+        Ok(OutputWriter {
+            dir: dir.to_path_buf(),
+            name: name.to_string(),
+            steps: Vec::new(),
+        })
+    }
+
+    /// Write the zone grid of this step and refresh the collection; `timestep` is the cumulative
+    /// cycle count.
+    pub fn write_step(&mut self, model: &Model, timestep: f64) -> anyhow::Result<()> {
+        let file = format!("{}_zones_{:04}.vtu", self.name, self.steps.len());
+        let xml = vtu::zones_vtu(model)?;
+        write_atomic(&self.dir.join(&file), |w| w.write_all(&xml))?;
+        self.steps.push((timestep, file));
+        self.write_pvd()?;
+        Ok(())
+    }
+
+    fn write_pvd(&self) -> std::io::Result<()> {
+        let path = self.dir.join(format!("{}.pvd", self.name));
+        write_atomic(&path, |w| {
+            writeln!(w, "<?xml version=\"1.0\"?>")?;
+            writeln!(
+                w,
+                "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">"
+            )?;
+            writeln!(w, "  <Collection>")?;
+            for (t, file) in &self.steps {
+                writeln!(
+                    w,
+                    "    <DataSet timestep=\"{t}\" group=\"\" part=\"0\" file=\"{file}\"/>"
+                )?;
+            }
+            writeln!(w, "  </Collection>")?;
+            writeln!(w, "</VTKFile>")
+        })
+    }
+
+    /// Write `history.csv`: cycle, time, unbalanced-force ratio, kinetic energy.
+    pub fn write_history(&self, rows: &[HistoryRow]) -> std::io::Result<()> {
+        write_atomic(&self.dir.join("history.csv"), |w| {
+            writeln!(w, "cycle,time_s,unbalanced_ratio,kinetic_energy_J_per_m")?;
+            for r in rows {
+                writeln!(w, "{},{:e},{:e},{:e}", r.cycle, r.time, r.ratio, r.kinetic)?;
+            }
+            Ok(())
+        })
+    }
+
+    /// Write `summary.json`.
+    pub fn write_summary(&self, summary: &Summary) -> std::io::Result<()> {
+        let text = serde_json::to_string_pretty(summary).map_err(std::io::Error::other)?;
+        write_atomic(&self.dir.join("summary.json"), |w| {
+            w.write_all(text.as_bytes())
+        })
+    }
+}
+
+/// Contents of `summary.json`.
+#[derive(Debug, Clone, Serialize)]
+pub struct Summary {
+    pub scene: String,
+    pub zones: usize,
+    pub nodes: usize,
+    pub blocks: usize,
+    pub contacts: usize,
+    pub cycles: u64,
+    pub wall_seconds: f64,
+    pub stage_seconds: StageSeconds,
+    pub zone_cycles_per_second: f64,
+    pub final_ratio: f64,
+    /// `converged`, `cycle_limit` or `failed`.
+    pub status: String,
+    /// Why the run failed (only with status `failed`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub reason: Option<String>,
+    /// Time step used, s (1 in static mass-scaled runs).
+    pub timestep: f64,
+    /// Critical time step with real masses, s, and the node that sets it.
+    pub critical_timestep: f64,
+    pub critical_node: u32,
+    /// Smallest zone angle, degrees.
+    pub min_zone_angle: f64,
+}

@@ -1,0 +1,99 @@
+//! Zone results as a binary XML unstructured grid (`.vtu`, vtkio): one triangle cell per zone at
+//! its original position, with stress, principal stresses, block, material and state per cell and
+//! displacement and velocity per point (the output contract of `design.md`).
+
+use vtkio::model::{
+    Attribute, Attributes, ByteOrder, CellType, Cells, DataSet, UnstructuredGridPiece, Version,
+    VertexNumbers, Vtk,
+};
+
+use crate::model::{Model, Stress};
+
+/// Principal stresses (Pa, tension positive) as (σ1, σ3): σ1 the most compressive (algebraically
+/// smallest) and σ3 the least, among the in-plane pair (c ∓ r, c = (σxx+σyy)/2,
+/// r = √(((σxx−σyy)/2)² + σxy²)) and σzz, as FLAC and UDEC order them.
+pub fn principal(s: &Stress) -> (f64, f64) {
+    let c = 0.5 * (s[0] + s[1]);
+    let r = (0.25 * (s[0] - s[1]).powi(2) + s[3] * s[3]).sqrt();
+    ((c - r).min(s[2]), (c + r).max(s[2]))
+}
+
+/// The zone grid of `model` as XML text.
+pub fn zones_vtu(model: &Model) -> Result<Vec<u8>, vtkio::Error> {
+    let (nodes, zones) = (&model.nodes, &model.zones);
+    let points: Vec<f64> = nodes.pos.iter().flat_map(|p| [p[0], p[1], 0.0]).collect();
+    let connectivity: Vec<u64> = zones.nodes.iter().flatten().map(|&n| n as u64).collect();
+    let offsets: Vec<u64> = (1..=zones.len() as u64).map(|k| 3 * k).collect();
+    let stress: Vec<f64> = zones
+        .stress
+        .iter()
+        .flat_map(|s| [s[0], s[3], 0.0, s[3], s[1], 0.0, 0.0, 0.0, s[2]])
+        .collect();
+    let (sigma1, sigma3): (Vec<f64>, Vec<f64>) = zones.stress.iter().map(principal).unzip();
+    let ints = |v: Vec<i32>| v;
+    let vec3 = |v: &[[f64; 2]]| -> Vec<f64> { v.iter().flat_map(|p| [p[0], p[1], 0.0]).collect() };
+    let piece = UnstructuredGridPiece {
+        points: points.into(),
+        cells: Cells {
+            cell_verts: VertexNumbers::XML {
+                connectivity,
+                offsets,
+            },
+            types: vec![CellType::Triangle; zones.len()],
+        },
+        data: Attributes {
+            point: vec![
+                Attribute::generic("displacement", 3).with_data(vec3(&nodes.disp)),
+                Attribute::generic("velocity", 3).with_data(vec3(&nodes.vel)),
+            ],
+            cell: vec![
+                Attribute::generic("stress", 9).with_data(stress),
+                Attribute::generic("sigma1", 1).with_data(sigma1),
+                Attribute::generic("sigma3", 1).with_data(sigma3),
+                Attribute::generic("block", 1)
+                    .with_data(ints(zones.block.iter().map(|&b| b as i32).collect())),
+                Attribute::generic("material", 1)
+                    .with_data(ints(zones.material.iter().map(|m| m.0 as i32).collect())),
+                Attribute::generic("state", 1)
+                    .with_data(ints(zones.state.iter().map(|&s| s as i32).collect())),
+            ],
+        },
+    };
+    let vtk = Vtk {
+        version: Version::new((1, 0)),
+        title: String::new(),
+        byte_order: ByteOrder::LittleEndian,
+        data: DataSet::inline(piece),
+        file_path: None,
+    };
+    let mut xml = Vec::new();
+    vtk.write_xml(&mut xml)?;
+    Ok(with_field_data(xml))
+}
+
+/// vtkio writes no field data; add `deformed_positions = 0` (cells are drawn at original positions)
+/// right after the `<UnstructuredGrid>` tag.
+fn with_field_data(xml: Vec<u8>) -> Vec<u8> {
+    const TAG: &[u8] = b"<UnstructuredGrid>";
+    const FIELD: &[u8] = b"<FieldData><DataArray type=\"Int32\" Name=\"deformed_positions\" NumberOfTuples=\"1\" format=\"ascii\">0</DataArray></FieldData>";
+    match xml.windows(TAG.len()).position(|w| w == TAG) {
+        Some(at) => {
+            let cut = at + TAG.len();
+            [&xml[..cut], FIELD, &xml[cut..]].concat()
+        }
+        None => xml,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn principal_stresses_order_compression_first() {
+        let (s1, s3) = principal(&[-10.0, -20.0, -7.5, 0.0]);
+        assert_eq!((s1, s3), (-20.0, -7.5));
+        let (s1, s3) = principal(&[0.0, 0.0, 0.0, 5.0]);
+        assert_eq!((s1, s3), (-5.0, 5.0));
+    }
+}

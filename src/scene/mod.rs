@@ -1,0 +1,276 @@
+//! Scene files: the JSON description of a model (materials, geometry, zoning, in-situ stress,
+//! boundary conditions, solve criterion, output). Every field is documented in
+//! `docs/scene-format.md`; unknown fields are errors.
+
+mod validate;
+
+use std::collections::BTreeMap;
+use std::path::Path;
+
+use serde::Deserialize;
+
+pub use validate::SceneError;
+
+/// A whole scene, as read from JSON.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Scene {
+    /// Name used for output files.
+    pub name: String,
+    /// Zone materials by name.
+    pub materials: BTreeMap<String, Material>,
+    pub region: Region,
+    #[serde(default)]
+    pub excavations: Vec<Excavation>,
+    pub zoning: ZoningSpec,
+    #[serde(default)]
+    pub in_situ: InSitu,
+    /// Gravitational acceleration (m/s²), as a vector; default none.
+    #[serde(default)]
+    pub gravity: [f64; 2],
+    #[serde(default)]
+    pub boundary: Vec<BoundaryCondition>,
+    #[serde(default)]
+    pub solve: SolveSpec,
+    #[serde(default)]
+    pub output: OutputSpec,
+}
+
+/// An isotropic elastic zone material.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Material {
+    /// Mass density, kg/m³.
+    pub density: f64,
+    /// Young's modulus, Pa.
+    pub young: f64,
+    /// Poisson's ratio (dimensionless, −1 < ν < 0.5).
+    pub poisson: f64,
+}
+
+/// The modelled region: one polygon, its edge names and its material.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Region {
+    /// Vertices (m), in order, either orientation.
+    pub polygon: Vec<[f64; 2]>,
+    /// Name of each edge (edge i runs from vertex i to vertex i+1); default `edge0`, `edge1`, ….
+    #[serde(default)]
+    pub edge_names: Option<Vec<String>>,
+    /// Name of the material that fills the region.
+    pub material: String,
+}
+
+/// A hole in the region, present from the start of the run.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Excavation {
+    /// Name, also the boundary part of its wall.
+    pub name: String,
+    #[serde(default)]
+    pub circle: Option<Circle>,
+    /// Vertices (m) of a polygonal excavation.
+    #[serde(default)]
+    pub polygon: Option<Vec<[f64; 2]>>,
+}
+
+/// A circle approximated by a regular polygon.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Circle {
+    /// Centre (m).
+    pub center: [f64; 2],
+    /// Radius (m).
+    pub radius: f64,
+    /// Number of polygon segments (default 128).
+    #[serde(default = "default_segments")]
+    pub segments: usize,
+}
+
+fn default_segments() -> usize {
+    128
+}
+
+/// Zoning controls.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ZoningSpec {
+    /// Zone edge length on excavation walls, m.
+    pub edge_at_excavation: f64,
+    /// Zone edge length far from excavations, m.
+    pub edge_far: f64,
+    /// Growth of edge length per metre of distance from the excavation (default 0.2).
+    #[serde(default = "default_grading")]
+    pub grading: f64,
+    /// Minimum zone angle, degrees (default 30).
+    #[serde(default = "default_min_angle")]
+    pub min_angle: f64,
+    /// Largest zone count accepted (default 2 000 000).
+    #[serde(default = "default_max_zones")]
+    pub max_zones: usize,
+}
+
+fn default_grading() -> f64 {
+    0.2
+}
+fn default_min_angle() -> f64 {
+    30.0
+}
+fn default_max_zones() -> usize {
+    2_000_000
+}
+
+/// In-situ stress, Pa, tension positive: σ(y) = σ_ref + gradient · (y − y_ref).
+#[derive(Debug, Clone, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct InSitu {
+    #[serde(default)]
+    pub sxx: f64,
+    #[serde(default)]
+    pub syy: f64,
+    #[serde(default)]
+    pub sxy: f64,
+    /// Out-of-plane stress, Pa; default ν(σxx + σyy) of each zone's material (plane strain).
+    #[serde(default)]
+    pub szz: Option<f64>,
+    /// Elevation where the reference values hold, m (default 0).
+    #[serde(default)]
+    pub y_ref: f64,
+    /// Vertical gradients dσ/dy, Pa/m (for gravity equilibrium dσyy/dy = −ρ·g_y).
+    #[serde(default)]
+    pub gradient: StressGradient,
+}
+
+/// Vertical gradients of the in-situ stress, Pa/m.
+#[derive(Debug, Clone, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct StressGradient {
+    #[serde(default)]
+    pub sxx: f64,
+    #[serde(default)]
+    pub syy: f64,
+    #[serde(default)]
+    pub szz: f64,
+}
+
+/// A boundary condition on a named boundary part or at the boundary node nearest a point.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BoundaryCondition {
+    /// `outer` (whole region boundary), a region edge name, or an excavation name.
+    #[serde(default)]
+    pub part: Option<String>,
+    /// Point (m): the condition applies to the boundary node nearest to it.
+    #[serde(default)]
+    pub at: Option<[f64; 2]>,
+    /// Fixed velocity components: "x", "y" or "xy".
+    #[serde(default)]
+    pub fix: Option<Fix>,
+    /// Applied stress tensor (Pa); the traction is σ·n with n the outward normal.
+    #[serde(default)]
+    pub stress: Option<StressTensor>,
+    /// Apply the in-situ stress (with its gradient) as traction σ·n.
+    #[serde(default)]
+    pub in_situ_traction: bool,
+    /// Applied normal stress, Pa (tension positive: negative pushes on the boundary).
+    #[serde(default)]
+    pub normal_stress: Option<f64>,
+    /// Applied shear stress, Pa, along the tangent t = (−n_y, n_x).
+    #[serde(default)]
+    pub shear_stress: Option<f64>,
+}
+
+/// Which velocity components are fixed.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+pub enum Fix {
+    #[serde(rename = "x")]
+    X,
+    #[serde(rename = "y")]
+    Y,
+    #[serde(rename = "xy")]
+    XY,
+}
+
+/// A plane stress tensor, Pa.
+#[derive(Debug, Clone, Copy, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct StressTensor {
+    #[serde(default)]
+    pub sxx: f64,
+    #[serde(default)]
+    pub syy: f64,
+    #[serde(default)]
+    pub sxy: f64,
+}
+
+/// How to solve.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct SolveSpec {
+    /// `static` (mass-scaled dynamic relaxation to equilibrium) or `dynamic` (real masses, real time).
+    pub mode: SolveMode,
+    /// Stop when the unbalanced-force ratio falls below this (default 1e-5).
+    pub ratio: f64,
+    /// Stop after this many cycles at the latest (default 200 000).
+    pub max_cycles: u64,
+    /// Local non-viscous damping coefficient α (default 0.8; 0 for none).
+    pub damping: f64,
+    /// Time step safety factor on the stability limit (default 0.8).
+    pub safety_factor: f64,
+    /// Cycles between unbalanced-force checks and history rows (default 10).
+    pub monitor_every: u64,
+}
+
+/// Solution mode.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum SolveMode {
+    Static,
+    Dynamic,
+}
+
+impl Default for SolveSpec {
+    fn default() -> Self {
+        SolveSpec {
+            mode: SolveMode::Static,
+            ratio: 1e-5,
+            max_cycles: 200_000,
+            damping: 0.8,
+            safety_factor: 0.8,
+            monitor_every: 10,
+        }
+    }
+}
+
+/// Where and how often to write results.
+#[derive(Debug, Clone, Default, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct OutputSpec {
+    /// Output folder; default `out/<name>`.
+    pub folder: Option<String>,
+    /// Cycles between intermediate output steps; 0 = only at the end (default 0).
+    pub every: u64,
+}
+
+impl Scene {
+    /// Parse and validate a scene from JSON text; `source` names it in messages.
+    pub fn from_json(text: &str, source: &str) -> Result<Scene, SceneError> {
+        let scene: Scene = serde_json::from_str(text).map_err(|e| SceneError::Parse {
+            source_name: source.to_string(),
+            line: e.line(),
+            column: e.column(),
+            message: e.to_string(),
+        })?;
+        scene.validate()?;
+        Ok(scene)
+    }
+
+    /// Read, parse and validate a scene file.
+    pub fn load(path: &Path) -> Result<Scene, SceneError> {
+        let text = std::fs::read_to_string(path).map_err(|e| SceneError::Io {
+            path: path.display().to_string(),
+            message: e.to_string(),
+        })?;
+        Self::from_json(&text, &path.display().to_string())
+    }
+}

@@ -1,0 +1,235 @@
+//! Semantic checks of a parsed scene: every error names the field (as a JSON path) and the reason.
+
+use thiserror::Error;
+
+use super::{BoundaryCondition, Scene};
+
+/// Why a scene cannot be used.
+#[derive(Debug, Error)]
+pub enum SceneError {
+    #[error("cannot read {path}: {message}")]
+    Io { path: String, message: String },
+    /// Malformed JSON, an unknown field, or a value of the wrong type.
+    #[error("{source_name}: line {line}, column {column}: {message}")]
+    Parse {
+        source_name: String,
+        line: usize,
+        column: usize,
+        message: String,
+    },
+    /// A well-formed value that is not allowed.
+    #[error("{path}: {reason}")]
+    Invalid { path: String, reason: String },
+}
+
+fn invalid(path: impl Into<String>, reason: impl Into<String>) -> SceneError {
+    SceneError::Invalid {
+        path: path.into(),
+        reason: reason.into(),
+    }
+}
+
+fn positive(path: &str, v: f64) -> Result<(), SceneError> {
+    if v > 0.0 && v.is_finite() {
+        Ok(())
+    } else {
+        Err(invalid(
+            path,
+            format!("must be positive and finite, got {v}"),
+        ))
+    }
+}
+
+impl Scene {
+    /// Check values that the JSON types alone cannot: signs, ranges, names that must exist.
+    pub fn validate(&self) -> Result<(), SceneError> {
+        if self.name.is_empty() || self.name.contains(['/', '\\']) {
+            return Err(invalid(
+                "name",
+                "must be a non-empty file name without slashes",
+            ));
+        }
+        if self.materials.is_empty() {
+            return Err(invalid("materials", "at least one material is needed"));
+        }
+        for (name, m) in &self.materials {
+            let p = format!("materials.{name}");
+            positive(&format!("{p}.density"), m.density)?;
+            positive(&format!("{p}.young"), m.young)?;
+            if !(m.poisson > -1.0 && m.poisson < 0.5) {
+                return Err(invalid(
+                    format!("{p}.poisson"),
+                    format!(
+                        "must satisfy -1 < ν < 0.5 (0.5 is incompressible), got {}",
+                        m.poisson
+                    ),
+                ));
+            }
+        }
+        if !self.materials.contains_key(&self.region.material) {
+            return Err(invalid(
+                "region.material",
+                format!("no material named '{}' in materials", self.region.material),
+            ));
+        }
+        if let Some(names) = &self.region.edge_names {
+            if names.len() != self.region.polygon.len() {
+                return Err(invalid(
+                    "region.edge_names",
+                    format!(
+                        "{} names for {} edges",
+                        names.len(),
+                        self.region.polygon.len()
+                    ),
+                ));
+            }
+        }
+        for (i, e) in self.excavations.iter().enumerate() {
+            let p = format!("excavations[{i}]");
+            match (&e.circle, &e.polygon) {
+                (Some(c), None) => {
+                    positive(&format!("{p}.circle.radius"), c.radius)?;
+                    if c.segments < 8 {
+                        return Err(invalid(
+                            format!("{p}.circle.segments"),
+                            "at least 8 segments",
+                        ));
+                    }
+                }
+                (None, Some(_)) => {}
+                _ => return Err(invalid(&p, "give exactly one of `circle` and `polygon`")),
+            }
+            if self.excavations[..i].iter().any(|o| o.name == e.name) {
+                return Err(invalid(
+                    format!("{p}.name"),
+                    format!("duplicate excavation name '{}'", e.name),
+                ));
+            }
+        }
+        let z = &self.zoning;
+        positive("zoning.edge_at_excavation", z.edge_at_excavation)?;
+        positive("zoning.edge_far", z.edge_far)?;
+        if z.edge_far < z.edge_at_excavation {
+            return Err(invalid(
+                "zoning.edge_far",
+                "must be at least zoning.edge_at_excavation",
+            ));
+        }
+        if !(z.grading > 0.0 && z.grading <= 2.0) {
+            return Err(invalid(
+                "zoning.grading",
+                format!("must be in (0, 2], got {}", z.grading),
+            ));
+        }
+        if !(z.min_angle > 0.0 && z.min_angle <= 33.0) {
+            return Err(invalid(
+                "zoning.min_angle",
+                format!("must be in (0, 33] degrees, got {}", z.min_angle),
+            ));
+        }
+        let s = &self.in_situ;
+        for (f, v) in [
+            ("sxx", s.sxx),
+            ("syy", s.syy),
+            ("sxy", s.sxy),
+            ("y_ref", s.y_ref),
+        ] {
+            if !v.is_finite() {
+                return Err(invalid(format!("in_situ.{f}"), "must be finite"));
+            }
+        }
+        for (i, bc) in self.boundary.iter().enumerate() {
+            self.validate_boundary(i, bc)?;
+        }
+        let v = &self.solve;
+        positive("solve.ratio", v.ratio)?;
+        if v.max_cycles == 0 {
+            return Err(invalid("solve.max_cycles", "must be at least 1"));
+        }
+        if !(0.0..1.0).contains(&v.damping) {
+            return Err(invalid(
+                "solve.damping",
+                format!("must be in [0, 1), got {}", v.damping),
+            ));
+        }
+        if !(v.safety_factor > 0.0 && v.safety_factor <= 1.0) {
+            return Err(invalid(
+                "solve.safety_factor",
+                format!("must be in (0, 1], got {}", v.safety_factor),
+            ));
+        }
+        if v.monitor_every == 0 {
+            return Err(invalid("solve.monitor_every", "must be at least 1"));
+        }
+        Ok(())
+    }
+
+    /// Names a boundary condition may use in `part`.
+    pub fn part_names(&self) -> Vec<String> {
+        let mut names = vec!["outer".to_string()];
+        names.extend(self.edge_names());
+        names.extend(self.excavations.iter().map(|e| e.name.clone()));
+        names
+    }
+
+    /// Edge names of the region polygon (given, or `edge0`, `edge1`, …).
+    pub fn edge_names(&self) -> Vec<String> {
+        match &self.region.edge_names {
+            Some(n) => n.clone(),
+            None => (0..self.region.polygon.len())
+                .map(|i| format!("edge{i}"))
+                .collect(),
+        }
+    }
+
+    fn validate_boundary(&self, i: usize, bc: &BoundaryCondition) -> Result<(), SceneError> {
+        let p = format!("boundary[{i}]");
+        match (&bc.part, &bc.at) {
+            (Some(name), None) => {
+                if !self.part_names().contains(name) {
+                    return Err(invalid(
+                        format!("{p}.part"),
+                        format!(
+                            "no boundary part '{name}' (known: {})",
+                            self.part_names().join(", ")
+                        ),
+                    ));
+                }
+            }
+            (None, Some(_)) => {
+                if bc.stress.is_some()
+                    || bc.in_situ_traction
+                    || bc.normal_stress.is_some()
+                    || bc.shear_stress.is_some()
+                {
+                    return Err(invalid(
+                        &p,
+                        "a point condition (`at`) can only fix velocities",
+                    ));
+                }
+            }
+            _ => return Err(invalid(&p, "give exactly one of `part` and `at`")),
+        }
+        let loads = bc.stress.is_some() as u8
+            + bc.in_situ_traction as u8
+            + (bc.normal_stress.is_some() || bc.shear_stress.is_some()) as u8;
+        if loads > 1 {
+            return Err(invalid(
+                &p,
+                "give at most one of `stress`, `in_situ_traction`, `normal_stress`/`shear_stress`",
+            ));
+        }
+        if loads == 0 && bc.fix.is_none() {
+            return Err(invalid(&p, "neither a fixity nor a load is given"));
+        }
+        for (f, v) in [
+            ("normal_stress", bc.normal_stress),
+            ("shear_stress", bc.shear_stress),
+        ] {
+            if v.is_some_and(|v| !v.is_finite()) {
+                return Err(invalid(format!("{p}.{f}"), "must be finite"));
+            }
+        }
+        Ok(())
+    }
+}

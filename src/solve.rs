@@ -1,0 +1,150 @@
+//! The run driver: derive the time step and masses, cycle to the stop criterion, record the
+//! history, and report intermediate output steps to an observer.
+
+use crate::cycle::timestep::{
+    StepLimit, critical_step, lumped_masses, nodal_stiffness, scaled_masses,
+};
+use crate::cycle::{Cycle, CycleParams, Monitor};
+use crate::model::Model;
+use crate::scene::{SolveMode, SolveSpec};
+
+/// How a solve ended.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Status {
+    /// The unbalanced-force ratio fell below the target.
+    Converged,
+    /// The cycle limit was reached first.
+    CycleLimit,
+    /// The run was stopped; the reason names the node or zone.
+    Failed(String),
+}
+
+impl Status {
+    pub fn label(&self) -> &'static str {
+        match self {
+            Status::Converged => "converged",
+            Status::CycleLimit => "cycle_limit",
+            Status::Failed(_) => "failed",
+        }
+    }
+}
+
+/// One history row.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct HistoryRow {
+    pub cycle: u64,
+    /// Time, s (fictitious in static runs: cycles × 1 s).
+    pub time: f64,
+    pub ratio: f64,
+    /// Kinetic energy, J/m.
+    pub kinetic: f64,
+}
+
+/// What a solve produced.
+#[derive(Debug, Clone)]
+pub struct Solution {
+    pub status: Status,
+    pub cycles: u64,
+    pub history: Vec<HistoryRow>,
+    pub final_ratio: f64,
+}
+
+/// Receives progress during a solve.
+pub trait Observer {
+    /// After each monitor step.
+    fn monitored(&mut self, _row: &HistoryRow) {}
+    /// When an intermediate output step is due (every `output_every` cycles).
+    fn output_step(&mut self, _cycle: u64, _time: f64, _model: &Model, _cycle_state: &mut Cycle) {}
+}
+
+/// An observer that ignores everything.
+pub struct Quiet;
+impl Observer for Quiet {}
+
+/// Time step, masses and cycle scratch for a model.
+pub struct Solver {
+    pub cycle: Cycle,
+    pub params: CycleParams,
+    /// Step limit with real masses (reported in every mode).
+    pub step: StepLimit,
+    pub spec: SolveSpec,
+    /// Cycles between intermediate output steps (0: none).
+    pub output_every: u64,
+}
+
+impl Solver {
+    /// Set nodal masses and the time step for the solve mode: static runs scale masses so that
+    /// Δt = 1 s is stable; dynamic runs keep real masses and take Δt = s·Δt_crit.
+    pub fn new(model: &mut Model, spec: &SolveSpec, output_every: u64) -> Solver {
+        let stiffness = nodal_stiffness(model);
+        let real = lumped_masses(model);
+        let step = critical_step(&stiffness, &real);
+        let dt = match spec.mode {
+            SolveMode::Static => {
+                model.nodes.mass = scaled_masses(&stiffness, spec.safety_factor);
+                1.0
+            }
+            SolveMode::Dynamic => {
+                model.nodes.mass = real;
+                spec.safety_factor * step.dt_critical
+            }
+        };
+        Solver {
+            cycle: Cycle::new(model),
+            params: CycleParams {
+                dt,
+                damping: spec.damping,
+            },
+            step,
+            spec: spec.clone(),
+            output_every,
+        }
+    }
+
+    /// Cycle until converged, the cycle limit, or failure.
+    pub fn solve(&mut self, model: &mut Model, observer: &mut dyn Observer) -> Solution {
+        let mut history = Vec::new();
+        let mut last = Monitor {
+            ratio: f64::INFINITY,
+            kinetic: 0.0,
+            max_force: 0.0,
+        };
+        let every = self.spec.monitor_every;
+        let mut cycle = 0u64;
+        let status = loop {
+            self.cycle.run(model, &self.params);
+            cycle += 1;
+            let time = cycle as f64 * self.params.dt;
+            let due = cycle % every == 0 || cycle == self.spec.max_cycles;
+            if due {
+                match self.cycle.monitor(model) {
+                    Ok(m) => last = m,
+                    Err(reason) => break Status::Failed(format!("cycle {cycle}: {reason}")),
+                }
+                let row = HistoryRow {
+                    cycle,
+                    time,
+                    ratio: last.ratio,
+                    kinetic: last.kinetic,
+                };
+                history.push(row);
+                observer.monitored(&row);
+                if last.ratio <= self.spec.ratio {
+                    break Status::Converged;
+                }
+            }
+            if cycle >= self.spec.max_cycles {
+                break Status::CycleLimit;
+            }
+            if self.output_every > 0 && cycle % self.output_every == 0 {
+                observer.output_step(cycle, time, model, &mut self.cycle);
+            }
+        };
+        Solution {
+            status,
+            cycles: cycle,
+            history,
+            final_ratio: last.ratio,
+        }
+    }
+}
