@@ -44,17 +44,17 @@ fn check_polygon(shape: &str, poly: &Polygon) -> Result<(), MeshError> {
             });
         }
     }
-    if poly.signed_area().abs() <= 1e-12 * size * size {
-        return Err(MeshError::Degenerate {
-            shape: shape.into(),
-            reason: "zero area".into(),
-        });
-    }
     if let Some((a, b)) = poly.self_intersection() {
         return Err(MeshError::SelfIntersecting {
             shape: shape.into(),
             a,
             b,
+        });
+    }
+    if poly.signed_area().abs() <= 1e-12 * size * size {
+        return Err(MeshError::Degenerate {
+            shape: shape.into(),
+            reason: "zero area".into(),
         });
     }
     Ok(())

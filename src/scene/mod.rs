@@ -274,3 +274,86 @@ impl Scene {
         Self::from_json(&text, &path.display().to_string())
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const GOOD: &str = r#"{
+        "name": "t",
+        "materials": { "rock": { "density": 2500, "young": 1e9, "poisson": 0.2 } },
+        "region": { "polygon": [[0, 0], [10, 0], [10, 10], [0, 10]], "material": "rock" },
+        "zoning": { "edge_at_excavation": 0.5, "edge_far": 2 }
+    }"#;
+
+    fn error_of(text: &str) -> String {
+        Scene::from_json(text, "scene.json")
+            .unwrap_err()
+            .to_string()
+    }
+
+    #[test]
+    fn good_scene_parses_with_defaults() {
+        let s = Scene::from_json(GOOD, "scene.json").unwrap();
+        assert_eq!(s.solve.ratio, 1e-5);
+        assert_eq!(s.zoning.min_angle, 30.0);
+        assert_eq!(s.edge_names(), ["edge0", "edge1", "edge2", "edge3"]);
+    }
+
+    #[test]
+    fn malformed_json_gives_line_and_column() {
+        let msg = error_of("{\n  \"name\": \"t\",\n  \"materials\": {,\n}");
+        assert!(msg.starts_with("scene.json: line 3, column"), "{msg}");
+    }
+
+    #[test]
+    fn unknown_field_is_named() {
+        let msg = error_of(&GOOD.replace("\"density\"", "\"densty\": 1, \"density\""));
+        assert!(
+            msg.contains("unknown field `densty`") && msg.contains("line 3"),
+            "{msg}"
+        );
+    }
+
+    #[test]
+    fn missing_material_is_named() {
+        let msg = error_of(&GOOD.replace("\"material\": \"rock\"", "\"material\": \"granite\""));
+        assert_eq!(
+            msg,
+            "region.material: no material named 'granite' in materials"
+        );
+    }
+
+    #[test]
+    fn negative_modulus_is_named() {
+        let msg = error_of(&GOOD.replace("1e9", "-1e9"));
+        assert!(
+            msg.starts_with("materials.rock.young: must be positive"),
+            "{msg}"
+        );
+    }
+
+    #[test]
+    fn incompressible_poisson_is_rejected() {
+        for nu in ["0.5", "0.7"] {
+            let msg = error_of(&GOOD.replace("0.2", nu));
+            assert!(
+                msg.starts_with("materials.rock.poisson: must satisfy -1 < ν < 0.5"),
+                "{msg}"
+            );
+        }
+    }
+
+    #[test]
+    fn unknown_boundary_part_lists_the_known_ones() {
+        let text = GOOD.replace(
+            "\"zoning\"",
+            "\"boundary\": [{ \"part\": \"roof\", \"fix\": \"y\" }], \"zoning\"",
+        );
+        let msg = error_of(&text);
+        assert!(
+            msg.starts_with("boundary[0].part: no boundary part 'roof'") && msg.contains("edge3"),
+            "{msg}"
+        );
+    }
+}

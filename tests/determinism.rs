@@ -1,0 +1,29 @@
+//! The same scene gives bit-identical results on one thread and on several.
+
+use std::path::Path;
+
+use adit::Scene;
+use adit::build::build;
+use adit::solve::{Quiet, Solver};
+
+fn run_on(threads: usize) -> (Vec<[f64; 2]>, Vec<[f64; 4]>, f64) {
+    let mut s =
+        Scene::load(&Path::new(env!("CARGO_MANIFEST_DIR")).join("models/kirsch.json")).unwrap();
+    s.solve.max_cycles = 200;
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .unwrap();
+    pool.install(|| {
+        let mut b = build(&s).unwrap();
+        let mut solver = Solver::new(&mut b.model, &s.solve, 0);
+        let sol = solver.solve(&mut b.model, &mut Quiet);
+        (b.model.nodes.disp, b.model.zones.stress, sol.final_ratio)
+    })
+}
+
+#[test]
+fn one_and_three_threads_agree_bit_for_bit() {
+    let (a, b) = (run_on(1), run_on(3));
+    assert!(a.0 == b.0 && a.1 == b.1 && a.2.to_bits() == b.2.to_bits());
+}

@@ -1,0 +1,153 @@
+//! The output contract: a run writes a readable `.pvd`, zone `.vtu` with the contract's fields,
+//! `history.csv` and `summary.json`; meshio (Python) reads the `.vtu` too.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use adit::solve::Quiet;
+use adit::{Scene, run_scene};
+use vtkio::model::{Attribute, DataSet, Piece, Vtk};
+
+fn small_scene() -> Scene {
+    let mut s =
+        Scene::load(&Path::new(env!("CARGO_MANIFEST_DIR")).join("models/kirsch.json")).unwrap();
+    s.zoning.edge_at_excavation = 0.3;
+    s.zoning.edge_far = 8.0;
+    s.zoning.grading = 0.5;
+    s.excavations[0].circle.as_mut().unwrap().segments = 24;
+    s.solve.max_cycles = 300;
+    s.output.every = 100;
+    s
+}
+
+fn out_dir(tag: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("adit-test-{tag}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    d
+}
+
+#[test]
+fn run_writes_every_contract_file() {
+    let dir = out_dir("contract");
+    let r = run_scene(&small_scene(), &dir, &mut Quiet).unwrap();
+    let (zones, nodes) = (r.summary.zones, r.summary.nodes);
+    let pvd = std::fs::read_to_string(dir.join("kirsch.pvd")).unwrap();
+    // Intermediate steps at cycles 100 and 200, and the final one.
+    assert_eq!(pvd.matches("<DataSet ").count(), 3, "{pvd}");
+    assert!(pvd.contains("file=\"kirsch_zones_0002.vtu\""));
+
+    let vtk = Vtk::import(dir.join("kirsch_zones_0002.vtu")).unwrap();
+    let DataSet::UnstructuredGrid { pieces, .. } = vtk.data else {
+        panic!("not an unstructured grid")
+    };
+    let Piece::Inline(piece) = &pieces[0] else {
+        panic!("piece not inline")
+    };
+    assert_eq!(piece.num_points(), nodes);
+    assert_eq!(piece.cells.types.len(), zones);
+    let sizes = |attrs: &[Attribute]| -> Vec<(String, usize)> {
+        attrs
+            .iter()
+            .map(|a| match a {
+                Attribute::DataArray(d) => (d.name.clone(), d.data.len()),
+                Attribute::Field { name, .. } => (name.clone(), 0),
+            })
+            .collect()
+    };
+    let cell = sizes(&piece.data.cell);
+    for (name, per) in [
+        ("stress", 9),
+        ("sigma1", 1),
+        ("sigma3", 1),
+        ("block", 1),
+        ("material", 1),
+        ("state", 1),
+    ] {
+        assert!(
+            cell.contains(&(name.to_string(), per * zones)),
+            "cell data {name}: {cell:?}"
+        );
+    }
+    let point = sizes(&piece.data.point);
+    for name in ["displacement", "velocity"] {
+        assert!(
+            point.contains(&(name.to_string(), 3 * nodes)),
+            "point data {name}: {point:?}"
+        );
+    }
+
+    let history = std::fs::read_to_string(dir.join("history.csv")).unwrap();
+    assert!(history.starts_with("cycle,time_s,unbalanced_ratio,kinetic_energy_J_per_m\n"));
+    assert_eq!(history.lines().count(), 1 + 30);
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    for key in [
+        "scene",
+        "zones",
+        "nodes",
+        "blocks",
+        "contacts",
+        "cycles",
+        "wall_seconds",
+        "stage_seconds",
+        "zone_cycles_per_second",
+        "final_ratio",
+        "status",
+    ] {
+        assert!(summary.get(key).is_some(), "summary.json lacks {key}");
+    }
+    assert_eq!(summary["status"], "cycle_limit");
+    let leftovers: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .filter_map(|e| e.ok())
+        .filter(|e| e.file_name().to_string_lossy().ends_with(".tmp"))
+        .collect();
+    assert!(leftovers.is_empty(), "temporary files left: {leftovers:?}");
+    check_with_meshio(&dir.join("kirsch_zones_0002.vtu"), zones, nodes);
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// Read the file with Python's meshio. Required when `ADIT_REQUIRE_MESHIO=1` (as in `.ci/run`,
+/// which installs it); otherwise skipped with a note when meshio is not installed.
+fn check_with_meshio(path: &Path, zones: usize, nodes: usize) {
+    let script = format!(
+        r#"
+import sys, meshio
+m = meshio.read(sys.argv[1])
+assert m.points.shape == ({nodes}, 3), m.points.shape
+tri = [c for c in m.cells if c.type == "triangle"]
+assert len(tri) == 1 and tri[0].data.shape == ({zones}, 3)
+for name, comps in [("stress", 9), ("sigma1", 1), ("sigma3", 1), ("block", 1), ("material", 1), ("state", 1)]:
+    a = m.cell_data[name][0]
+    assert a.shape[0] == {zones} and (a.size // {zones}) == comps, (name, a.shape)
+for name in ["displacement", "velocity"]:
+    assert m.point_data[name].shape == ({nodes}, 3), name
+print("meshio ok")
+"#
+    );
+    let required = std::env::var("ADIT_REQUIRE_MESHIO").is_ok_and(|v| v == "1");
+    let has = Command::new("python3")
+        .args(["-c", "import meshio"])
+        .output()
+        .is_ok_and(|o| o.status.success());
+    if !has {
+        assert!(
+            !required,
+            "ADIT_REQUIRE_MESHIO=1 but python3 cannot import meshio"
+        );
+        eprintln!(
+            "meshio not installed: skipping the meshio read (set ADIT_REQUIRE_MESHIO=1 to require it)"
+        );
+        return;
+    }
+    let out = Command::new("python3")
+        .args(["-c", &script])
+        .arg(path)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "meshio failed: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
