@@ -10,6 +10,7 @@ use adit_meshing::BoundaryPart;
 use serde::Serialize;
 
 use crate::kirsch::Kirsch;
+use crate::report::CaseReport;
 
 /// Errors and cost of one Kirsch run.
 #[derive(Debug, Clone, Serialize)]
@@ -65,6 +66,25 @@ pub fn scaled(scene: &Scene, factor: f64) -> Scene {
         }
     }
     s
+}
+
+impl KirschResult {
+    /// As a row of the report.
+    pub fn report(&self) -> CaseReport {
+        CaseReport {
+            case: self.case.clone(),
+            zones: self.zones,
+            cycles: self.cycles,
+            wall_s: self.wall_s,
+            zone_cycles_per_s: self.zone_cycles_per_s,
+            h: Some(self.h),
+            errors: [
+                ("stress_l2".to_string(), self.stress_l2),
+                ("wall_displacement".to_string(), self.wall_displacement),
+            ]
+            .into(),
+        }
+    }
 }
 
 /// How the outer boundary is loaded.

@@ -4,4 +4,5 @@
 pub mod kirsch;
 pub mod kirsch_case;
 pub mod patch;
+pub mod plot;
 pub mod report;

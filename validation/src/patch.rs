@@ -69,6 +69,7 @@ fn report(
         cycles,
         wall_s,
         zone_cycles_per_s: built.model.zones.len() as f64 * cycles as f64 / wall_s,
+        h: None,
         errors: errors
             .iter()
             .map(|&(k, v)| (k.to_string(), v))

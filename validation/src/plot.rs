@@ -1,0 +1,97 @@
+//! Plots of the report (plotters, PNG): error against run time and against zone size.
+
+use std::path::Path;
+
+use plotters::prelude::*;
+
+/// One convergence series: label, and (zone size m, wall s, error) per level.
+pub struct Series {
+    pub label: String,
+    pub points: Vec<(f64, f64, f64)>,
+    pub color: RGBColor,
+    pub dashed: bool,
+}
+
+fn log_range(values: impl Iterator<Item = f64> + Clone) -> std::ops::Range<f64> {
+    let lo = values.clone().fold(f64::INFINITY, f64::min);
+    let hi = values.fold(0.0, f64::max);
+    (lo / 1.5)..(hi * 1.5)
+}
+
+/// Two panels: error against wall seconds (speed versus error) and error against zone size.
+pub fn speed_and_convergence(path: &Path, series: &[Series]) -> anyhow::Result<()> {
+    let root = BitMapBackend::new(path, (1100, 460)).into_drawing_area();
+    root.fill(&WHITE)?;
+    let (left, right) = root.split_horizontally(550);
+    let errors = log_range(
+        series
+            .iter()
+            .flat_map(|s| s.points.iter().map(|p| p.2))
+            .collect::<Vec<_>>()
+            .into_iter(),
+    );
+    let panels = [
+        (
+            left,
+            "error vs run time",
+            "wall seconds",
+            1usize,
+            SeriesLabelPosition::LowerLeft,
+        ),
+        (
+            right,
+            "error vs zone size",
+            "zone size h near the hole (m)",
+            0usize,
+            SeriesLabelPosition::LowerRight,
+        ),
+    ];
+    for (area, title, xlabel, axis, legend) in panels {
+        let xs: Vec<f64> = series
+            .iter()
+            .flat_map(|s| s.points.iter().map(|p| if axis == 1 { p.1 } else { p.0 }))
+            .collect();
+        let mut chart = ChartBuilder::on(&area)
+            .caption(title, ("sans-serif", 20))
+            .margin(12)
+            .x_label_area_size(40)
+            .y_label_area_size(60)
+            .build_cartesian_2d(
+                log_range(xs.into_iter()).log_scale(),
+                errors.clone().log_scale(),
+            )?;
+        chart
+            .configure_mesh()
+            .x_desc(xlabel)
+            .y_desc("relative error")
+            .x_label_formatter(&|v| format!("{v:.2}"))
+            .y_label_formatter(&|v| format!("{v:.0e}"))
+            .draw()?;
+        for s in series {
+            let pts: Vec<(f64, f64)> = s
+                .points
+                .iter()
+                .map(|p| (if axis == 1 { p.1 } else { p.0 }, p.2))
+                .collect();
+            let style = ShapeStyle::from(&s.color).stroke_width(2);
+            if s.dashed {
+                chart.draw_series(DashedLineSeries::new(pts.clone(), 6, 4, style))?;
+            } else {
+                chart.draw_series(LineSeries::new(pts.clone(), style))?;
+            }
+            let color = s.color;
+            chart
+                .draw_series(pts.iter().map(|&p| Circle::new(p, 4, color.filled())))?
+                .label(s.label.clone())
+                .legend(move |(x, y)| Circle::new((x + 8, y), 4, color.filled()));
+        }
+        chart
+            .configure_series_labels()
+            .position(legend)
+            .background_style(WHITE.mix(0.8))
+            .border_style(BLACK)
+            .draw()?;
+    }
+    root.present()?;
+    Ok(())
+}
