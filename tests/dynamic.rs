@@ -58,3 +58,21 @@ fn undamped_step_load_overshoots_twice_static_and_stays_bounded() {
         energy.0
     );
 }
+
+#[test]
+fn a_step_three_times_past_the_limit_stops_with_the_node_named() {
+    let scene = Scene::from_json(TEXT, "step").unwrap();
+    let mut b = build(&scene).unwrap();
+    let mut solver = Solver::new(&mut b.model, &scene.solve, 0);
+    solver.params.dt = 3.0 * solver.step.dt_critical;
+    let sol = solver.solve(&mut b.model, &mut adit::solve::Quiet);
+    let Status::Failed(reason) = &sol.status else {
+        panic!("expected a failure, got {:?}", sol.status)
+    };
+    assert!(sol.cycles < 200, "stopped only after {} cycles", sol.cycles);
+    assert!(
+        reason.contains("node ") || reason.contains("zone "),
+        "{reason}"
+    );
+    eprintln!("{reason}");
+}
