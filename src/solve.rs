@@ -115,7 +115,7 @@ impl Solver {
             self.cycle.run(model, &self.params);
             cycle += 1;
             let time = cycle as f64 * self.params.dt;
-            let due = cycle % every == 0 || cycle == self.spec.max_cycles;
+            let due = cycle.is_multiple_of(every) || cycle == self.spec.max_cycles;
             if due {
                 match self.cycle.monitor(model) {
                     Ok(m) => last = m,
@@ -136,7 +136,7 @@ impl Solver {
             if cycle >= self.spec.max_cycles {
                 break Status::CycleLimit;
             }
-            if self.output_every > 0 && cycle % self.output_every == 0 {
+            if self.output_every > 0 && cycle.is_multiple_of(self.output_every) {
                 observer.output_step(cycle, time, model, &mut self.cycle);
             }
         };

@@ -27,21 +27,15 @@ fn zone_row_sums(grad: &[f64; 6], area: f64, a1: f64, a2: f64, g: f64) -> [[f64;
         if d == 0 { [bx, 0.0, by] } else { [0.0, by, bx] }
     };
     let db = |c: [f64; 3]| [a1 * c[0] + a2 * c[1], a2 * c[0] + a1 * c[1], g * c[2]];
-    let mut out = [[0.0; 2]; 3];
-    for i in 0..3 {
-        for d in 0..2 {
+    std::array::from_fn(|i| {
+        std::array::from_fn(|d| {
             let di = db(col(i, d));
-            let mut s = 0.0;
-            for j in 0..3 {
-                for e in 0..2 {
-                    let cj = col(j, e);
-                    s += (area * (di[0] * cj[0] + di[1] * cj[1] + di[2] * cj[2])).abs();
-                }
-            }
-            out[i][d] = s;
-        }
-    }
-    out
+            (0..3)
+                .flat_map(|j| [col(j, 0), col(j, 1)])
+                .map(|cj| (area * (di[0] * cj[0] + di[1] * cj[1] + di[2] * cj[2])).abs())
+                .sum()
+        })
+    })
 }
 
 /// Gershgorin stiffness bound R_i per node, N/m.

@@ -30,7 +30,6 @@ pub fn zones_vtu(model: &Model) -> Result<Vec<u8>, vtkio::Error> {
         .flat_map(|s| [s[0], s[3], 0.0, s[3], s[1], 0.0, 0.0, 0.0, s[2]])
         .collect();
     let (sigma1, sigma3): (Vec<f64>, Vec<f64>) = zones.stress.iter().map(principal).unzip();
-    let ints = |v: Vec<i32>| v;
     let vec3 = |v: &[[f64; 2]]| -> Vec<f64> { v.iter().flat_map(|p| [p[0], p[1], 0.0]).collect() };
     let piece = UnstructuredGridPiece {
         points: points.into(),
@@ -51,11 +50,16 @@ pub fn zones_vtu(model: &Model) -> Result<Vec<u8>, vtkio::Error> {
                 Attribute::generic("sigma1", 1).with_data(sigma1),
                 Attribute::generic("sigma3", 1).with_data(sigma3),
                 Attribute::generic("block", 1)
-                    .with_data(ints(zones.block.iter().map(|&b| b as i32).collect())),
-                Attribute::generic("material", 1)
-                    .with_data(ints(zones.material.iter().map(|m| m.0 as i32).collect())),
+                    .with_data(zones.block.iter().map(|&b| b as i32).collect::<Vec<i32>>()),
+                Attribute::generic("material", 1).with_data(
+                    zones
+                        .material
+                        .iter()
+                        .map(|m| m.0 as i32)
+                        .collect::<Vec<i32>>(),
+                ),
                 Attribute::generic("state", 1)
-                    .with_data(ints(zones.state.iter().map(|&s| s as i32).collect())),
+                    .with_data(zones.state.iter().map(|&s| s as i32).collect::<Vec<i32>>()),
             ],
         },
     };

@@ -72,17 +72,17 @@ impl Scene {
                 format!("no material named '{}' in materials", self.region.material),
             ));
         }
-        if let Some(names) = &self.region.edge_names {
-            if names.len() != self.region.polygon.len() {
-                return Err(invalid(
-                    "region.edge_names",
-                    format!(
-                        "{} names for {} edges",
-                        names.len(),
-                        self.region.polygon.len()
-                    ),
-                ));
-            }
+        if let Some(names) = &self.region.edge_names
+            && names.len() != self.region.polygon.len()
+        {
+            return Err(invalid(
+                "region.edge_names",
+                format!(
+                    "{} names for {} edges",
+                    names.len(),
+                    self.region.polygon.len()
+                ),
+            ));
         }
         for (i, e) in self.excavations.iter().enumerate() {
             let p = format!("excavations[{i}]");

@@ -87,6 +87,16 @@ fn order_table(md: &mut String, levels: &[KirschResult]) {
     );
 }
 
+/// The levels' table, then their observed orders under a heading line.
+fn convergence_section(md: &mut String, levels: &[KirschResult], heading: &str) {
+    table(
+        md,
+        &levels.iter().map(KirschResult::report).collect::<Vec<_>>(),
+    );
+    let _ = writeln!(md, "\n{heading}\n");
+    order_table(md, levels);
+}
+
 fn table(md: &mut String, rows: &[CaseReport]) {
     let _ = writeln!(
         md,
@@ -226,25 +236,17 @@ fn main() -> anyhow::Result<()> {
          outer boundary carries the far-field stress as in the shipped model; the finite domain adds a \
          truncation error of order (a/R)² that no refinement removes.\n"
     );
-    table(
+    convergence_section(
         &mut md,
-        &exact.iter().map(KirschResult::report).collect::<Vec<_>>(),
+        &exact,
+        "Observed order of convergence with exact tractions (expected: 1 for CST stresses, 2 for displacements):",
     );
-    let _ = writeln!(
-        md,
-        "\nObserved order of convergence with exact tractions (expected: 1 for CST stresses, 2 for displacements):\n"
-    );
-    order_table(&mut md, &exact);
     let _ = writeln!(md);
-    table(
+    convergence_section(
         &mut md,
-        &far.iter().map(KirschResult::report).collect::<Vec<_>>(),
+        &far,
+        "Observed order with far-field tractions (the displacement error levels off at the truncation error):",
     );
-    let _ = writeln!(
-        md,
-        "\nObserved order with far-field tractions (the displacement error levels off at the truncation error):\n"
-    );
-    order_table(&mut md, &far);
     let _ = writeln!(
         md,
         "\nSpeed on the finest level: **{:.2e} zone-cycles per second** ({} zones, {} cycles, {threads} threads).\n",
