@@ -6,9 +6,9 @@ use std::path::{Path, PathBuf};
 
 use adit::Scene;
 use adit_validation::kirsch_case::{KirschResult, OuterLoad, run, scaled};
-use adit_validation::patch;
 use adit_validation::plot::{Series, speed_and_convergence};
 use adit_validation::report::{CaseReport, fitted_order, observed_order};
+use adit_validation::{gravity, patch};
 use plotters::style::RGBColor;
 
 /// Uniform refinement factors of the Kirsch levels (1 = the shipped model's zoning).
@@ -149,6 +149,7 @@ fn main() -> anyhow::Result<()> {
     all.extend(exact.iter().map(KirschResult::report));
     all.extend(far.iter().map(KirschResult::report));
     all.extend(patches.iter().cloned());
+    all.extend(gravity.iter().cloned());
     let out = root.join("target/validation");
     std::fs::create_dir_all(&out)?;
     std::fs::write(out.join("report.json"), serde_json::to_string_pretty(&all)?)?;
@@ -265,6 +266,16 @@ fn main() -> anyhow::Result<()> {
          round-off.\n"
     );
     table(&mut md, &patches);
+    let _ = writeln!(md, "\n## Gravity\n");
+    let _ = writeln!(
+        md,
+        "A 5 m × 20 m column on a fixed base with its sides on rollers, loaded by its own weight from zero \
+         stress (ρ = 2500 kg/m³, g = 9.81 m/s²): zone σyy against −ρg(H − y) (`stress_l2`) and node settlement \
+         against ρg(Hy − y²/2)/M (`settlement`, relative to the top settlement). Then the same column \
+         initialised with the in-situ stress gradient that balances gravity: it must stay at rest \
+         (`displacement`: largest displacement relative to the self-weight settlement of the top).\n"
+    );
+    table(&mut md, &gravity);
     std::fs::write(root.join("docs/validation.md"), md)?;
     println!(
         "wrote target/validation/report.json, docs/validation.md, docs/img/kirsch_convergence.png"
