@@ -1,9 +1,11 @@
 //! Block geometry and triangulation for adit: polygons with holes, excavation shapes, and graded
 //! constrained-Delaunay zoning (spade) of a block into constant-strain triangles.
 
+pub mod blocks;
 pub mod domain;
 pub mod error;
 pub mod geometry;
+pub mod joints;
 pub mod triangulate;
 
 pub use domain::{Domain, Hole};

@@ -1,0 +1,569 @@
+//! Cutting a region into blocks: the planar arrangement of region edges, excavation walls and joint
+//! traces. All segments are split at their intersections (vertices closer than a tolerance are
+//! merged), joint pieces with a free end are pruned repeatedly (a joint that ends inside a block
+//! becomes part of the block, as in UDEC), and the faces of the remaining graph are traced with
+//! half-edges; faces inside the region and outside every excavation are the blocks. A component
+//! floating inside a face (an isolated excavation, a closed joint loop) is a hole of that face.
+
+use std::collections::HashMap;
+
+use crate::domain::Domain;
+use crate::error::MeshError;
+use crate::geometry::{Point, Polygon, distance, segment_distance};
+use crate::joints::{EdgeKind, Segment};
+
+/// One block: an outer ring (counter-clockwise) and holes (clockwise), each edge with its kind.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Block {
+    pub outer: Polygon,
+    /// Kind of outer edge i (vertex i → i+1).
+    pub outer_kinds: Vec<EdgeKind>,
+    pub holes: Vec<Polygon>,
+    pub hole_kinds: Vec<Vec<EdgeKind>>,
+}
+
+impl Block {
+    /// Net area, m².
+    pub fn area(&self) -> f64 {
+        self.outer.signed_area() + self.holes.iter().map(|h| h.signed_area()).sum::<f64>()
+    }
+}
+
+/// The blocks of a region and what the cutting found.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Blocking {
+    pub blocks: Vec<Block>,
+    /// Total length of joint traces that ended inside a block and were absorbed into it, m.
+    pub absorbed_joint_length: f64,
+    /// Blocks smaller than `1e-6` of the region's area or thinner than the tolerance
+    /// (area / longest edge), by index: kept, but worth a warning.
+    pub slivers: Vec<usize>,
+}
+
+/// Merges points closer than the tolerance (uniform hash grid).
+struct VertexPool {
+    pts: Vec<Point>,
+    grid: HashMap<(i64, i64), Vec<u32>>,
+    tol: f64,
+}
+
+impl VertexPool {
+    fn cell(&self, p: Point) -> (i64, i64) {
+        (
+            (p[0] / self.tol).floor() as i64,
+            (p[1] / self.tol).floor() as i64,
+        )
+    }
+
+    fn insert(&mut self, p: Point) -> u32 {
+        let (cx, cy) = self.cell(p);
+        for dx in -1..=1 {
+            for dy in -1..=1 {
+                let near = self.grid.get(&(cx + dx, cy + dy)).and_then(|list| {
+                    list.iter()
+                        .find(|&&v| distance(self.pts[v as usize], p) <= self.tol)
+                });
+                if let Some(&v) = near {
+                    return v;
+                }
+            }
+        }
+        let id = self.pts.len() as u32;
+        self.pts.push(p);
+        self.grid.entry((cx, cy)).or_default().push(id);
+        id
+    }
+}
+
+/// Parameters along `s` (0..1) where it meets `o`: a proper or touching crossing, and the ends of
+/// `o` lying on `s` (within `tol`), so that collinear overlaps split too.
+fn split_params(s: &Segment, o: &Segment, tol: f64, out: &mut Vec<f64>) {
+    let (ax, ay, dx, dy) = (s.a[0], s.a[1], s.b[0] - s.a[0], s.b[1] - s.a[1]);
+    let (ex, ey) = (o.b[0] - o.a[0], o.b[1] - o.a[1]);
+    let len2 = dx * dx + dy * dy;
+    let project = |p: Point| ((p[0] - ax) * dx + (p[1] - ay) * dy) / len2;
+    for p in [o.a, o.b] {
+        if segment_distance(p, s.a, s.b) <= tol {
+            out.push(project(p).clamp(0.0, 1.0));
+        }
+    }
+    let den = dx * ey - dy * ex;
+    if den.abs() <= 1e-14 * len2.sqrt() * (ex * ex + ey * ey).sqrt() {
+        return;
+    }
+    let (wx, wy) = (o.a[0] - ax, o.a[1] - ay);
+    let t = (wx * ey - wy * ex) / den;
+    let u = (wx * dy - wy * dx) / den;
+    let (lt, lu) = (tol / len2.sqrt(), tol / (ex * ex + ey * ey).sqrt());
+    if t >= -lt && t <= 1.0 + lt && u >= -lu && u <= 1.0 + lu {
+        out.push(t.clamp(0.0, 1.0));
+    }
+}
+
+fn bbox_overlap(s: &Segment, o: &Segment, tol: f64) -> bool {
+    (0..2).all(|k| {
+        s.a[k].min(s.b[k]) <= o.a[k].max(o.b[k]) + tol
+            && o.a[k].min(o.b[k]) <= s.a[k].max(s.b[k]) + tol
+    })
+}
+
+/// Cut `domain` into blocks along `joints`. `tol` (m) merges nearly coincident vertices.
+pub fn cut_blocks(domain: &Domain, joints: &[Segment], tol: f64) -> Result<Blocking, MeshError> {
+    let mut segs: Vec<Segment> = Vec::new();
+    for i in 0..domain.outer.len() {
+        let (a, b) = domain.outer.edge(i);
+        segs.push(Segment {
+            a,
+            b,
+            kind: EdgeKind::Region(i as u32),
+        });
+    }
+    for (j, h) in domain.holes.iter().enumerate() {
+        for i in 0..h.polygon.len() {
+            let (a, b) = h.polygon.edge(i);
+            segs.push(Segment {
+                a,
+                b,
+                kind: EdgeKind::Excavation(j as u32),
+            });
+        }
+    }
+    segs.extend(joints.iter().filter(|s| distance(s.a, s.b) > tol).copied());
+
+    // Split every segment at every meeting point; deduplicate edges, boundary kinds first.
+    let mut pool = VertexPool {
+        pts: Vec::new(),
+        grid: HashMap::new(),
+        tol,
+    };
+    let mut edges: HashMap<(u32, u32), EdgeKind> = HashMap::new();
+    let mut params = Vec::new();
+    for (i, s) in segs.iter().enumerate() {
+        params.clear();
+        params.extend([0.0, 1.0]);
+        for (j, o) in segs.iter().enumerate() {
+            if i != j && bbox_overlap(s, o, tol) {
+                split_params(s, o, tol, &mut params);
+            }
+        }
+        params.sort_by(f64::total_cmp);
+        let mut prev: Option<u32> = None;
+        for &t in params.iter() {
+            let v = pool.insert([
+                s.a[0] + t * (s.b[0] - s.a[0]),
+                s.a[1] + t * (s.b[1] - s.a[1]),
+            ]);
+            if let Some(u) = prev.filter(|&u| u != v) {
+                let key = (u.min(v), u.max(v));
+                let kind = edges.entry(key).or_insert(s.kind);
+                *kind = (*kind).min(s.kind);
+            }
+            prev = Some(v);
+        }
+    }
+    let pts = pool.pts;
+
+    // Prune free joint ends until every vertex has degree ≥ 2.
+    let mut degree = vec![0u32; pts.len()];
+    for &(u, v) in edges.keys() {
+        degree[u as usize] += 1;
+        degree[v as usize] += 1;
+    }
+    let mut absorbed = 0.0;
+    loop {
+        let dangling: Vec<(u32, u32)> = edges
+            .keys()
+            .copied()
+            .filter(|&(u, v)| degree[u as usize] < 2 || degree[v as usize] < 2)
+            .collect();
+        if dangling.is_empty() {
+            break;
+        }
+        for key in dangling {
+            if let Some(kind) = edges.remove(&key) {
+                if !matches!(kind, EdgeKind::Joint(_)) {
+                    return Err(MeshError::Triangulation(format!(
+                        "a {kind:?} edge has a free end at ({}, {}); the region or an excavation is not closed",
+                        pts[key.0 as usize][0], pts[key.0 as usize][1]
+                    )));
+                }
+                absorbed += distance(pts[key.0 as usize], pts[key.1 as usize]);
+                degree[key.0 as usize] -= 1;
+                degree[key.1 as usize] -= 1;
+            }
+        }
+    }
+
+    let faces = trace_faces(&pts, &edges);
+    assemble_blocks(domain, &pts, faces, tol, absorbed)
+}
+
+/// A closed cycle of the arrangement: its vertices and edge kinds, face on the left.
+struct Cycle {
+    verts: Vec<u32>,
+    kinds: Vec<EdgeKind>,
+    area: f64,
+}
+
+/// Trace every face of the planar graph with half-edges (face on the left of each half-edge).
+fn trace_faces(pts: &[Point], edges: &HashMap<(u32, u32), EdgeKind>) -> Vec<Cycle> {
+    let mut list: Vec<((u32, u32), EdgeKind)> = edges.iter().map(|(&k, &v)| (k, v)).collect();
+    list.sort_unstable_by_key(|e| e.0);
+    // Half-edge 2e runs u→v, 2e+1 runs v→u.
+    let origin = |h: usize| {
+        if h.is_multiple_of(2) {
+            list[h / 2].0.0
+        } else {
+            list[h / 2].0.1
+        }
+    };
+    let target = |h: usize| {
+        if h.is_multiple_of(2) {
+            list[h / 2].0.1
+        } else {
+            list[h / 2].0.0
+        }
+    };
+    let mut out: HashMap<u32, Vec<usize>> = HashMap::new();
+    for h in 0..2 * list.len() {
+        out.entry(origin(h)).or_default().push(h);
+    }
+    let angle = |h: usize| {
+        let (p, q) = (pts[origin(h) as usize], pts[target(h) as usize]);
+        (q[1] - p[1]).atan2(q[0] - p[0])
+    };
+    let mut slot = vec![0usize; 2 * list.len()];
+    for hs in out.values_mut() {
+        hs.sort_by(|&a, &b| angle(a).total_cmp(&angle(b)));
+        for (k, &h) in hs.iter().enumerate() {
+            slot[h] = k;
+        }
+    }
+    let next = |h: usize| {
+        let twin = h ^ 1;
+        let around = &out[&target(h)];
+        around[(slot[twin] + around.len() - 1) % around.len()]
+    };
+    let mut seen = vec![false; 2 * list.len()];
+    let mut cycles = Vec::new();
+    for start in 0..2 * list.len() {
+        if seen[start] {
+            continue;
+        }
+        let (mut verts, mut kinds) = (Vec::new(), Vec::new());
+        let mut h = start;
+        while !seen[h] {
+            seen[h] = true;
+            verts.push(origin(h));
+            kinds.push(list[h / 2].1);
+            h = next(h);
+        }
+        let area = Polygon::new(verts.iter().map(|&v| pts[v as usize]).collect()).signed_area();
+        cycles.push(Cycle { verts, kinds, area });
+    }
+    cycles
+}
+
+/// Keep the faces inside the region and outside the excavations; attach floating components as holes.
+fn assemble_blocks(
+    domain: &Domain,
+    pts: &[Point],
+    cycles: Vec<Cycle>,
+    tol: f64,
+    absorbed_joint_length: f64,
+) -> Result<Blocking, MeshError> {
+    let polygon = |c: &Cycle| Polygon::new(c.verts.iter().map(|&v| pts[v as usize]).collect());
+    let inside_material =
+        |p: Point| domain.outer.contains(p) && !domain.holes.iter().any(|h| h.polygon.contains(p));
+    let mut blocks: Vec<Block> = Vec::new();
+    let mut floating = Vec::new();
+    for c in &cycles {
+        if c.area <= 0.0 {
+            floating.push(c);
+            continue;
+        }
+        // A point just left of the midpoint of the longest edge lies inside the face.
+        let poly = polygon(c);
+        let n = poly.len();
+        let k = (0..n).max_by(|&i, &j| {
+            let (a, b) = poly.edge(i);
+            let (c2, d) = poly.edge(j);
+            distance(a, b).total_cmp(&distance(c2, d))
+        });
+        let (a, b) = poly.edge(k.unwrap_or(0));
+        let len = distance(a, b);
+        let eps = (1e-6 * len).min(0.1 * c.area / len);
+        let probe = [
+            0.5 * (a[0] + b[0]) - eps * (b[1] - a[1]) / len,
+            0.5 * (a[1] + b[1]) + eps * (b[0] - a[0]) / len,
+        ];
+        if inside_material(probe) {
+            blocks.push(Block {
+                outer: poly,
+                outer_kinds: c.kinds.clone(),
+                holes: vec![],
+                hole_kinds: vec![],
+            });
+        }
+    }
+    // A floating component lies strictly inside its host's outer ring (it shares no vertex with it);
+    // the region's own outer cycle is inside no block.
+    for c in floating {
+        let p = pts[c.verts[0] as usize];
+        let host = (0..blocks.len())
+            .filter(|&b| blocks[b].outer.contains(p) && blocks[b].outer.boundary_distance(p) > tol)
+            .min_by(|&x, &y| {
+                blocks[x]
+                    .outer
+                    .signed_area()
+                    .total_cmp(&blocks[y].outer.signed_area())
+            });
+        if let Some(b) = host {
+            blocks[b].holes.push(polygon(c));
+            blocks[b].hole_kinds.push(c.kinds.clone());
+        }
+    }
+    let region_area = domain.outer.signed_area();
+    let slivers = blocks
+        .iter()
+        .enumerate()
+        .filter(|(_, b)| {
+            let longest = (0..b.outer.len()).map(|i| {
+                let (p, q) = b.outer.edge(i);
+                distance(p, q)
+            });
+            let longest = longest.fold(0.0, f64::max);
+            b.area() < 1e-6 * region_area || b.area() / longest < tol
+        })
+        .map(|(i, _)| i)
+        .collect();
+    Ok(Blocking {
+        blocks,
+        absorbed_joint_length,
+        slivers,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::domain::Hole;
+    use crate::joints::JointSet;
+    use approx::assert_relative_eq;
+
+    fn square(h: f64) -> Domain {
+        let p = Polygon::new(vec![[0.0, 0.0], [h, 0.0], [h, h], [0.0, h]]);
+        Domain::new(p, (0..4).map(|i| format!("e{i}")).collect(), vec![]).unwrap()
+    }
+
+    fn set(dip: f64, spacing: f64, origin: Point) -> JointSet {
+        JointSet {
+            dip_deg: dip,
+            spacing,
+            origin,
+            trace: None,
+            gap: 0.0,
+            spread_dip_deg: 0.0,
+            spread_spacing: 0.0,
+            seed: 0,
+        }
+    }
+
+    fn total_area(b: &Blocking) -> f64 {
+        b.blocks.iter().map(Block::area).sum()
+    }
+
+    #[test]
+    fn two_orthogonal_sets_make_a_grid_of_blocks() {
+        let d = square(10.0);
+        let mut joints =
+            set(0.0, 2.5, [0.0, 0.0]).segments([0.0, 0.0], [10.0, 10.0], EdgeKind::Joint(0));
+        joints.extend(set(90.0, 2.5, [0.0, 0.0]).segments(
+            [0.0, 0.0],
+            [10.0, 10.0],
+            EdgeKind::Joint(1),
+        ));
+        let b = cut_blocks(&d, &joints, 1e-9).unwrap();
+        assert_eq!(b.blocks.len(), 16);
+        for blk in &b.blocks {
+            assert_relative_eq!(blk.area(), 6.25, max_relative = 1e-12);
+            assert_eq!(blk.outer.len(), 4);
+        }
+        assert!(b.slivers.is_empty());
+        // Interior blocks have four joint edges; corner blocks two region and two joint edges.
+        let joint_edges: usize = b
+            .blocks
+            .iter()
+            .map(|k| {
+                k.outer_kinds
+                    .iter()
+                    .filter(|e| matches!(e, EdgeKind::Joint(_)))
+                    .count()
+            })
+            .sum();
+        assert_eq!(joint_edges, 2 * 2 * 3 * 4);
+    }
+
+    #[test]
+    fn inclined_set_with_a_tunnel_conserves_area() {
+        let outer = Polygon::new(vec![
+            [-10.0, -10.0],
+            [10.0, -10.0],
+            [10.0, 10.0],
+            [-10.0, 10.0],
+        ]);
+        let hole = Hole {
+            name: "t".into(),
+            polygon: Polygon::circle([0.3, -0.2], 2.0, 64),
+        };
+        let d = Domain::new(outer, (0..4).map(|i| format!("e{i}")).collect(), vec![hole]).unwrap();
+        let mut joints =
+            set(35.0, 1.7, [0.1, 0.0]).segments([-10.0, -10.0], [10.0, 10.0], EdgeKind::Joint(0));
+        joints.extend(set(-60.0, 2.3, [0.0, 0.4]).segments(
+            [-10.0, -10.0],
+            [10.0, 10.0],
+            EdgeKind::Joint(1),
+        ));
+        let b = cut_blocks(&d, &joints, 1e-9).unwrap();
+        assert_relative_eq!(total_area(&b), d.area(), max_relative = 1e-10);
+        assert!(b.blocks.len() > 100);
+        assert!(
+            b.blocks
+                .iter()
+                .any(|k| k.outer_kinds.contains(&EdgeKind::Excavation(0)))
+        );
+        assert!(b.blocks.iter().all(|k| k.holes.is_empty()));
+    }
+
+    #[test]
+    fn isolated_tunnel_is_a_hole_of_its_block() {
+        let outer = Polygon::new(vec![[0.0, 0.0], [10.0, 0.0], [10.0, 10.0], [0.0, 10.0]]);
+        let hole = Hole {
+            name: "t".into(),
+            polygon: Polygon::circle([2.5, 2.5], 1.0, 32),
+        };
+        let d = Domain::new(outer, (0..4).map(|i| format!("e{i}")).collect(), vec![hole]).unwrap();
+        let joints =
+            set(0.0, 5.0, [0.0, 0.0]).segments([0.0, 0.0], [10.0, 10.0], EdgeKind::Joint(0));
+        let b = cut_blocks(&d, &joints, 1e-9).unwrap();
+        assert_eq!(b.blocks.len(), 2);
+        assert_eq!(b.blocks.iter().map(|k| k.holes.len()).sum::<usize>(), 1);
+        assert_relative_eq!(total_area(&b), d.area(), max_relative = 1e-12);
+    }
+
+    #[test]
+    fn joints_ending_inside_a_block_are_absorbed() {
+        let d = square(10.0);
+        // One persistent horizontal joint, and a vertical trace from the bottom edge ending mid-block.
+        let joints = vec![
+            Segment {
+                a: [0.0, 5.0],
+                b: [10.0, 5.0],
+                kind: EdgeKind::Joint(0),
+            },
+            Segment {
+                a: [3.0, 0.0],
+                b: [3.0, 8.0],
+                kind: EdgeKind::Joint(1),
+            },
+            Segment {
+                a: [6.0, 6.0],
+                b: [8.0, 7.0],
+                kind: EdgeKind::Joint(2),
+            },
+        ];
+        let b = cut_blocks(&d, &joints, 1e-9).unwrap();
+        // The vertical trace splits the lower half (it reaches y = 5), its upper part is absorbed.
+        assert_eq!(b.blocks.len(), 3);
+        assert_relative_eq!(
+            b.absorbed_joint_length,
+            3.0 + 5f64.sqrt(),
+            max_relative = 1e-12
+        );
+        assert_relative_eq!(total_area(&b), 100.0, max_relative = 1e-12);
+    }
+
+    #[test]
+    fn l_shaped_region_and_a_joint_through_a_vertex() {
+        let l = Polygon::new(vec![
+            [0.0, 0.0],
+            [4.0, 0.0],
+            [4.0, 2.0],
+            [2.0, 2.0],
+            [2.0, 4.0],
+            [0.0, 4.0],
+        ]);
+        let d = Domain::new(l, (0..6).map(|i| format!("e{i}")).collect(), vec![]).unwrap();
+        // The diagonal passes through the re-entrant corner (2, 2) and crosses the notch outside.
+        let joints = vec![Segment {
+            a: [0.0, 0.0],
+            b: [4.0, 4.0],
+            kind: EdgeKind::Joint(0),
+        }];
+        let b = cut_blocks(&d, &joints, 1e-9).unwrap();
+        assert_eq!(b.blocks.len(), 2);
+        assert_relative_eq!(total_area(&b), 12.0, max_relative = 1e-12);
+        // A joint along a region edge adds nothing.
+        let along = vec![Segment {
+            a: [0.0, 0.0],
+            b: [4.0, 0.0],
+            kind: EdgeKind::Joint(0),
+        }];
+        let b = cut_blocks(&d, &along, 1e-9).unwrap();
+        assert_eq!(b.blocks.len(), 1);
+        assert!(
+            b.blocks[0]
+                .outer_kinds
+                .iter()
+                .all(|k| matches!(k, EdgeKind::Region(_)))
+        );
+    }
+
+    #[test]
+    fn near_parallel_sets_report_slivers_without_failing() {
+        let d = square(10.0);
+        let mut joints =
+            set(0.0, 1.0, [0.0, 0.05]).segments([0.0, 0.0], [10.0, 10.0], EdgeKind::Joint(0));
+        joints.extend(set(3.0, 1.0, [0.0, 0.0]).segments(
+            [0.0, 0.0],
+            [10.0, 10.0],
+            EdgeKind::Joint(1),
+        ));
+        let b = cut_blocks(&d, &joints, 1e-6).unwrap();
+        assert_relative_eq!(total_area(&b), 100.0, max_relative = 1e-9);
+        assert!(b.blocks.len() > 20);
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(64))]
+        /// Whatever the joint sets, the blocks tile the domain: areas sum to its area and every
+        /// block is a simple polygon of positive area.
+        #[test]
+        fn blocks_tile_the_domain(
+            dip1 in -90.0f64..90.0, dip2 in -90.0f64..90.0,
+            sp1 in 0.7f64..4.0, sp2 in 0.7f64..4.0,
+            ox in -1.0f64..1.0, oy in -1.0f64..1.0,
+            hole in proptest::bool::ANY,
+            trace in proptest::option::of(1.0f64..6.0),
+        ) {
+            let outer = Polygon::new(vec![[-10.0, -8.0], [10.0, -8.0], [10.0, 8.0], [-10.0, 8.0]]);
+            let holes = if hole {
+                vec![Hole { name: "t".into(), polygon: Polygon::circle([ox, oy], 2.0, 48) }]
+            } else {
+                vec![]
+            };
+            let d = Domain::new(outer, (0..4).map(|i| format!("e{i}")).collect(), holes).unwrap();
+            let (lo, hi) = ([-10.0, -8.0], [10.0, 8.0]);
+            let mut joints = set(dip1, sp1, [ox, oy]).segments(lo, hi, EdgeKind::Joint(0));
+            let second = JointSet { trace, gap: 0.5, ..set(dip2, sp2, [oy, ox]) };
+            joints.extend(second.segments(lo, hi, EdgeKind::Joint(1)));
+            let b = cut_blocks(&d, &joints, 1e-9).unwrap();
+            let total: f64 = b.blocks.iter().map(Block::area).sum();
+            proptest::prop_assert!((total - d.area()).abs() <= 1e-9 * d.area(), "{} vs {}", total, d.area());
+            for k in &b.blocks {
+                proptest::prop_assert!(k.area() > 0.0);
+                proptest::prop_assert!(k.outer.self_intersection().is_none());
+            }
+        }
+    }
+}
