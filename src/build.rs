@@ -4,7 +4,7 @@
 use std::collections::BTreeMap;
 
 use adit_meshing::{
-    BoundaryEdge, BoundaryPart, Domain, Hole, MeshError, MeshStats, Polygon, TriMesh, Zoning,
+    BoundaryEdge, Domain, EdgeKind, Hole, MeshError, MeshStats, Polygon, TriMesh, Zoning,
     triangulate,
 };
 
@@ -127,16 +127,17 @@ pub fn build(scene: &Scene) -> anyhow::Result<Built> {
     }
 
     let names = &domain.outer_edge_names;
-    let edge_in_part = |part: BoundaryPart, name: &str| match part {
-        BoundaryPart::Outer(i) => name == "outer" || names[i] == name,
-        BoundaryPart::Hole(j) => domain.holes[j].name == name,
+    let edge_in_part = |kind: EdgeKind, name: &str| match kind {
+        EdgeKind::Region(i) => name == "outer" || names[i as usize] == name,
+        EdgeKind::Excavation(j) => domain.holes[j as usize].name == name,
+        EdgeKind::Joint(_) => false,
     };
     let mut part_nodes = BTreeMap::new();
     for name in scene.part_names() {
         let mut list: Vec<u32> = mesh
             .boundary
             .iter()
-            .filter(|e| edge_in_part(e.part, &name))
+            .filter(|e| edge_in_part(e.kind, &name))
             .flat_map(|e| e.nodes)
             .collect();
         list.sort_unstable();
@@ -183,7 +184,7 @@ fn apply_condition(
     mesh: &TriMesh,
     nodes: &mut Nodes,
     part_nodes: &BTreeMap<String, Vec<u32>>,
-    in_part: &dyn Fn(BoundaryPart) -> bool,
+    in_part: &dyn Fn(EdgeKind) -> bool,
 ) {
     if let Some(at) = bc.at {
         let all: Vec<u32> = part_nodes.values().flatten().copied().collect();
@@ -224,7 +225,7 @@ fn apply_condition(
         || bc.normal_stress.is_some()
         || bc.shear_stress.is_some()
     {
-        let edges = mesh.boundary.iter().filter(|e| in_part(e.part));
+        let edges = mesh.boundary.iter().filter(|e| in_part(e.kind));
         add_tractions(nodes, edges, |p, n| {
             traction(p, n).expect("a load is given")
         });

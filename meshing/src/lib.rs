@@ -8,7 +8,9 @@ pub mod geometry;
 pub mod joints;
 pub mod triangulate;
 
+pub use blocks::{Block, Blocking, cut_blocks};
 pub use domain::{Domain, Hole};
 pub use error::MeshError;
 pub use geometry::{Point, Polygon};
-pub use triangulate::{BoundaryEdge, BoundaryPart, MeshStats, TriMesh, Zoning, triangulate};
+pub use joints::{EdgeKind, JointSet, Segment};
+pub use triangulate::{BoundaryEdge, MeshStats, TriMesh, Zoning, triangulate, triangulate_block};

@@ -12,9 +12,12 @@ use spade::{
     AngleLimit, ConstrainedDelaunayTriangulation, Point2, RefinementParameters, Triangulation,
 };
 
+use crate::blocks::Block;
 use crate::domain::Domain;
 use crate::error::MeshError;
+use crate::geometry::Polygon;
 use crate::geometry::{Point, distance, segment_distance};
+use crate::joints::EdgeKind;
 
 /// Zoning controls. Lengths in metres.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -31,20 +34,12 @@ pub struct Zoning {
     pub max_zones: usize,
 }
 
-/// Which part of the domain boundary an edge lies on.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum BoundaryPart {
-    /// Edge `i` of the region polygon.
-    Outer(usize),
-    /// Wall of hole `j`.
-    Hole(usize),
-}
-
 /// A boundary edge of the mesh, oriented with the material on its left (outward normal to the right).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct BoundaryEdge {
     pub nodes: [u32; 2],
-    pub part: BoundaryPart,
+    /// What the edge lies on: a region edge, an excavation wall or a joint.
+    pub kind: EdgeKind,
 }
 
 /// Mesh quality figures.
@@ -88,12 +83,11 @@ impl Zoning {
     }
 }
 
-/// Target edge length (m) at `p`.
-fn target_size(domain: &Domain, z: &Zoning, p: Point) -> f64 {
-    let d = domain
-        .holes
+/// Target edge length (m) at `p`, graded from the excavation walls.
+fn target_size(excavations: &[Polygon], z: &Zoning, p: Point) -> f64 {
+    let d = excavations
         .iter()
-        .map(|h| h.polygon.boundary_distance(p))
+        .map(|h| h.boundary_distance(p))
         .fold(f64::INFINITY, f64::min);
     if d.is_finite() {
         (z.h_excavation + z.grading * d).min(z.h_far)
@@ -128,10 +122,20 @@ fn split_segment(a: Point, b: Point, size: impl Fn(Point) -> f64) -> Vec<Point> 
     (1..n).map(|k| at(marks[k] * len / total)).collect()
 }
 
-/// Mesh `domain` with the given zoning controls.
+/// Mesh `domain` (one block: the region with its excavations as holes) with the given zoning.
 pub fn triangulate(domain: &Domain, zoning: &Zoning) -> Result<TriMesh, MeshError> {
+    let excavations: Vec<Polygon> = domain.holes.iter().map(|h| h.polygon.clone()).collect();
+    triangulate_block(&Block::from_domain(domain), &excavations, zoning)
+}
+
+/// Mesh one block, grading the zone size from the excavation walls `excavations`.
+pub fn triangulate_block(
+    block: &Block,
+    excavations: &[Polygon],
+    zoning: &Zoning,
+) -> Result<TriMesh, MeshError> {
     zoning.check()?;
-    let size = |p: Point| target_size(domain, zoning, p);
+    let size = |p: Point| target_size(excavations, zoning, p);
     let mut vertices: Vec<Point2<f64>> = Vec::new();
     let mut edges: Vec<[usize; 2]> = Vec::new();
     let mut add_ring = |poly: &crate::geometry::Polygon, vertices: &mut Vec<Point2<f64>>| {
@@ -148,13 +152,13 @@ pub fn triangulate(domain: &Domain, zoning: &Zoning) -> Result<TriMesh, MeshErro
             edges.push([k, if k + 1 == last { first } else { k + 1 }]);
         }
     };
-    add_ring(&domain.outer, &mut vertices);
-    for hole in &domain.holes {
-        add_ring(&hole.polygon, &mut vertices);
+    add_ring(&block.outer, &mut vertices);
+    for hole in &block.holes {
+        add_ring(hole, &mut vertices);
     }
     let boundary_vertices = vertices.len();
     vertices.extend(
-        graded_rings(domain, zoning)
+        graded_rings(block, excavations, zoning)
             .into_iter()
             .map(|p| Point2::new(p[0], p[1])),
     );
@@ -192,7 +196,7 @@ pub fn triangulate(domain: &Domain, zoning: &Zoning) -> Result<TriMesh, MeshErro
         .collect();
     sort_by_morton(&mut tris, &pos);
     let (points, triangles) = renumber(&tris, &pos);
-    let boundary = label_boundary(domain, &points, &triangles)?;
+    let boundary = label_boundary(block, &points, &triangles)?;
     Ok(TriMesh {
         points,
         triangles,
@@ -200,13 +204,16 @@ pub fn triangulate(domain: &Domain, zoning: &Zoning) -> Result<TriMesh, MeshErro
     })
 }
 
-/// Points on rings around each hole, at the graded spacing, up to where h reaches h_far.
-fn graded_rings(domain: &Domain, z: &Zoning) -> Vec<Point> {
+/// Points on rings around each excavation, at the graded spacing, up to where h reaches h_far;
+/// only those inside `block` and at least 0.6 h from its boundary, each ring's points only on the
+/// side of its own excavation (nearer to it than to any other).
+fn graded_rings(block: &Block, excavations: &[Polygon], z: &Zoning) -> Vec<Point> {
+    let (lo, hi) = block.outer.bounds();
+    let rings: Vec<&Polygon> = std::iter::once(&block.outer).chain(&block.holes).collect();
     let mut out = Vec::new();
-    for (j, hole) in domain.holes.iter().enumerate() {
-        let c = hole.polygon.centroid();
+    for (j, hole) in excavations.iter().enumerate() {
+        let c = hole.centroid();
         let r0 = hole
-            .polygon
             .vertices
             .iter()
             .map(|&v| distance(v, c))
@@ -227,22 +234,25 @@ fn graded_rings(domain: &Domain, z: &Zoning) -> Vec<Point> {
             for k in 0..m {
                 let t = std::f64::consts::TAU * (k as f64 + shift) / m as f64;
                 let p = [c[0] + r * t.cos(), c[1] + r * t.sin()];
-                if !domain.outer.contains(p) || domain.holes.iter().any(|h| h.polygon.contains(p)) {
+                if p[0] < lo[0] || p[0] > hi[0] || p[1] < lo[1] || p[1] > hi[1] {
                     continue;
                 }
-                let hp = target_size(domain, z, p);
-                let own = hole.polygon.boundary_distance(p);
-                let nearest_other = domain
-                    .holes
+                if !block.outer.contains(p) || block.holes.iter().any(|h| h.contains(p)) {
+                    continue;
+                }
+                let hp = target_size(excavations, z, p);
+                let own = hole.boundary_distance(p);
+                let nearest_other = excavations
                     .iter()
                     .enumerate()
                     .filter(|&(i, _)| i != j)
-                    .map(|(_, h)| h.polygon.boundary_distance(p))
+                    .map(|(_, h)| h.boundary_distance(p))
                     .fold(f64::INFINITY, f64::min);
-                if own < 0.6 * hp
-                    || nearest_other < own
-                    || domain.outer.boundary_distance(p) < 0.6 * hp
-                {
+                let clearance = rings
+                    .iter()
+                    .map(|q| q.boundary_distance(p))
+                    .fold(f64::INFINITY, f64::min);
+                if nearest_other < own || clearance < 0.6 * hp {
                     continue;
                 }
                 out.push(p);
@@ -296,9 +306,10 @@ fn renumber(tris: &[[usize; 3]], pos: &[Point]) -> (Vec<Point>, Vec<[u32; 3]>) {
     (points, triangles)
 }
 
-/// Find the mesh edges used by one triangle only and label each with the domain part it lies on.
+/// Find the mesh edges used by one triangle only and label each with the kind of the block edge
+/// it lies on.
 fn label_boundary(
-    domain: &Domain,
+    block: &Block,
     points: &[Point],
     triangles: &[[u32; 3]],
 ) -> Result<Vec<BoundaryEdge>, MeshError> {
@@ -309,41 +320,35 @@ fn label_boundary(
             count.entry((a.min(b), a.max(b))).or_insert((0, [a, b])).0 += 1;
         }
     }
-    let tol = 1e-9 * domain.outer.size();
+    let tol = 1e-9 * block.outer.size();
     let on = |a: Point, b: Point, p: Point, q: Point| {
         segment_distance(a, p, q) <= tol && segment_distance(b, p, q) <= tol
     };
+    let rings: Vec<(&Polygon, &Vec<EdgeKind>)> =
+        std::iter::once((&block.outer, &block.outer_kinds))
+            .chain(block.holes.iter().zip(&block.hole_kinds))
+            .collect();
     let mut edges: Vec<BoundaryEdge> = Vec::new();
     for &(n, nodes) in count.values() {
         if n != 1 {
             continue;
         }
         let (a, b) = (points[nodes[0] as usize], points[nodes[1] as usize]);
-        let outer = (0..domain.outer.len()).find(|&i| {
-            let (p, q) = domain.outer.edge(i);
-            on(a, b, p, q)
+        let kind = rings.iter().find_map(|(ring, kinds)| {
+            (0..ring.len())
+                .find(|&i| {
+                    let (p, q) = ring.edge(i);
+                    on(a, b, p, q)
+                })
+                .map(|i| kinds[i])
         });
-        let part = match outer {
-            Some(i) => BoundaryPart::Outer(i),
-            None => {
-                let hole = domain.holes.iter().position(|h| {
-                    (0..h.polygon.len()).any(|i| {
-                        let (p, q) = h.polygon.edge(i);
-                        on(a, b, p, q)
-                    })
-                });
-                match hole {
-                    Some(j) => BoundaryPart::Hole(j),
-                    None => {
-                        return Err(MeshError::Triangulation(format!(
-                            "boundary edge ({}, {})–({}, {}) lies on no region or excavation edge",
-                            a[0], a[1], b[0], b[1]
-                        )));
-                    }
-                }
-            }
+        let Some(kind) = kind else {
+            return Err(MeshError::Triangulation(format!(
+                "boundary edge ({}, {})–({}, {}) lies on no block edge",
+                a[0], a[1], b[0], b[1]
+            )));
         };
-        edges.push(BoundaryEdge { nodes, part });
+        edges.push(BoundaryEdge { nodes, kind });
     }
     edges.sort_by_key(|e| e.nodes);
     Ok(edges)
@@ -443,9 +448,9 @@ mod tests {
                 mesh.points[e.nodes[0] as usize],
                 mesh.points[e.nodes[1] as usize],
             );
-            match e.part {
-                BoundaryPart::Hole(0) => hole_len += l,
-                BoundaryPart::Outer(i) => outer_len[i] += l,
+            match e.kind {
+                EdgeKind::Excavation(0) => hole_len += l,
+                EdgeKind::Region(i) => outer_len[i as usize] += l,
                 other => panic!("unexpected part {other:?}"),
             }
         }
@@ -467,5 +472,85 @@ mod tests {
             ..zoning()
         };
         assert!(matches!(triangulate(&d, &z), Err(MeshError::Zoning(_))));
+    }
+
+    fn smallest_corner_deg(p: &Polygon) -> f64 {
+        let n = p.len();
+        (0..n)
+            .map(|i| {
+                let (a, b, c) = (
+                    p.vertices[(i + n - 1) % n],
+                    p.vertices[i],
+                    p.vertices[(i + 1) % n],
+                );
+                let (u, v) = ([a[0] - b[0], a[1] - b[1]], [c[0] - b[0], c[1] - b[1]]);
+                let cos = (u[0] * v[0] + u[1] * v[1]) / (u[0].hypot(u[1]) * v[0].hypot(v[1]));
+                cos.clamp(-1.0, 1.0).acos().to_degrees()
+            })
+            .fold(180.0, f64::min)
+    }
+
+    #[test]
+    fn every_block_of_a_jointed_tunnel_meshes_on_its_own() {
+        let d = kirsch_domain();
+        let (lo, hi) = ([-20.0, -20.0], [20.0, 20.0]);
+        let set = |dip: f64, spacing: f64, k: u32| {
+            crate::joints::JointSet {
+                dip_deg: dip,
+                spacing,
+                origin: [0.2, 0.1],
+                trace: None,
+                gap: 0.0,
+                spread_dip_deg: 0.0,
+                spread_spacing: 0.0,
+                seed: 0,
+            }
+            .segments(lo, hi, EdgeKind::Joint(k))
+        };
+        let mut joints = set(40.0, 3.0, 0);
+        joints.extend(set(-50.0, 4.0, 1));
+        // Snapping within 0.3 h keeps joints from cutting slivers off the excavation's segments.
+        let blocking = crate::blocks::cut_blocks(&d, &joints, 0.3 * zoning().h_excavation).unwrap();
+        let excavations = vec![d.holes[0].polygon.clone()];
+        let (mut area, mut joint_len) = (0.0, 0.0);
+        for b in &blocking.blocks {
+            let mesh = triangulate_block(b, &excavations, &zoning()).unwrap();
+            let s = mesh.stats();
+            assert_relative_eq!(s.area, b.area(), max_relative = 1e-9);
+            // Refinement cannot beat a sharp corner of the block itself.
+            let corner = smallest_corner_deg(&b.outer);
+            assert!(
+                s.min_angle_deg >= 20f64.min(0.9 * corner),
+                "min angle {} at corner {corner}",
+                s.min_angle_deg
+            );
+            area += s.area;
+            joint_len += mesh
+                .boundary
+                .iter()
+                .filter(|e| matches!(e.kind, EdgeKind::Joint(_)))
+                .map(|e| {
+                    distance(
+                        mesh.points[e.nodes[0] as usize],
+                        mesh.points[e.nodes[1] as usize],
+                    )
+                })
+                .sum::<f64>();
+        }
+        assert_relative_eq!(area, d.area(), max_relative = 1e-9);
+        // Each joint trace is a boundary of the blocks on both of its sides.
+        let traces: f64 = blocking
+            .blocks
+            .iter()
+            .flat_map(|b| {
+                (0..b.outer.len())
+                    .filter(|&i| matches!(b.outer_kinds[i], EdgeKind::Joint(_)))
+                    .map(|i| {
+                        let (p, q) = b.outer.edge(i);
+                        distance(p, q)
+                    })
+            })
+            .sum();
+        assert_relative_eq!(joint_len, traces, max_relative = 1e-9);
     }
 }

@@ -6,7 +6,7 @@ use std::time::Instant;
 use adit::Scene;
 use adit::build::{add_tractions, build};
 use adit::solve::{Quiet, Solver, Status};
-use adit_meshing::BoundaryPart;
+use adit_meshing::EdgeKind;
 use serde::Serialize;
 
 use crate::kirsch::Kirsch;
@@ -110,7 +110,7 @@ pub fn run(scene: &Scene, case: &str, load: OuterLoad) -> anyhow::Result<KirschR
         let edges = built
             .boundary
             .iter()
-            .filter(|e| matches!(e.part, BoundaryPart::Outer(_)));
+            .filter(|e| matches!(e.kind, EdgeKind::Region(_)));
         add_tractions(&mut built.model.nodes, edges, |p, n| {
             let s = exact.stress(p[0], p[1]);
             [s[0] * n[0] + s[2] * n[1], s[2] * n[0] + s[1] * n[1]]
