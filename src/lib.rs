@@ -7,6 +7,7 @@
 
 pub mod build;
 pub mod cycle;
+pub mod joint;
 pub mod law;
 pub mod model;
 pub mod output;

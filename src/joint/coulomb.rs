@@ -1,0 +1,147 @@
+//! Linear Coulomb slip joint with tensile strength, cohesion and dilation (UDEC's joint area
+//! contact Coulomb slip model; Itasca, UDEC *Theory and Background*, §1.2.4).
+
+use super::{FAILED, JointLaw, JointState, OPEN, SLIPPING};
+
+/// Coulomb slip joint material.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CoulombSlip {
+    /// Normal stiffness kn, Pa/m.
+    pub normal_stiffness: f64,
+    /// Shear stiffness ks, Pa/m.
+    pub shear_stiffness: f64,
+    /// Friction angle φ, degrees.
+    pub friction_deg: f64,
+    /// Cohesion c, Pa (lost once the joint fails).
+    pub cohesion: f64,
+    /// Tensile strength T, Pa (lost once the joint fails).
+    pub tensile_strength: f64,
+    /// Dilation angle ψ, degrees.
+    pub dilation_deg: f64,
+}
+
+impl JointLaw for CoulombSlip {
+    /// Normal stress from the total normal displacement, σn = σn0 + kn (un − d) with σn0 the stress
+    /// when the contact was made and d the accumulated dilation (so an opened joint recloses at the
+    /// right place); shear incremental, τ ← τ + ks Δus. Then tension: if σn > T the joint opens and
+    /// fails (σn = τ = 0); shear: if |τ| > c − σn tan φ (σn ≤ 0), τ returns to the limit with its sign,
+    /// the joint slips and fails, and dilation grows by |Δus| tan ψ. Failed joints have c = T = 0.
+    fn update(&self, s: &mut JointState, dn: f64, ds: f64) {
+        let failed = s.flags & FAILED != 0;
+        let (c, t) = if failed {
+            (0.0, 0.0)
+        } else {
+            (self.cohesion, self.tensile_strength)
+        };
+        s.normal_displacement += dn;
+        s.shear_displacement += ds;
+        s.flags &= !(SLIPPING | OPEN);
+        let normal =
+            s.initial_normal + self.normal_stiffness * (s.normal_displacement - s.dilation);
+        if normal > t {
+            s.normal = 0.0;
+            s.shear = 0.0;
+            s.flags |= OPEN | FAILED;
+            return;
+        }
+        s.normal = normal;
+        s.shear += self.shear_stiffness * ds;
+        let limit = c - s.normal * self.friction_deg.to_radians().tan();
+        if s.shear.abs() > limit {
+            s.shear = limit * s.shear.signum();
+            s.flags |= SLIPPING | FAILED;
+            let tan_psi = self.dilation_deg.to_radians().tan();
+            if tan_psi != 0.0 {
+                s.dilation += ds.abs() * tan_psi;
+                s.normal =
+                    s.initial_normal + self.normal_stiffness * (s.normal_displacement - s.dilation);
+            }
+        }
+    }
+
+    fn stiffness(&self) -> (f64, f64) {
+        (self.normal_stiffness, self.shear_stiffness)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn joint() -> CoulombSlip {
+        CoulombSlip {
+            normal_stiffness: 10e9,
+            shear_stiffness: 5e9,
+            friction_deg: 30.0,
+            cohesion: 1e5,
+            tensile_strength: 5e4,
+            dilation_deg: 0.0,
+        }
+    }
+
+    #[test]
+    fn shear_stress_is_capped_at_cohesion_plus_friction_then_cohesion_is_lost() {
+        let law = joint();
+        let mut s = JointState {
+            normal: -1e6,
+            initial_normal: -1e6,
+            ..Default::default()
+        };
+        for _ in 0..100 {
+            law.update(&mut s, 0.0, 1e-5);
+        }
+        // After failure the cohesion is gone: τ = σn tan φ.
+        assert!((s.shear - 1e6 * 30f64.to_radians().tan()).abs() < 1e-6 * 1e6);
+        assert!(s.flags & SLIPPING != 0 && s.flags & FAILED != 0);
+    }
+
+    #[test]
+    fn peak_includes_cohesion_before_failure() {
+        let law = joint();
+        let mut s = JointState {
+            normal: -1e6,
+            initial_normal: -1e6,
+            ..Default::default()
+        };
+        let peak = 1e5 + 1e6 * 30f64.to_radians().tan();
+        let mut max = 0.0f64;
+        for _ in 0..200 {
+            law.update(&mut s, 0.0, 1e-6);
+            max = max.max(s.shear);
+        }
+        assert!((max - peak).abs() < 1e-9 * peak, "{max} vs {peak}");
+    }
+
+    #[test]
+    fn tension_beyond_strength_opens_and_fails() {
+        let law = joint();
+        let mut s = JointState::default();
+        law.update(&mut s, 1e-6, 0.0); // σn = 1e4 < T
+        assert_eq!(s.flags, 0);
+        law.update(&mut s, 1e-5, 0.0); // σn = 1.1e5 > T
+        assert_eq!((s.normal, s.flags & (OPEN | FAILED)), (0.0, OPEN | FAILED));
+        // Closing by less than the opening leaves it open; closing past it compresses.
+        law.update(&mut s, -5e-6, 0.0);
+        assert_eq!(s.normal, 0.0);
+        law.update(&mut s, -7e-6, 0.0);
+        assert!((s.normal - -1e4).abs() < 1e-6, "{}", s.normal);
+    }
+
+    #[test]
+    fn dilation_raises_confinement_while_slipping() {
+        let law = CoulombSlip {
+            dilation_deg: 10.0,
+            cohesion: 0.0,
+            ..joint()
+        };
+        let mut s = JointState {
+            normal: -1e6,
+            initial_normal: -1e6,
+            ..Default::default()
+        };
+        for _ in 0..100 {
+            law.update(&mut s, 0.0, 1e-5);
+        }
+        assert!(s.normal < -1e6);
+    }
+}

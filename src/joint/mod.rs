@@ -1,0 +1,39 @@
+//! Joint constitutive laws behind one small trait; each law is one file.
+
+mod coulomb;
+
+pub use coulomb::CoulombSlip;
+
+/// Bit flag of `JointState::flags`: the joint is slipping now.
+pub const SLIPPING: u8 = 1;
+/// Bit flag: the joint is open (no normal contact).
+pub const OPEN: u8 = 2;
+/// Bit flag: the joint has failed (in shear or tension) and lost its cohesion and tensile strength.
+pub const FAILED: u8 = 4;
+
+/// Stress state of one contact, Pa, tension positive.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct JointState {
+    /// Normal stress, Pa (negative in compression).
+    pub normal: f64,
+    /// Shear stress, Pa, along the contact tangent.
+    pub shear: f64,
+    /// Accumulated shear displacement, m.
+    pub shear_displacement: f64,
+    /// Accumulated normal displacement (opening positive), m.
+    pub normal_displacement: f64,
+    /// Normal stress when the contact was made (the in-situ stress for joints present from the start), Pa.
+    pub initial_normal: f64,
+    /// Accumulated dilation (opening the joint would need to keep its stress), m.
+    pub dilation: f64,
+    /// `SLIPPING`, `OPEN`, `FAILED` bit flags.
+    pub flags: u8,
+}
+
+/// A joint law: updates a contact's stresses from its normal and shear displacement increments.
+pub trait JointLaw: Send + Sync {
+    /// Advance `state` by the increments of opening `dn` (m, positive opening) and shear `ds` (m).
+    fn update(&self, state: &mut JointState, dn: f64, ds: f64);
+    /// Normal and shear stiffness (Pa/m), for the time step.
+    fn stiffness(&self) -> (f64, f64);
+}
