@@ -6,6 +6,7 @@
 //! (m, Pa, kg, s), tension positive.
 
 pub mod build;
+pub mod contact;
 pub mod cycle;
 pub mod joint;
 pub mod law;

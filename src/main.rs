@@ -103,13 +103,19 @@ fn run(scene_path: &Path, out: Option<PathBuf>, quiet: bool) -> anyhow::Result<b
 
 fn check(scene_path: &Path) -> anyhow::Result<()> {
     let scene = load(scene_path)?;
-    let (domain, mesh) = mesh(&scene)?;
-    let s = mesh.stats();
+    let meshed = mesh(&scene)?;
+    let s = meshed.stats();
     println!("scene {}: valid", scene.name);
     println!(
         "domain area {:.6} m², {} excavation(s)",
-        domain.area(),
-        domain.holes.len()
+        meshed.domain.area(),
+        meshed.domain.holes.len()
+    );
+    println!(
+        "blocks: {} ({} sliver(s)), {:.3} m of joint traces absorbed into blocks",
+        meshed.blocking.blocks.len(),
+        meshed.blocking.slivers.len(),
+        meshed.blocking.absorbed_joint_length
     );
     println!(
         "mesh: {} zones, {} nodes, min angle {:.1}°, edges {:.4}–{:.4} m, zoned area {:.6} m²",

@@ -80,14 +80,14 @@ pub fn run_scene(
     let mut seconds = solver.cycle.seconds;
     seconds.output = output_seconds;
     let wall = start.elapsed().as_secs_f64();
-    let cycling = seconds.zones + seconds.motion;
+    let cycling = seconds.detect + seconds.contacts + seconds.zones + seconds.motion;
     let zones = built.model.zones.len();
     let summary = Summary {
         scene: scene.name.clone(),
         zones,
         nodes: built.model.nodes.len(),
-        blocks: 1,
-        contacts: 0,
+        blocks: built.model.blocks.len(),
+        contacts: built.model.contacts.len(),
         cycles: solution.cycles,
         wall_seconds: wall,
         stage_seconds: seconds,

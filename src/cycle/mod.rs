@@ -1,9 +1,8 @@
-//! One explicit cycle as a pipeline of named stages: zone forces, then motion; the monitor runs
-//! every few cycles. The `Cycle` owns only scratch space and stage timers.
-//!
-//! Detection, contact forces and structural forces join this pipeline with blocks, joints and
-//! supports; a single deformable block has none of them.
+//! One explicit cycle as a pipeline of named stages: detect (when something has moved far enough),
+//! contact forces, zone forces, motion; the monitor runs every few cycles. The `Cycle` owns only
+//! scratch space, the detection trigger and stage timers. Structural forces join with supports.
 
+mod contacts;
 pub mod monitor;
 pub mod timestep;
 
@@ -41,6 +40,12 @@ pub struct StageSeconds {
 pub struct Cycle {
     /// Force of each zone on each of its corners, N/m, indexed zone·3 + corner.
     pub zone_force: Vec<[f64; 2]>,
+    /// Force of each contact on its node and on the two nodes of its edge, N/m, contact·3 + role.
+    pub contact_force: Vec<[f64; 2]>,
+    /// Upper bound on how far any node has moved since the last detection, m.
+    pub moved: f64,
+    /// Detections run so far (the one at build time not counted).
+    pub detections: u64,
     pub seconds: StageSeconds,
 }
 
@@ -48,19 +53,29 @@ impl Cycle {
     pub fn new(model: &Model) -> Cycle {
         Cycle {
             zone_force: vec![[0.0; 2]; 3 * model.zones.len()],
-            seconds: StageSeconds::default(),
+            contact_force: vec![[0.0; 2]; 3 * model.contacts.len()],
+            ..Default::default()
         }
     }
 
     /// Advance the model by one step.
     pub fn run(&mut self, model: &mut Model, p: &CycleParams) {
         let t0 = Instant::now();
-        self.zone_forces(model, p);
+        if model.blocks.len() > 1 && self.moved > 0.5 * model.contact_tolerance {
+            self.detect(model);
+        }
         let t1 = Instant::now();
-        self.motion(model, p);
+        self.contact_forces(model, p);
         let t2 = Instant::now();
-        self.seconds.zones += (t1 - t0).as_secs_f64();
-        self.seconds.motion += (t2 - t1).as_secs_f64();
+        self.zone_forces(model, p);
+        let t3 = Instant::now();
+        let speed = self.motion(model, p);
+        self.moved += speed * p.dt;
+        let t4 = Instant::now();
+        self.seconds.detect += (t1 - t0).as_secs_f64();
+        self.seconds.contacts += (t2 - t1).as_secs_f64();
+        self.seconds.zones += (t3 - t2).as_secs_f64();
+        self.seconds.motion += (t4 - t3).as_secs_f64();
     }
 
     /// Zone stage: strain increment from node velocities, Δε = sym(∇v)Δt with the CST gradients,
@@ -110,10 +125,15 @@ impl Cycle {
     /// add applied loads, apply local non-viscous damping F_d = F − α|F|sign(v) per component
     /// (Cundall 1987; UDEC's default), then the central-difference update
     /// v ← v + F_d Δt / m, u ← u + v Δt. A fixed component keeps its velocity (zero unless
-    /// the scene or a test prescribes one), as FLAC's FIX.
-    pub fn motion(&mut self, model: &mut Model, p: &CycleParams) {
-        let Model { nodes, gather, .. } = model;
-        let zf = &self.zone_force;
+    /// the scene or a test prescribes one), as FLAC's FIX. Returns the largest node speed, m/s.
+    pub fn motion(&mut self, model: &mut Model, p: &CycleParams) -> f64 {
+        let Model {
+            nodes,
+            gather,
+            contact_gather,
+            ..
+        } = model;
+        let (zf, cf) = (&self.zone_force, &self.contact_force);
         let (alpha, dt) = (p.damping, p.dt);
         nodes
             .vel
@@ -125,10 +145,15 @@ impl Cycle {
             .zip(nodes.fixed.par_iter())
             .enumerate()
             .with_min_len(1024)
-            .for_each(|(n, (((((v, u), force), applied), &m), &fixed))| {
+            .map(|(n, (((((v, u), force), applied), &m), &fixed))| {
                 let mut f = *applied;
                 for &s in gather.of(n) {
                     let c = zf[s as usize];
+                    f[0] += c[0];
+                    f[1] += c[1];
+                }
+                for &s in contact_gather.of(n) {
+                    let c = cf[s as usize];
                     f[0] += c[0];
                     f[1] += c[1];
                 }
@@ -143,6 +168,8 @@ impl Cycle {
                     u[d] += v[d] * dt;
                 }
                 *force = f;
-            });
+                v[0].hypot(v[1])
+            })
+            .reduce(|| 0.0, f64::max)
     }
 }

@@ -40,6 +40,10 @@ impl Cycle {
                         let z = self.zone_force[s as usize];
                         gross += (z[0] * z[0] + z[1] * z[1]).sqrt();
                     }
+                    for &s in model.contact_gather.of(i) {
+                        let c = self.contact_force[s as usize];
+                        gross += (c[0] * c[0] + c[1] * c[1]).sqrt();
+                    }
                     let v = nodes.vel[i];
                     ke += 0.5 * nodes.mass[i] * (v[0] * v[0] + v[1] * v[1]);
                 }
@@ -67,6 +71,9 @@ impl Cycle {
                 p[0], p[1]
             ));
         }
+        if let Some(reason) = interpenetration(model) {
+            return Err(reason);
+        }
         let mean = gross / n as f64;
         let ratio = if mean > 0.0 { max_force / mean } else { 0.0 };
         Ok(Monitor {
@@ -77,6 +84,17 @@ impl Cycle {
     }
 
     fn first_bad(&self, model: &Model) -> String {
+        let contacts = &model.contacts;
+        if let Some(c) = contacts
+            .state
+            .iter()
+            .position(|s| !(s.normal.is_finite() && s.shear.is_finite()))
+        {
+            return format!(
+                "non-finite joint stress at contact {c} (node {})",
+                contacts.node[c]
+            );
+        }
         if let Some(z) = model
             .zones
             .stress
@@ -101,4 +119,24 @@ impl Cycle {
             p[0], p[1]
         )
     }
+}
+
+/// The first contact whose overlap exceeds half the joint length it stands for (the node has gone
+/// through the opposite block), named with its node and block.
+fn interpenetration(model: &Model) -> Option<String> {
+    let c = &model.contacts;
+    (0..c.len()).find(|&k| -c.state[k].normal_displacement > c.length[k]).map(|k| {
+        let p = model.nodes.pos[c.node[k] as usize];
+        format!(
+            "interpenetration at contact {k}: node {} (block {}, at ({:.4}, {:.4})) is {:.3e} m inside block {}, \
+             beyond the {:.3e} m limit; stiffer joints or smaller loads are needed",
+            c.node[k],
+            model.blocks.block_of_node(c.node[k]),
+            p[0],
+            p[1],
+            -c.state[k].normal_displacement,
+            c.block[k],
+            c.length[k]
+        )
+    })
 }

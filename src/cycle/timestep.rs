@@ -38,7 +38,7 @@ fn zone_row_sums(grad: &[f64; 6], area: f64, a1: f64, a2: f64, g: f64) -> [[f64;
     })
 }
 
-/// Gershgorin stiffness bound R_i per node, N/m.
+/// Gershgorin stiffness bound R_i per node (zones and contacts), N/m.
 pub fn nodal_stiffness(model: &Model) -> Vec<f64> {
     let Zones {
         nodes,
@@ -56,7 +56,39 @@ pub fn nodal_stiffness(model: &Model) -> Vec<f64> {
             r[n as usize][1] += sums[c][1];
         }
     }
-    r.into_iter().map(|[x, y]| x.max(y)).collect()
+    let mut r: Vec<f64> = r.into_iter().map(|[x, y]| x.max(y)).collect();
+    add_contact_stiffness(model, &mut r);
+    r
+}
+
+/// Contact springs stiffen the boundary nodes. A node's contact (length ≤ half its tributary
+/// length L) couples it to two edge nodes with stiffness at most (kn + ks)·L/2 per direction, and
+/// as an edge node it meets at most a few such contacts; 4 L (kn + ks) per boundary node bounds
+/// both roles, for contacts present now and any that form later, so the step stays stable
+/// however the blocks move.
+fn add_contact_stiffness(model: &Model, r: &mut [f64]) {
+    if model.blocks.len() < 2 {
+        return;
+    }
+    let k = model
+        .joint_laws
+        .iter()
+        .map(|l| l.stiffness())
+        .map(|(kn, ks)| kn + ks)
+        .fold(0.0, f64::max);
+    let blocks = &model.blocks;
+    for (n, edges) in blocks.node_edges.iter().enumerate() {
+        let trib: f64 = edges
+            .iter()
+            .filter(|&&e| e != crate::model::blocks::NO_EDGE)
+            .map(|&e| {
+                let [a, b] = blocks.edges[e as usize];
+                let (p, q) = (model.nodes.pos[a as usize], model.nodes.pos[b as usize]);
+                0.5 * (q[0] - p[0]).hypot(q[1] - p[1])
+            })
+            .sum();
+        r[n] += 4.0 * trib * k;
+    }
 }
 
 /// Real lumped masses, kg/m: ρ A / 3 to each corner.

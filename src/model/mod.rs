@@ -1,12 +1,15 @@
 //! Model state as structure-of-arrays: nodes, zones and the node→zone gather table, indexed by
 //! typed ids. Stages of the cycle borrow the parts they need.
 
+pub mod blocks;
 pub mod nodes;
 pub mod zones;
 
 pub use nodes::{FIX_X, FIX_Y, Nodes};
 pub use zones::{Stress, Zones};
 
+use crate::contact::Contacts;
+use crate::joint::JointLaw;
 use crate::law::ZoneLaw;
 
 /// Index of a node.
@@ -73,4 +76,15 @@ pub struct Model {
     pub material_names: Vec<String>,
     /// Largest extent of the model, m (a length scale for runaway checks).
     pub size: f64,
+    pub blocks: blocks::Blocks,
+    pub contacts: Contacts,
+    /// For each node, the slots of the contact-force buffer acting on it (contact·3 + role).
+    pub contact_gather: Gather,
+    /// Joint laws, indexed by joint material id.
+    pub joint_laws: Vec<Box<dyn JointLaw>>,
+    pub joint_material_names: Vec<String>,
+    /// Joint material of each joint feature (`EdgeKind::Joint(k)`).
+    pub joint_material: Vec<u32>,
+    /// Contact detection tolerance, m.
+    pub contact_tolerance: f64,
 }

@@ -17,8 +17,8 @@ use atomic::write_atomic;
 pub struct OutputWriter {
     pub dir: PathBuf,
     pub name: String,
-    /// (timestep value, file name) of each step written so far.
-    steps: Vec<(f64, String)>,
+    /// (timestep value, file names: zones, then contacts when there are blocks) of each step so far.
+    steps: Vec<(f64, Vec<String>)>,
 }
 
 impl OutputWriter {
@@ -34,10 +34,18 @@ impl OutputWriter {
     /// Write the zone grid of this step and refresh the collection; `timestep` is the cumulative
     /// cycle count.
     pub fn write_step(&mut self, model: &Model, timestep: f64) -> anyhow::Result<()> {
-        let file = format!("{}_zones_{:04}.vtu", self.name, self.steps.len());
+        let step = self.steps.len();
+        let zones = format!("{}_zones_{step:04}.vtu", self.name);
         let xml = vtu::zones_vtu(model)?;
-        write_atomic(&self.dir.join(&file), |w| w.write_all(&xml))?;
-        self.steps.push((timestep, file));
+        write_atomic(&self.dir.join(&zones), |w| w.write_all(&xml))?;
+        let mut files = vec![zones];
+        if model.blocks.len() > 1 {
+            let contacts = format!("{}_contacts_{step:04}.vtu", self.name);
+            let xml = vtu::contacts_vtu(model)?;
+            write_atomic(&self.dir.join(&contacts), |w| w.write_all(&xml))?;
+            files.push(contacts);
+        }
+        self.steps.push((timestep, files));
         self.write_pvd()?;
         Ok(())
     }
@@ -51,11 +59,13 @@ impl OutputWriter {
                 "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">"
             )?;
             writeln!(w, "  <Collection>")?;
-            for (t, file) in &self.steps {
-                writeln!(
-                    w,
-                    "    <DataSet timestep=\"{t}\" group=\"\" part=\"0\" file=\"{file}\"/>"
-                )?;
+            for (t, files) in &self.steps {
+                for (part, file) in files.iter().enumerate() {
+                    writeln!(
+                        w,
+                        "    <DataSet timestep=\"{t}\" group=\"\" part=\"{part}\" file=\"{file}\"/>"
+                    )?;
+                }
             }
             writeln!(w, "  </Collection>")?;
             writeln!(w, "</VTKFile>")

@@ -63,6 +63,68 @@ pub fn zones_vtu(model: &Model) -> Result<Vec<u8>, vtkio::Error> {
             ],
         },
     };
+    xml_of(piece)
+}
+
+/// Contacts as vertex cells at their points (original positions), with joint stresses and
+/// displacements and the state (0 elastic, 1 slipping, 2 open) as point data.
+pub fn contacts_vtu(model: &Model) -> Result<Vec<u8>, vtkio::Error> {
+    let (c, pos) = (&model.contacts, &model.nodes.pos);
+    let n = c.len();
+    let points: Vec<f64> = (0..n)
+        .flat_map(|k| {
+            let [a, b] = model.blocks.edges[c.edge[k] as usize].map(|v| pos[v as usize]);
+            let xi = c.xi[k];
+            [
+                (1.0 - xi) * a[0] + xi * b[0],
+                (1.0 - xi) * a[1] + xi * b[1],
+                0.0,
+            ]
+        })
+        .collect();
+    let column = |f: &dyn Fn(&crate::joint::JointState) -> f64| -> Vec<f64> {
+        c.state.iter().map(f).collect()
+    };
+    let state: Vec<i32> = c
+        .state
+        .iter()
+        .map(|s| {
+            if s.flags & crate::joint::OPEN != 0 {
+                2
+            } else if s.flags & crate::joint::SLIPPING != 0 {
+                1
+            } else {
+                0
+            }
+        })
+        .collect();
+    let piece = UnstructuredGridPiece {
+        points: points.into(),
+        cells: Cells {
+            cell_verts: VertexNumbers::XML {
+                connectivity: (0..n as u64).collect(),
+                offsets: (1..=n as u64).collect(),
+            },
+            types: vec![CellType::Vertex; n],
+        },
+        data: Attributes {
+            point: vec![
+                Attribute::generic("normal_stress", 1).with_data(column(&|s| s.normal)),
+                Attribute::generic("shear_stress", 1).with_data(column(&|s| s.shear)),
+                Attribute::generic("normal_displacement", 1)
+                    .with_data(column(&|s| s.normal_displacement)),
+                Attribute::generic("shear_displacement", 1)
+                    .with_data(column(&|s| s.shear_displacement)),
+                Attribute::generic("state", 1).with_data(state),
+            ],
+            cell: vec![],
+        },
+    };
+    xml_of(piece)
+}
+
+/// One piece as binary XML text, with the positions note in its field data.
+fn xml_of(piece: UnstructuredGridPiece) -> Result<Vec<u8>, vtkio::Error> {
     let vtk = Vtk {
         version: Version::new((1, 0)),
         title: String::new(),

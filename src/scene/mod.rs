@@ -23,6 +23,17 @@ pub struct Scene {
     #[serde(default)]
     pub excavations: Vec<Excavation>,
     pub zoning: ZoningSpec,
+    /// Joint materials by name.
+    #[serde(default)]
+    pub joint_materials: BTreeMap<String, JointMaterial>,
+    /// Sets of parallel joints cutting the region into blocks.
+    #[serde(default)]
+    pub joint_sets: Vec<JointSetSpec>,
+    /// Explicit joint segments.
+    #[serde(default)]
+    pub joints: Vec<JointLine>,
+    #[serde(default)]
+    pub contacts: ContactSpec,
     #[serde(default)]
     pub in_situ: InSitu,
     /// Gravitational acceleration (m/s²), as a vector; default none.
@@ -89,6 +100,86 @@ pub struct Circle {
 
 fn default_segments() -> usize {
     128
+}
+
+/// A Coulomb slip joint material.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct JointMaterial {
+    /// Normal stiffness kn, Pa/m.
+    pub normal_stiffness: f64,
+    /// Shear stiffness ks, Pa/m.
+    pub shear_stiffness: f64,
+    /// Friction angle, degrees (default 30).
+    #[serde(default = "default_friction")]
+    pub friction: f64,
+    /// Cohesion, Pa (default 0; lost once the joint fails).
+    #[serde(default)]
+    pub cohesion: f64,
+    /// Tensile strength, Pa (default 0; lost once the joint fails).
+    #[serde(default)]
+    pub tensile_strength: f64,
+    /// Dilation angle, degrees (default 0).
+    #[serde(default)]
+    pub dilation: f64,
+}
+
+fn default_friction() -> f64 {
+    30.0
+}
+
+/// A set of parallel joints.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct JointSetSpec {
+    /// Dip angle, degrees counter-clockwise from the +x axis.
+    pub dip: f64,
+    /// Perpendicular spacing, m.
+    pub spacing: f64,
+    /// A point one joint of the set passes through, m (default the origin).
+    #[serde(default)]
+    pub origin: [f64; 2],
+    /// Trace length of non-persistent joints, m (default: persistent).
+    #[serde(default)]
+    pub trace: Option<f64>,
+    /// Rock bridge between traces, m (with `trace`; default 0).
+    #[serde(default)]
+    pub gap: f64,
+    /// Random spread of each joint's dip, ± degrees (default 0).
+    #[serde(default)]
+    pub spread_dip: f64,
+    /// Random spread of each joint's position, ± m (default 0).
+    #[serde(default)]
+    pub spread_spacing: f64,
+    /// Seed of the random spread (default 1).
+    #[serde(default = "default_seed")]
+    pub seed: u64,
+    /// Joint material name.
+    pub material: String,
+}
+
+fn default_seed() -> u64 {
+    1
+}
+
+/// One explicit joint segment.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct JointLine {
+    /// End points, m.
+    pub from: [f64; 2],
+    pub to: [f64; 2],
+    /// Joint material name.
+    pub material: String,
+}
+
+/// Contact detection controls.
+#[derive(Debug, Clone, Default, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct ContactSpec {
+    /// Largest gap at which a node and an edge make a contact, m (default 5 % of
+    /// `zoning.edge_at_excavation`); detection reruns once anything has moved half of it.
+    pub tolerance: Option<f64>,
 }
 
 /// Zoning controls.

@@ -127,6 +127,64 @@ impl Scene {
                 format!("must be in (0, 33] degrees, got {}", z.min_angle),
             ));
         }
+        for (name, j) in &self.joint_materials {
+            let p = format!("joint_materials.{name}");
+            positive(&format!("{p}.normal_stiffness"), j.normal_stiffness)?;
+            positive(&format!("{p}.shear_stiffness"), j.shear_stiffness)?;
+            if !(0.0..90.0).contains(&j.friction) {
+                return Err(invalid(
+                    format!("{p}.friction"),
+                    format!("must be in [0, 90) degrees, got {}", j.friction),
+                ));
+            }
+            if !(0.0..90.0).contains(&j.dilation) {
+                return Err(invalid(
+                    format!("{p}.dilation"),
+                    format!("must be in [0, 90) degrees, got {}", j.dilation),
+                ));
+            }
+            for (f, v) in [
+                ("cohesion", j.cohesion),
+                ("tensile_strength", j.tensile_strength),
+            ] {
+                if !(v >= 0.0 && v.is_finite()) {
+                    return Err(invalid(
+                        format!("{p}.{f}"),
+                        format!("must be zero or positive, got {v}"),
+                    ));
+                }
+            }
+        }
+        let joint_material = |path: String, name: &str| {
+            if self.joint_materials.contains_key(name) {
+                Ok(())
+            } else {
+                Err(invalid(
+                    path,
+                    format!("no joint material named '{name}' in joint_materials"),
+                ))
+            }
+        };
+        for (i, js) in self.joint_sets.iter().enumerate() {
+            let p = format!("joint_sets[{i}]");
+            positive(&format!("{p}.spacing"), js.spacing)?;
+            if let Some(t) = js.trace {
+                positive(&format!("{p}.trace"), t)?;
+            }
+            if !(js.gap >= 0.0 && js.spread_dip >= 0.0 && js.spread_spacing >= 0.0) {
+                return Err(invalid(&p, "gap and spreads must be zero or positive"));
+            }
+            joint_material(format!("{p}.material"), &js.material)?;
+        }
+        for (i, j) in self.joints.iter().enumerate() {
+            joint_material(format!("joints[{i}].material"), &j.material)?;
+            if j.from == j.to {
+                return Err(invalid(format!("joints[{i}]"), "`from` and `to` coincide"));
+            }
+        }
+        if let Some(t) = self.contacts.tolerance {
+            positive("contacts.tolerance", t)?;
+        }
         let s = &self.in_situ;
         for (f, v) in [
             ("sxx", s.sxx),

@@ -1,0 +1,94 @@
+//! Boundary conditions: fixities on boundary nodes and tractions as consistent nodal loads.
+
+use std::collections::BTreeMap;
+
+use adit_meshing::{BoundaryEdge, EdgeKind};
+
+use super::in_situ_stress;
+use crate::model::{FIX_X, FIX_Y, Nodes};
+use crate::scene::{BoundaryCondition, Fix, Scene};
+
+fn fix_flags(f: Fix) -> u8 {
+    match f {
+        Fix::X => FIX_X,
+        Fix::Y => FIX_Y,
+        Fix::XY => FIX_X | FIX_Y,
+    }
+}
+
+/// Apply one boundary condition: fixities on nodes, tractions as consistent nodal loads.
+pub(super) fn apply_condition(
+    bc: &BoundaryCondition,
+    scene: &Scene,
+    boundary: &[BoundaryEdge],
+    nodes: &mut Nodes,
+    part_nodes: &BTreeMap<String, Vec<u32>>,
+    in_part: &dyn Fn(EdgeKind) -> bool,
+) {
+    if let Some(at) = bc.at {
+        let all: Vec<u32> = part_nodes.values().flatten().copied().collect();
+        let d2 = |n: u32| {
+            let p = nodes.pos[n as usize];
+            (p[0] - at[0]).powi(2) + (p[1] - at[1]).powi(2)
+        };
+        if let Some(&n) = all.iter().min_by(|&&a, &&b| d2(a).total_cmp(&d2(b))) {
+            nodes.fixed[n as usize] |= fix_flags(bc.fix.expect("validated: point conditions fix"));
+        }
+        return;
+    }
+    let name = bc.part.as_deref().expect("validated: part or at");
+    if let Some(f) = bc.fix {
+        for &n in &part_nodes[name] {
+            nodes.fixed[n as usize] |= fix_flags(f);
+        }
+    }
+    let poisson = scene.materials[&scene.region.material].poisson;
+    let traction = |p: [f64; 2], n: [f64; 2]| -> Option<[f64; 2]> {
+        let s = if let Some(s) = bc.stress {
+            [s.sxx, s.syy, 0.0, s.sxy]
+        } else if bc.in_situ_traction {
+            in_situ_stress(&scene.in_situ, p[1], poisson)
+        } else if bc.normal_stress.is_some() || bc.shear_stress.is_some() {
+            let (sn, tau) = (
+                bc.normal_stress.unwrap_or(0.0),
+                bc.shear_stress.unwrap_or(0.0),
+            );
+            return Some([sn * n[0] - tau * n[1], sn * n[1] + tau * n[0]]);
+        } else {
+            return None;
+        };
+        Some([s[0] * n[0] + s[3] * n[1], s[3] * n[0] + s[1] * n[1]])
+    };
+    if bc.stress.is_some()
+        || bc.in_situ_traction
+        || bc.normal_stress.is_some()
+        || bc.shear_stress.is_some()
+    {
+        let edges = boundary.iter().filter(|e| in_part(e.kind));
+        add_tractions(nodes, edges, |p, n| {
+            traction(p, n).expect("a load is given")
+        });
+    }
+}
+
+/// Add the consistent nodal loads of a traction t(p, n) (Pa, at point p with outward unit normal
+/// n) over boundary edges (material on the left of each edge): for t varying linearly along an
+/// edge of length L, (2tₐ + t_b)L/6 to its first node and (tₐ + 2t_b)L/6 to its second.
+pub fn add_tractions<'a>(
+    nodes: &mut Nodes,
+    edges: impl Iterator<Item = &'a BoundaryEdge>,
+    traction: impl Fn([f64; 2], [f64; 2]) -> [f64; 2],
+) {
+    for e in edges {
+        let [a, b] = e.nodes.map(|n| n as usize);
+        let (pa, pb) = (nodes.pos[a], nodes.pos[b]);
+        let (dx, dy) = (pb[0] - pa[0], pb[1] - pa[1]);
+        let len = (dx * dx + dy * dy).sqrt();
+        let n = [dy / len, -dx / len];
+        let (ta, tb) = (traction(pa, n), traction(pb, n));
+        for d in 0..2 {
+            nodes.applied[a][d] += (2.0 * ta[d] + tb[d]) * len / 6.0;
+            nodes.applied[b][d] += (ta[d] + 2.0 * tb[d]) * len / 6.0;
+        }
+    }
+}

@@ -1,0 +1,145 @@
+//! Scene geometry to meshes: the domain, the joint traces, the blocks they cut, and each block's
+//! zones. Errors name the scene field.
+
+use adit_meshing::{
+    Block, Blocking, Domain, EdgeKind, Hole, JointSet, MeshError, MeshStats, Polygon, Segment,
+    TriMesh, Zoning, cut_blocks, triangulate_block,
+};
+use rayon::prelude::*;
+
+use crate::scene::Scene;
+
+/// The domain (region with excavation holes) a scene describes.
+pub fn domain(scene: &Scene) -> Result<Domain, MeshError> {
+    let outer = Polygon::new(scene.region.polygon.clone());
+    let holes = scene
+        .excavations
+        .iter()
+        .map(|e| {
+            let polygon = match (&e.circle, &e.polygon) {
+                (Some(c), _) => Polygon::circle(c.center, c.radius, c.segments),
+                (None, Some(p)) => Polygon::new(p.clone()),
+                (None, None) => unreachable!("validated: one shape per excavation"),
+            };
+            Hole {
+                name: e.name.clone(),
+                polygon,
+            }
+        })
+        .collect();
+    Domain::new(outer, scene.edge_names(), holes)
+}
+
+/// Joint traces of the scene over the region's bounding box: joint sets first (feature k = set
+/// index), then explicit joints (k = number of sets + index).
+pub fn joint_segments(scene: &Scene, domain: &Domain) -> Vec<Segment> {
+    let (lo, hi) = domain.outer.bounds();
+    let mut out = Vec::new();
+    for (k, js) in scene.joint_sets.iter().enumerate() {
+        let set = JointSet {
+            dip_deg: js.dip,
+            spacing: js.spacing,
+            origin: js.origin,
+            trace: js.trace,
+            gap: js.gap,
+            spread_dip_deg: js.spread_dip,
+            spread_spacing: js.spread_spacing,
+            seed: js.seed,
+        };
+        out.extend(set.segments(lo, hi, EdgeKind::Joint(k as u32)));
+    }
+    let sets = scene.joint_sets.len();
+    for (i, j) in scene.joints.iter().enumerate() {
+        out.push(Segment {
+            a: j.from,
+            b: j.to,
+            kind: EdgeKind::Joint((sets + i) as u32),
+        });
+    }
+    out
+}
+
+/// Zoning controls of a scene.
+pub fn zoning(scene: &Scene) -> Zoning {
+    let z = &scene.zoning;
+    Zoning {
+        h_excavation: z.edge_at_excavation,
+        h_far: z.edge_far,
+        grading: z.grading,
+        min_angle_deg: z.min_angle,
+        max_zones: z.max_zones,
+    }
+}
+
+/// A scene's geometry, cut into blocks and zoned.
+pub struct Meshed {
+    pub domain: Domain,
+    pub blocking: Blocking,
+    /// One mesh per block, in block order.
+    pub meshes: Vec<TriMesh>,
+}
+
+impl Meshed {
+    /// Mesh statistics over all blocks.
+    pub fn stats(&self) -> MeshStats {
+        let all: Vec<MeshStats> = self.meshes.iter().map(TriMesh::stats).collect();
+        MeshStats {
+            zones: all.iter().map(|s| s.zones).sum(),
+            nodes: all.iter().map(|s| s.nodes).sum(),
+            min_angle_deg: all
+                .iter()
+                .map(|s| s.min_angle_deg)
+                .fold(f64::INFINITY, f64::min),
+            min_edge: all.iter().map(|s| s.min_edge).fold(f64::INFINITY, f64::min),
+            max_edge: all.iter().map(|s| s.max_edge).fold(0.0, f64::max),
+            area: all.iter().map(|s| s.area).sum(),
+        }
+    }
+}
+
+/// The scene field a meshing error is about: `region.polygon` or `excavations[i]`.
+fn field_of(scene: &Scene, err: &MeshError) -> String {
+    let shape = match err {
+        MeshError::Degenerate { shape, .. }
+        | MeshError::SelfIntersecting { shape, .. }
+        | MeshError::HoleOutside { shape, .. } => shape.as_str(),
+        MeshError::HolesOverlap { a, .. } => a.as_str(),
+        MeshError::Zoning(_) | MeshError::Triangulation(_) => return "zoning".into(),
+    };
+    match scene.excavations.iter().position(|e| e.name == shape) {
+        Some(i) => format!("excavations[{i}]"),
+        None => "region.polygon".into(),
+    }
+}
+
+/// Cut the scene's region into blocks and zone each; errors name the scene field.
+pub fn mesh(scene: &Scene) -> anyhow::Result<Meshed> {
+    mesh_blocks(scene).map_err(|e| anyhow::anyhow!("{}: {e}", field_of(scene, &e)))
+}
+
+fn mesh_blocks(scene: &Scene) -> Result<Meshed, MeshError> {
+    let domain = domain(scene)?;
+    let zoning = zoning(scene);
+    let joints = joint_segments(scene, &domain);
+    let blocking = if joints.is_empty() {
+        Blocking {
+            blocks: vec![Block::from_domain(&domain)],
+            absorbed_joint_length: 0.0,
+            slivers: vec![],
+        }
+    } else {
+        // Vertices closer than 0.3 of the finest zone merge, so joints cut no sliver edges.
+        cut_blocks(&domain, &joints, 0.3 * zoning.h_excavation)?
+    };
+    let excavations: Vec<Polygon> = domain.holes.iter().map(|h| h.polygon.clone()).collect();
+    let meshes = blocking
+        .blocks
+        .par_iter()
+        .map(|b| triangulate_block(b, &excavations, &zoning))
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(Meshed {
+        domain,
+        blocking,
+        meshes,
+    })
+}

@@ -1,0 +1,274 @@
+//! From a validated scene to a model: cut the region into blocks, zone each block, initialise the
+//! in-situ stress in zones and joints, apply fixities, boundary tractions and gravity, and detect
+//! the contacts along the joints.
+
+mod boundary;
+mod geometry;
+#[cfg(test)]
+mod tests;
+
+use std::collections::BTreeMap;
+
+use adit_meshing::{BoundaryEdge, Domain, EdgeKind, MeshStats};
+
+pub use boundary::add_tractions;
+pub use geometry::{Meshed, domain, joint_segments, mesh, zoning};
+
+use crate::contact::Contacts;
+use crate::contact::detect::{Detection, Touch, detect};
+use crate::joint::{CoulombSlip, JointLaw, JointState};
+use crate::law::{Elastic, ZoneLaw};
+use crate::model::blocks::{Blocks, NO_EDGE};
+use crate::model::{Gather, MaterialId, Model, Nodes, Zones};
+use crate::scene::{InSitu, Scene};
+
+/// A model ready to cycle, with what was learnt while building it.
+pub struct Built {
+    pub model: Model,
+    pub mesh: MeshStats,
+    /// Boundary nodes of each named part (`outer`, region edge names, excavation names), sorted.
+    pub part_nodes: BTreeMap<String, Vec<u32>>,
+    /// Boundary edges of all blocks (global node ids), material on the left, labelled by kind.
+    pub boundary: Vec<BoundaryEdge>,
+    /// The validated domain the blocks cover.
+    pub domain: Domain,
+    /// Things worth a warning: sliver blocks, joints absorbed into blocks.
+    pub warnings: Vec<String>,
+}
+
+/// In-situ stress at elevation y, Pa: [σxx, σyy, σzz, σxy], σzz defaulting to ν(σxx + σyy).
+pub fn in_situ_stress(s: &InSitu, y: f64, poisson: f64) -> [f64; 4] {
+    let dy = y - s.y_ref;
+    let sxx = s.sxx + s.gradient.sxx * dy;
+    let syy = s.syy + s.gradient.syy * dy;
+    let szz = match s.szz {
+        Some(v) => v + s.gradient.szz * dy,
+        None => poisson * (sxx + syy),
+    };
+    [sxx, syy, szz, s.sxy]
+}
+
+/// The block meshes joined into one numbering.
+struct Assembled {
+    pos: Vec<[f64; 2]>,
+    triangles: Vec<[u32; 3]>,
+    zone_block: Vec<u32>,
+    blocks: Blocks,
+    boundary: Vec<BoundaryEdge>,
+}
+
+/// Concatenate the block meshes: global nodes, zones, and the block table.
+fn assemble(meshed: &Meshed) -> Assembled {
+    let (mut pos, mut tris, mut zone_block) = (Vec::new(), Vec::new(), Vec::new());
+    let mut blocks = Blocks {
+        node_start: vec![0],
+        zone_start: vec![0],
+        edge_start: vec![0],
+        ..Default::default()
+    };
+    let mut boundary = Vec::new();
+    for (b, m) in meshed.meshes.iter().enumerate() {
+        let offset = pos.len() as u32;
+        pos.extend_from_slice(&m.points);
+        tris.extend(m.triangles.iter().map(|t| t.map(|n| n + offset)));
+        zone_block.extend(std::iter::repeat_n(b as u32, m.triangles.len()));
+        for e in &m.boundary {
+            let nodes = e.nodes.map(|n| n + offset);
+            blocks.edges.push(nodes);
+            blocks.edge_kind.push(e.kind);
+            boundary.push(BoundaryEdge {
+                nodes,
+                kind: e.kind,
+            });
+        }
+        blocks.node_start.push(pos.len() as u32);
+        blocks.zone_start.push(tris.len() as u32);
+        blocks.edge_start.push(blocks.edges.len() as u32);
+    }
+    blocks.node_edges = vec![[NO_EDGE; 2]; pos.len()];
+    for (e, &[a, b]) in blocks.edges.iter().enumerate() {
+        blocks.node_edges[a as usize][1] = e as u32;
+        blocks.node_edges[b as usize][0] = e as u32;
+    }
+    Assembled {
+        pos,
+        triangles: tris,
+        zone_block,
+        blocks,
+        boundary,
+    }
+}
+
+/// Build the model of a validated scene.
+pub fn build(scene: &Scene) -> anyhow::Result<Built> {
+    let meshed = mesh(scene)?;
+    let stats = meshed.stats();
+    let Assembled {
+        pos,
+        triangles: tris,
+        zone_block,
+        blocks,
+        boundary,
+    } = assemble(&meshed);
+    let mut nodes = Nodes::at(pos);
+    let mut zones = Zones::from_triangles(&tris, &nodes.pos);
+    zones.block = zone_block;
+
+    let material_names: Vec<String> = scene.materials.keys().cloned().collect();
+    let laws: Vec<Box<dyn ZoneLaw>> = scene
+        .materials
+        .values()
+        .map(|m| Box::new(Elastic::from_young(m.young, m.poisson, m.density)) as Box<dyn ZoneLaw>)
+        .collect();
+    let region_mat = material_names
+        .iter()
+        .position(|n| *n == scene.region.material)
+        .expect("validated");
+    let poisson = scene.materials[&scene.region.material].poisson;
+    for z in 0..zones.len() {
+        zones.material[z] = MaterialId(region_mat as u32);
+        let c = zones.centroid(z, &nodes.pos);
+        zones.stress[z] = in_situ_stress(&scene.in_situ, c[1], poisson);
+    }
+
+    // Gravity: body force ρ g A / 3 on each corner (lumped).
+    if scene.gravity != [0.0, 0.0] {
+        for z in 0..zones.len() {
+            let w = laws[zones.material[z].0 as usize].density() * zones.area[z] / 3.0;
+            for &n in &zones.nodes[z] {
+                nodes.applied[n as usize][0] += w * scene.gravity[0];
+                nodes.applied[n as usize][1] += w * scene.gravity[1];
+            }
+        }
+    }
+
+    let domain = &meshed.domain;
+    let names = &domain.outer_edge_names;
+    let edge_in_part = |kind: EdgeKind, name: &str| match kind {
+        EdgeKind::Region(i) => name == "outer" || names[i as usize] == name,
+        EdgeKind::Excavation(j) => domain.holes[j as usize].name == name,
+        EdgeKind::Joint(_) => false,
+    };
+    let mut part_nodes = BTreeMap::new();
+    for name in scene.part_names() {
+        let mut list: Vec<u32> = boundary
+            .iter()
+            .filter(|e| edge_in_part(e.kind, &name))
+            .flat_map(|e| e.nodes)
+            .collect();
+        list.sort_unstable();
+        list.dedup();
+        part_nodes.insert(name, list);
+    }
+    for bc in &scene.boundary {
+        boundary::apply_condition(bc, scene, &boundary, &mut nodes, &part_nodes, &|k| {
+            edge_in_part(k, bc.part.as_deref().unwrap_or(""))
+        });
+    }
+
+    // Joint laws, and the material of each joint feature (sets first, then explicit joints).
+    let joint_material_names: Vec<String> = scene.joint_materials.keys().cloned().collect();
+    let joint_laws: Vec<Box<dyn JointLaw>> = scene
+        .joint_materials
+        .values()
+        .map(|j| {
+            Box::new(CoulombSlip {
+                normal_stiffness: j.normal_stiffness,
+                shear_stiffness: j.shear_stiffness,
+                friction_deg: j.friction,
+                cohesion: j.cohesion,
+                tensile_strength: j.tensile_strength,
+                dilation_deg: j.dilation,
+            }) as Box<dyn JointLaw>
+        })
+        .collect();
+    let material_index = |name: &str| {
+        joint_material_names
+            .iter()
+            .position(|n| n == name)
+            .expect("validated") as u32
+    };
+    let joint_material: Vec<u32> = scene
+        .joint_sets
+        .iter()
+        .map(|s| material_index(&s.material))
+        .chain(scene.joints.iter().map(|j| material_index(&j.material)))
+        .collect();
+    let contact_tolerance = scene
+        .contacts
+        .tolerance
+        .unwrap_or(0.05 * scene.zoning.edge_at_excavation);
+    anyhow::ensure!(
+        blocks.len() == 1 || !joint_laws.is_empty(),
+        "joint_materials: {} blocks need at least one joint material for their contacts",
+        blocks.len()
+    );
+
+    // Joints present from the start are intact and carry the in-situ traction.
+    let in_situ_joint = |t: &Touch| {
+        let s = in_situ_stress(&scene.in_situ, t.point[1], poisson);
+        let n = t.normal;
+        let tangent = [-n[1], n[0]];
+        let traction = [s[0] * n[0] + s[3] * n[1], s[3] * n[0] + s[1] * n[1]];
+        let normal = traction[0] * n[0] + traction[1] * n[1];
+        JointState {
+            normal,
+            shear: traction[0] * tangent[0] + traction[1] * tangent[1],
+            initial_normal: normal,
+            ..Default::default()
+        }
+    };
+    let contacts = if blocks.len() > 1 {
+        let d = Detection {
+            blocks: &blocks,
+            x: &nodes.pos,
+            tolerance: contact_tolerance,
+            joint_material: &joint_material,
+        };
+        detect(&d, &Contacts::default(), &in_situ_joint)
+    } else {
+        Contacts::default()
+    };
+
+    let mut warnings = Vec::new();
+    for &b in &meshed.blocking.slivers {
+        let blk = &meshed.blocking.blocks[b];
+        warnings.push(format!(
+            "block {b} is a sliver (area {:.3e} m²); consider coarser joints or zoning",
+            blk.area()
+        ));
+    }
+    if meshed.blocking.absorbed_joint_length > 0.0 {
+        warnings.push(format!(
+            "{:.3} m of joint traces end inside blocks and were absorbed into them",
+            meshed.blocking.absorbed_joint_length
+        ));
+    }
+
+    let size = domain.outer.size();
+    let gather = Gather::new(nodes.len(), &zones.nodes);
+    let contact_gather = Gather::new(nodes.len(), &contacts.triples(&blocks.edges));
+    let model = Model {
+        nodes,
+        zones,
+        gather,
+        laws,
+        material_names,
+        size,
+        blocks,
+        contacts,
+        contact_gather,
+        joint_laws,
+        joint_material_names,
+        joint_material,
+        contact_tolerance,
+    };
+    Ok(Built {
+        model,
+        mesh: stats,
+        part_nodes,
+        boundary,
+        domain: meshed.domain,
+        warnings,
+    })
+}

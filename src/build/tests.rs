@@ -1,0 +1,68 @@
+//! Tests of building: geometry errors name their field, tractions balance.
+
+use super::*;
+
+fn scene_with(region: &str, excavation: &str) -> Scene {
+    let text = format!(
+        r#"{{ "name": "t", "materials": {{ "rock": {{ "density": 2500, "young": 1e9, "poisson": 0.2 }} }},
+                "region": {{ "polygon": {region}, "material": "rock" }},
+                "excavations": [{excavation}],
+                "zoning": {{ "edge_at_excavation": 0.5, "edge_far": 2 }} }}"#
+    );
+    Scene::from_json(&text, "test").unwrap()
+}
+
+#[test]
+fn self_intersecting_region_names_the_field() {
+    let s = scene_with("[[0, 0], [10, 10], [10, 0], [0, 10]]", "");
+    let msg = build(&s).err().unwrap().to_string();
+    assert!(
+        msg.starts_with("region.polygon:") && msg.contains("self-intersecting"),
+        "{msg}"
+    );
+}
+
+#[test]
+fn hole_outside_region_names_the_excavation() {
+    let s = scene_with(
+        "[[0, 0], [10, 0], [10, 10], [0, 10]]",
+        r#"{ "name": "adit", "circle": { "center": [20, 5], "radius": 1 } }"#,
+    );
+    let msg = build(&s).err().unwrap().to_string();
+    assert!(
+        msg.starts_with("excavations[0]:") && msg.contains("not inside the region"),
+        "{msg}"
+    );
+}
+
+#[test]
+fn tractions_of_a_uniform_stress_balance_on_a_closed_boundary() {
+    let mut s = scene_with(
+        "[[0, 0], [10, 0], [10, 10], [0, 10]]",
+        r#"{ "name": "adit", "circle": { "center": [4, 5], "radius": 1 } }"#,
+    );
+    s.boundary = serde_json::from_str(
+        r#"[{ "part": "outer", "stress": { "sxx": -1e6, "syy": -2e6, "sxy": 5e5 } }]"#,
+    )
+    .unwrap();
+    let b = build(&s).unwrap();
+    let (mut fx, mut fy, mut m) = (0.0, 0.0, 0.0);
+    for (p, f) in b.model.nodes.pos.iter().zip(&b.model.nodes.applied) {
+        fx += f[0];
+        fy += f[1];
+        m += p[0] * f[1] - p[1] * f[0];
+    }
+    assert!(
+        fx.abs() < 1e-6 && fy.abs() < 1e-6 && m.abs() < 1e-5,
+        "{fx} {fy} {m}"
+    );
+    // The traction on the top edge (n = +y) is (σxy, σyy) over 10 m.
+    let top: f64 = b.part_nodes["edge2"]
+        .iter()
+        .map(|&n| b.model.nodes.applied[n as usize][1])
+        .sum();
+    assert!(
+        (top - (-2e6 * 10.0 - 1e6 * 0.0)).abs() < 1e-3 * 2e7,
+        "{top}"
+    );
+}

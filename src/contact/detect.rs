@@ -1,0 +1,344 @@
+//! Contact detection. Broad phase: sort-and-sweep over block bounding boxes (near-linear in the
+//! number of blocks). Narrow phase: each boundary node of one block against the nearest boundary
+//! edge of the other, both ways. Contacts that persist (same node, same opposite block) keep their
+//! joint state.
+
+use std::collections::HashMap;
+
+use adit_meshing::EdgeKind;
+use rayon::prelude::*;
+
+use super::Contacts;
+use crate::joint::JointState;
+use crate::model::blocks::{Blocks, NO_EDGE};
+
+/// What detection needs to know.
+pub struct Detection<'a> {
+    pub blocks: &'a Blocks,
+    /// Current node positions, m.
+    pub x: &'a [[f64; 2]],
+    /// Largest gap that makes a contact, m.
+    pub tolerance: f64,
+    /// Joint material of each joint feature (`EdgeKind::Joint(k)` → `joint_material[k]`).
+    pub joint_material: &'a [u32],
+}
+
+/// Geometry of a new contact, handed to the caller to choose its initial joint state.
+#[derive(Debug, Clone, Copy)]
+pub struct Touch {
+    /// Contact point on the edge, m.
+    pub point: [f64; 2],
+    /// Unit outward normal of the edge (pointing from block B towards the node).
+    pub normal: [f64; 2],
+    /// Signed gap, m (negative: overlap).
+    pub gap: f64,
+}
+
+/// Bounding box of block b over its boundary nodes, m.
+fn bounds(blocks: &Blocks, x: &[[f64; 2]], b: usize) -> ([f64; 2], [f64; 2]) {
+    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    for e in blocks.edge_range(b) {
+        let p = x[blocks.edges[e][0] as usize];
+        for d in 0..2 {
+            lo[d] = lo[d].min(p[d]);
+            hi[d] = hi[d].max(p[d]);
+        }
+    }
+    (lo, hi)
+}
+
+/// Pairs of blocks whose boxes, grown by `tol`, overlap: sort by left edge, sweep.
+pub fn candidate_pairs(blocks: &Blocks, x: &[[f64; 2]], tol: f64) -> Vec<(u32, u32)> {
+    let boxes: Vec<_> = (0..blocks.len()).map(|b| bounds(blocks, x, b)).collect();
+    let mut order: Vec<u32> = (0..blocks.len() as u32).collect();
+    order.sort_by(|&a, &b| {
+        boxes[a as usize].0[0]
+            .total_cmp(&boxes[b as usize].0[0])
+            .then(a.cmp(&b))
+    });
+    let mut pairs = Vec::new();
+    for (k, &a) in order.iter().enumerate() {
+        let (alo, ahi) = boxes[a as usize];
+        for &b in &order[k + 1..] {
+            let (blo, bhi) = boxes[b as usize];
+            if blo[0] > ahi[0] + tol {
+                break;
+            }
+            if blo[1] <= ahi[1] + tol && alo[1] <= bhi[1] + tol {
+                pairs.push((a.min(b), a.max(b)));
+            }
+        }
+    }
+    pairs.sort_unstable();
+    pairs
+}
+
+/// One node-to-edge candidate: (node, edge, ξ, touch).
+type Found = (u32, u32, f64, Touch);
+
+/// Nodes of block `a` touching edges of block `b`.
+fn node_to_edge(d: &Detection, a: usize, b: usize) -> Vec<Found> {
+    let (blo, bhi) = bounds(d.blocks, d.x, b);
+    let tol = d.tolerance;
+    let mut found = Vec::new();
+    for ea in d.blocks.edge_range(a) {
+        let n = d.blocks.edges[ea][0];
+        let p = d.x[n as usize];
+        if p[0] < blo[0] - tol || p[0] > bhi[0] + tol || p[1] < blo[1] - tol || p[1] > bhi[1] + tol
+        {
+            continue;
+        }
+        let own = node_normal(d, n);
+        // Nearest edge; among equally near ones (a node at a corner of B), the one facing the node.
+        let mut best: Option<(f64, f64, Found)> = None;
+        for eb in d.blocks.edge_range(b) {
+            let [j, k] = d.blocks.edges[eb];
+            let (pj, pk) = (d.x[j as usize], d.x[k as usize]);
+            let t = [pk[0] - pj[0], pk[1] - pj[1]];
+            let len = t[0].hypot(t[1]);
+            let xi = ((p[0] - pj[0]) * t[0] + (p[1] - pj[1]) * t[1]) / (len * len);
+            if !(-1e-9..=1.0 + 1e-9).contains(&xi) {
+                continue;
+            }
+            let xi = xi.clamp(0.0, 1.0);
+            let q = [pj[0] + xi * t[0], pj[1] + xi * t[1]];
+            let normal = [t[1] / len, -t[0] / len];
+            let gap = (p[0] - q[0]) * normal[0] + (p[1] - q[1]) * normal[1];
+            if gap > tol || gap < -0.5 * len {
+                continue;
+            }
+            let dist = gap.abs();
+            let facing = normal[0] * own[0] + normal[1] * own[1];
+            let eps = 1e-9 * len;
+            let better = best
+                .as_ref()
+                .is_none_or(|(bd, bf, _)| dist < bd - eps || (dist <= bd + eps && facing < *bf));
+            if better {
+                best = Some((
+                    dist,
+                    facing,
+                    (
+                        n,
+                        eb as u32,
+                        xi,
+                        Touch {
+                            point: q,
+                            normal,
+                            gap,
+                        },
+                    ),
+                ));
+            }
+        }
+        if let Some((_, _, f)) = best {
+            found.push(f);
+        }
+    }
+    found
+}
+
+/// Length of joint a contact at `node` stands for: half of each boundary edge from the node to a
+/// neighbour that touches the same block, halved again because both sides of a joint carry
+/// contacts (together they cover it once). A lone contact (a corner against a face) takes a quarter
+/// of its shorter edge, halved likewise.
+fn contact_length(d: &Detection, node: u32, touches: impl Fn(u32) -> bool) -> f64 {
+    let (mut shared, mut shortest) = (0.0, f64::INFINITY);
+    for &e in d.blocks.node_edges[node as usize]
+        .iter()
+        .filter(|&&e| e != NO_EDGE)
+    {
+        let [a, b] = d.blocks.edges[e as usize];
+        let other = if a == node { b } else { a };
+        let (p, q) = (d.x[a as usize], d.x[b as usize]);
+        let len = (q[0] - p[0]).hypot(q[1] - p[1]);
+        shortest = shortest.min(len);
+        if touches(other) {
+            shared += 0.5 * len;
+        }
+    }
+    0.5 * if shared > 0.0 {
+        shared
+    } else {
+        0.25 * shortest
+    }
+}
+
+/// Outward unit normal of a block's boundary at node `n` (mean of its two edges' normals).
+fn node_normal(d: &Detection, n: u32) -> [f64; 2] {
+    let mut m = [0.0; 2];
+    for &e in d.blocks.node_edges[n as usize]
+        .iter()
+        .filter(|&&e| e != NO_EDGE)
+    {
+        let [a, b] = d.blocks.edges[e as usize];
+        let (p, q) = (d.x[a as usize], d.x[b as usize]);
+        let len = (q[0] - p[0]).hypot(q[1] - p[1]);
+        m[0] += (q[1] - p[1]) / len;
+        m[1] -= (q[0] - p[0]) / len;
+    }
+    m
+}
+
+/// Joint material of a contact: the joint its edge lies on, else a joint at the node, else 0.
+fn material_of(d: &Detection, node: u32, edge: u32) -> u32 {
+    let of = |e: u32| match d.blocks.edge_kind[e as usize] {
+        EdgeKind::Joint(k) => d.joint_material.get(k as usize).copied(),
+        _ => None,
+    };
+    of(edge)
+        .or_else(|| {
+            d.blocks.node_edges[node as usize]
+                .iter()
+                .filter(|&&e| e != NO_EDGE)
+                .find_map(|&e| of(e))
+        })
+        .unwrap_or(0)
+}
+
+/// Detect all contacts. A contact already in `previous` (same node, same opposite block) keeps its
+/// joint state; a new one takes `fresh(touch)`.
+pub fn detect(
+    d: &Detection,
+    previous: &Contacts,
+    fresh: &(dyn Fn(&Touch) -> JointState + Sync),
+) -> Contacts {
+    let history: HashMap<(u32, u32), usize> = previous
+        .node
+        .iter()
+        .zip(&previous.block)
+        .enumerate()
+        .map(|(c, (&n, &b))| ((n, b), c))
+        .collect();
+    let pairs = candidate_pairs(d.blocks, d.x, d.tolerance);
+    let per_pair: Vec<Vec<(Found, u32)>> = pairs
+        .par_iter()
+        .map(|&(a, b)| {
+            let mut v: Vec<(Found, u32)> = node_to_edge(d, a as usize, b as usize)
+                .into_iter()
+                .map(|f| (f, b))
+                .collect();
+            v.extend(
+                node_to_edge(d, b as usize, a as usize)
+                    .into_iter()
+                    .map(|f| (f, a)),
+            );
+            v
+        })
+        .collect();
+    let mut out = Contacts::default();
+    for list in per_pair {
+        let touching: std::collections::HashSet<(u32, u32)> =
+            list.iter().map(|(f, b)| (f.0, *b)).collect();
+        for ((node, edge, xi, touch), block_b) in list {
+            let length = contact_length(d, node, |m| touching.contains(&(m, block_b)));
+            let state = match history.get(&(node, block_b)) {
+                Some(&c) => previous.state[c],
+                None => fresh(&touch),
+            };
+            out.node.push(node);
+            out.edge.push(edge);
+            out.block.push(block_b);
+            out.xi.push(xi);
+            out.length.push(length);
+            out.material.push(material_of(d, node, edge));
+            out.state.push(state);
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Two unit squares side by side (x ∈ [0,1] and [1,2]), each a ring of 4 edges.
+    fn two_squares() -> (Blocks, Vec<[f64; 2]>) {
+        let x = vec![
+            [0.0, 0.0],
+            [1.0, 0.0],
+            [1.0, 1.0],
+            [0.0, 1.0],
+            [1.0, 0.0],
+            [2.0, 0.0],
+            [2.0, 1.0],
+            [1.0, 1.0],
+        ];
+        let edges = vec![
+            [0, 1],
+            [1, 2],
+            [2, 3],
+            [3, 0],
+            [4, 5],
+            [5, 6],
+            [6, 7],
+            [7, 4],
+        ];
+        let mut node_edges = vec![[NO_EDGE; 2]; 8];
+        for (e, &[a, b]) in edges.iter().enumerate() {
+            node_edges[a as usize][1] = e as u32;
+            node_edges[b as usize][0] = e as u32;
+        }
+        let mut edge_kind = vec![EdgeKind::Region(0); 8];
+        edge_kind[1] = EdgeKind::Joint(0);
+        edge_kind[7] = EdgeKind::Joint(0);
+        let blocks = Blocks {
+            node_start: vec![0, 4, 8],
+            zone_start: vec![0, 2, 4],
+            edge_start: vec![0, 4, 8],
+            edges,
+            edge_kind,
+            node_edges,
+        };
+        (blocks, x)
+    }
+
+    #[test]
+    fn touching_squares_make_four_contacts_on_the_shared_face() {
+        let (blocks, x) = two_squares();
+        let d = Detection {
+            blocks: &blocks,
+            x: &x,
+            tolerance: 1e-3,
+            joint_material: &[0],
+        };
+        let c = detect(&d, &Contacts::default(), &|t: &Touch| JointState {
+            normal_displacement: t.gap,
+            ..Default::default()
+        });
+        assert_eq!(c.len(), 4);
+        // Each corner node stands for half its edge on the face, halved for the two sides: ¼ m;
+        // together the contacts cover the 1 m face once.
+        assert!(c.length.iter().all(|&l| (l - 0.25).abs() < 1e-12));
+        // Corner nodes pick the facing edge (the shared face), not the neighbour's bottom or top.
+        assert!(c.edge.iter().all(|&e| e == 1 || e == 7), "{:?}", c.edge);
+        assert_eq!(candidate_pairs(&blocks, &x, 1e-3), [(0, 1)]);
+    }
+
+    #[test]
+    fn distant_squares_make_none_and_history_survives_redetection() {
+        let (blocks, mut x) = two_squares();
+        for p in &mut x[4..] {
+            p[0] += 0.5;
+        }
+        let d = Detection {
+            blocks: &blocks,
+            x: &x,
+            tolerance: 1e-3,
+            joint_material: &[0],
+        };
+        assert!(detect(&d, &Contacts::default(), &|_: &Touch| JointState::default()).is_empty());
+        let (blocks, x) = two_squares();
+        let d = Detection {
+            blocks: &blocks,
+            x: &x,
+            tolerance: 1e-3,
+            joint_material: &[0],
+        };
+        let first = detect(&d, &Contacts::default(), &|_: &Touch| JointState {
+            shear: 7.0,
+            ..Default::default()
+        });
+        let again = detect(&d, &first, &|_: &Touch| JointState::default());
+        assert!(again.state.iter().all(|s| s.shear == 7.0));
+    }
+}

@@ -1,0 +1,95 @@
+//! The detect and contact-force stages of the cycle.
+
+use rayon::prelude::*;
+
+use super::{Cycle, CycleParams};
+use crate::contact::detect::{Detection, Touch, detect};
+use crate::joint::{FAILED, JointState};
+use crate::model::{Gather, Model};
+
+impl Cycle {
+    /// Detect stage: re-detect contacts at the current positions. Persisting contacts keep their
+    /// joint state; new ones start failed (no cohesion or tensile strength) at their current gap.
+    pub fn detect(&mut self, model: &mut Model) {
+        let x: Vec<[f64; 2]> = model
+            .nodes
+            .pos
+            .iter()
+            .zip(&model.nodes.disp)
+            .map(|(p, u)| [p[0] + u[0], p[1] + u[1]])
+            .collect();
+        let d = Detection {
+            blocks: &model.blocks,
+            x: &x,
+            tolerance: model.contact_tolerance,
+            joint_material: &model.joint_material,
+        };
+        let fresh = |t: &Touch| JointState {
+            normal_displacement: t.gap,
+            flags: FAILED,
+            ..Default::default()
+        };
+        model.contacts = detect(&d, &model.contacts, &fresh);
+        model.contact_gather = Gather::new(
+            model.nodes.len(),
+            &model.contacts.triples(&model.blocks.edges),
+        );
+        self.contact_force
+            .resize(3 * model.contacts.len(), [0.0; 2]);
+        self.moved = 0.0;
+        self.detections += 1;
+    }
+
+    /// Contact stage: relative velocity of the node against the point ξ of the edge, projected on the
+    /// edge's normal n (outward of the edge's block) and tangent t, gives the increments
+    /// Δun = v_rel·n Δt, Δus = v_rel·t Δt; the joint law returns the stresses, and the force
+    /// F = −L(σn n + τ t) acts on the node while −(1 − ξ)F and −ξF act on the edge's nodes, so
+    /// momentum is conserved exactly.
+    pub fn contact_forces(&mut self, model: &mut Model, p: &CycleParams) {
+        let Model {
+            nodes,
+            blocks,
+            contacts,
+            joint_laws,
+            ..
+        } = model;
+        let (pos, disp, vel) = (&nodes.pos, &nodes.disp, &nodes.vel);
+        let x = |n: u32| {
+            let (p, u) = (pos[n as usize], disp[n as usize]);
+            [p[0] + u[0], p[1] + u[1]]
+        };
+        let dt = p.dt;
+        contacts
+            .state
+            .par_iter_mut()
+            .zip(self.contact_force.par_chunks_mut(3))
+            .zip(contacts.node.par_iter())
+            .zip(contacts.edge.par_iter())
+            .zip(contacts.xi.par_iter())
+            .zip(contacts.length.par_iter())
+            .zip(contacts.material.par_iter())
+            .with_min_len(256)
+            .for_each(|((((((state, f), &i), &e), &xi), &len), &mat)| {
+                let [j, k] = blocks.edges[e as usize];
+                let (pj, pk) = (x(j), x(k));
+                let l = (pk[0] - pj[0]).hypot(pk[1] - pj[1]);
+                let t = [(pk[0] - pj[0]) / l, (pk[1] - pj[1]) / l];
+                let n = [t[1], -t[0]];
+                let (vi, vj, vk) = (vel[i as usize], vel[j as usize], vel[k as usize]);
+                let vr = [
+                    vi[0] - (1.0 - xi) * vj[0] - xi * vk[0],
+                    vi[1] - (1.0 - xi) * vj[1] - xi * vk[1],
+                ];
+                let dn = (vr[0] * n[0] + vr[1] * n[1]) * dt;
+                let ds = (vr[0] * t[0] + vr[1] * t[1]) * dt;
+                joint_laws[mat as usize].update(state, dn, ds);
+                let force = [
+                    -len * (state.normal * n[0] + state.shear * t[0]),
+                    -len * (state.normal * n[1] + state.shear * t[1]),
+                ];
+                f[0] = force;
+                f[1] = [-(1.0 - xi) * force[0], -(1.0 - xi) * force[1]];
+                f[2] = [-xi * force[0], -xi * force[1]];
+            });
+    }
+}

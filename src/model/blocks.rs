@@ -1,0 +1,43 @@
+//! Blocks: each block owns a contiguous range of nodes and zones and a closed boundary (its rings
+//! of edges, material on the left), whose edges carry the kind of feature they lie on.
+
+use adit_meshing::EdgeKind;
+
+/// Marks "no edge" in `Blocks::node_edges`.
+pub const NO_EDGE: u32 = u32::MAX;
+
+/// Structure-of-arrays block data. Ranges: block b owns nodes `node_start[b]..node_start[b+1]`,
+/// zones `zone_start[b]..zone_start[b+1]` and boundary edges `edge_start[b]..edge_start[b+1]`.
+#[derive(Debug, Clone, Default)]
+pub struct Blocks {
+    pub node_start: Vec<u32>,
+    pub zone_start: Vec<u32>,
+    pub edge_start: Vec<u32>,
+    /// Boundary edges (node ids), material on the left.
+    pub edges: Vec<[u32; 2]>,
+    /// What each boundary edge lies on.
+    pub edge_kind: Vec<EdgeKind>,
+    /// For each node, its boundary edges [incoming, outgoing], or `NO_EDGE` for interior nodes.
+    pub node_edges: Vec<[u32; 2]>,
+}
+
+impl Blocks {
+    /// Number of blocks.
+    pub fn len(&self) -> usize {
+        self.node_start.len().saturating_sub(1)
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// Boundary edge ids of block `b`.
+    pub fn edge_range(&self, b: usize) -> std::ops::Range<usize> {
+        self.edge_start[b] as usize..self.edge_start[b + 1] as usize
+    }
+
+    /// Block owning node `n`.
+    pub fn block_of_node(&self, n: u32) -> usize {
+        self.node_start.partition_point(|&s| s <= n) - 1
+    }
+}
