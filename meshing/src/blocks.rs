@@ -274,10 +274,35 @@ fn trace_faces(pts: &[Point], edges: &HashMap<(u32, u32), EdgeKind>) -> Vec<Cycl
             kinds.push(list[h / 2].1);
             h = next(h);
         }
-        let area = Polygon::new(verts.iter().map(|&v| pts[v as usize]).collect()).signed_area();
-        cycles.push(Cycle { verts, kinds, area });
+        for (verts, kinds) in split_pinches(verts, kinds) {
+            let area = Polygon::new(verts.iter().map(|&v| pts[v as usize]).collect()).signed_area();
+            cycles.push(Cycle { verts, kinds, area });
+        }
     }
     cycles
+}
+
+/// Split a cycle that passes through a vertex more than once (two lobes touching at a point, or a
+/// hole touching the outer ring) into simple cycles; `kinds[i]` belongs to the edge leaving
+/// `verts[i]`.
+fn split_pinches(verts: Vec<u32>, kinds: Vec<EdgeKind>) -> Vec<(Vec<u32>, Vec<EdgeKind>)> {
+    let mut out = Vec::new();
+    let (mut sv, mut sk): (Vec<u32>, Vec<EdgeKind>) = (Vec::new(), Vec::new());
+    let mut at: HashMap<u32, usize> = HashMap::new();
+    for (v, k) in verts.into_iter().zip(kinds) {
+        if let Some(&j) = at.get(&v) {
+            let (lv, lk) = (sv.split_off(j), sk.split_off(j));
+            for u in &lv {
+                at.remove(u);
+            }
+            out.push((lv, lk));
+        }
+        at.insert(v, sv.len());
+        sv.push(v);
+        sk.push(k);
+    }
+    out.push((sv, sk));
+    out
 }
 
 /// Keep the faces inside the region and outside the excavations; attach floating components as holes.
@@ -322,12 +347,17 @@ fn assemble_blocks(
             });
         }
     }
-    // A floating component lies strictly inside its host's outer ring (it shares no vertex with it);
-    // the region's own outer cycle is inside no block.
+    // A floating component has a vertex strictly inside its host's outer ring; the region's own
+    // outer cycle is inside no block.
     for c in floating {
-        let p = pts[c.verts[0] as usize];
+        let strictly_inside = |b: usize| {
+            c.verts.iter().any(|&v| {
+                let p = pts[v as usize];
+                blocks[b].outer.contains(p) && blocks[b].outer.boundary_distance(p) > tol
+            })
+        };
         let host = (0..blocks.len())
-            .filter(|&b| blocks[b].outer.contains(p) && blocks[b].outer.boundary_distance(p) > tol)
+            .filter(|&b| strictly_inside(b))
             .min_by(|&x, &y| {
                 blocks[x]
                     .outer
@@ -532,6 +562,29 @@ mod tests {
                 .outer_kinds
                 .iter()
                 .all(|k| matches!(k, EdgeKind::Region(_)))
+        );
+    }
+
+    #[test]
+    fn a_joint_loop_touching_the_boundary_at_one_point_is_a_block_of_its_own() {
+        let d = square(2.0);
+        let j = |a: Point, b: Point| Segment {
+            a,
+            b,
+            kind: EdgeKind::Joint(0),
+        };
+        let joints = vec![
+            j([1.0, 0.0], [0.5, 1.0]),
+            j([0.5, 1.0], [1.5, 1.0]),
+            j([1.5, 1.0], [1.0, 0.0]),
+        ];
+        let b = cut_blocks(&d, &joints, 1e-9).unwrap();
+        assert_eq!(b.blocks.len(), 2);
+        assert_relative_eq!(total_area(&b), 4.0, max_relative = 1e-12);
+        assert!(
+            b.blocks
+                .iter()
+                .all(|k| k.outer.self_intersection().is_none())
         );
     }
 

@@ -139,10 +139,22 @@ pub fn orient(a: Point, b: Point, c: Point) -> f64 {
     (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
 }
 
-/// Whether closed segments ab and cd share a point (touching counts).
+/// Whether closed segments ab and cd share a point (touching counts). Segments on one line (to
+/// round-off) are compared by their extents along it, so nearly collinear disjoint pieces of one
+/// joint are not mistaken for crossing ones.
 pub fn segments_intersect(a: Point, b: Point, c: Point, d: Point) -> bool {
     let (d1, d2) = (orient(c, d, a), orient(c, d, b));
     let (d3, d4) = (orient(a, b, c), orient(a, b, d));
+    let lcd = distance(c, d);
+    let reach = lcd + distance(a, c) + distance(b, c);
+    if d1.abs() + d2.abs() <= 1e-12 * lcd * reach {
+        // Collinear: overlap of the parameter ranges along cd.
+        let e = [(d[0] - c[0]) / lcd, (d[1] - c[1]) / lcd];
+        let t = |p: Point| (p[0] - c[0]) * e[0] + (p[1] - c[1]) * e[1];
+        let (ta, tb) = (t(a), t(b));
+        let tol = 1e-12 * reach;
+        return ta.min(tb) <= lcd + tol && ta.max(tb) >= -tol;
+    }
     if ((d1 > 0.0 && d2 < 0.0) || (d1 < 0.0 && d2 > 0.0))
         && ((d3 > 0.0 && d4 < 0.0) || (d3 < 0.0 && d4 > 0.0))
     {
@@ -195,6 +207,38 @@ mod tests {
     fn bow_tie_is_self_intersecting() {
         let bow = Polygon::new(vec![[0.0, 0.0], [1.0, 1.0], [1.0, 0.0], [0.0, 1.0]]);
         assert_eq!(bow.self_intersection(), Some((0, 2)));
+    }
+
+    #[test]
+    fn collinear_segments_touch_only_when_they_overlap() {
+        // Two pieces of one inclined line, far apart: not intersecting, whatever the round-off.
+        let (a, b) = (
+            [1.677469769677792, -4.90181328573331],
+            [0.9974121890959609, -4.291005041840997],
+        );
+        let (c, d) = (
+            [-8.523393939049665, 4.260310372651376],
+            [-9.203451519631496, 4.871118616543689],
+        );
+        assert!(!segments_intersect(a, b, c, d));
+        assert!(segments_intersect(
+            [0.0, 0.0],
+            [2.0, 0.0],
+            [1.0, 0.0],
+            [3.0, 0.0]
+        ));
+        assert!(segments_intersect(
+            [0.0, 0.0],
+            [1.0, 0.0],
+            [1.0, 0.0],
+            [3.0, 0.0]
+        ));
+        assert!(!segments_intersect(
+            [0.0, 0.0],
+            [1.0, 0.0],
+            [1.5, 0.0],
+            [3.0, 0.0]
+        ));
     }
 
     #[test]

@@ -34,6 +34,10 @@ pub struct Touch {
     pub gap: f64,
 }
 
+/// A node and an edge make a contact only if the outward normal of one of the node's edges and the
+/// edge's are at more than about 107° (cosine below −0.3).
+const MIN_FACING: f64 = 0.3;
+
 /// Bounding box of block b over its boundary nodes, m.
 fn bounds(blocks: &Blocks, x: &[[f64; 2]], b: usize) -> ([f64; 2], [f64; 2]) {
     let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
@@ -88,7 +92,7 @@ fn node_to_edge(d: &Detection, a: usize, b: usize) -> Vec<Found> {
         {
             continue;
         }
-        let own = node_normal(d, n);
+        let own = edge_normals_at(d, n);
         // Nearest edge; among equally near ones (a node at a corner of B), the one facing the node.
         let mut best: Option<(f64, f64, Found)> = None;
         for eb in d.blocks.edge_range(b) {
@@ -108,7 +112,16 @@ fn node_to_edge(d: &Detection, a: usize, b: usize) -> Vec<Found> {
                 continue;
             }
             let dist = gap.abs();
-            let facing = normal[0] * own[0] + normal[1] * own[1];
+            // One of the node's edges must face the edge: a node of a flat surface beside the end of
+            // an edge at right angles to it (a base node ahead of a sliding block's front face) is
+            // no contact, or the block would snag on it.
+            let facing = own
+                .iter()
+                .map(|o| normal[0] * o[0] + normal[1] * o[1])
+                .fold(1.0, f64::min);
+            if facing > -MIN_FACING {
+                continue;
+            }
             let eps = 1e-9 * len;
             let better = best
                 .as_ref()
@@ -163,20 +176,18 @@ fn contact_length(d: &Detection, node: u32, touches: impl Fn(u32) -> bool) -> f6
     }
 }
 
-/// Outward unit normal of a block's boundary at node `n` (mean of its two edges' normals).
-fn node_normal(d: &Detection, n: u32) -> [f64; 2] {
-    let mut m = [0.0; 2];
-    for &e in d.blocks.node_edges[n as usize]
+/// Outward unit normals of the (up to two) boundary edges meeting at node `n`.
+fn edge_normals_at(d: &Detection, n: u32) -> Vec<[f64; 2]> {
+    d.blocks.node_edges[n as usize]
         .iter()
         .filter(|&&e| e != NO_EDGE)
-    {
-        let [a, b] = d.blocks.edges[e as usize];
-        let (p, q) = (d.x[a as usize], d.x[b as usize]);
-        let len = (q[0] - p[0]).hypot(q[1] - p[1]);
-        m[0] += (q[1] - p[1]) / len;
-        m[1] -= (q[0] - p[0]) / len;
-    }
-    m
+        .map(|&e| {
+            let [a, b] = d.blocks.edges[e as usize];
+            let (p, q) = (d.x[a as usize], d.x[b as usize]);
+            let len = (q[0] - p[0]).hypot(q[1] - p[1]);
+            [(q[1] - p[1]) / len, -(q[0] - p[0]) / len]
+        })
+        .collect()
 }
 
 /// Joint material of a contact: the joint its edge lies on, else a joint at the node, else 0.

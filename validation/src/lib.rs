@@ -3,6 +3,7 @@
 
 pub mod glued;
 pub mod gravity;
+pub mod incline;
 pub mod kirsch;
 pub mod kirsch_case;
 pub mod patch;
