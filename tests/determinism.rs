@@ -6,10 +6,12 @@ use adit::Scene;
 use adit::build::build;
 use adit::solve::{Quiet, Solver};
 
-fn run_on(threads: usize) -> (Vec<[f64; 2]>, Vec<[f64; 4]>, f64) {
-    let mut s =
-        Scene::load(&Path::new(env!("CARGO_MANIFEST_DIR")).join("models/kirsch.json")).unwrap();
-    s.solve.max_cycles = 200;
+fn run_on(model: &str, threads: usize) -> (Vec<[f64; 2]>, Vec<[f64; 4]>, f64) {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("models")
+        .join(model);
+    let mut s = Scene::load(&path).unwrap();
+    s.solve.max_cycles = 300;
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(threads)
         .build()
@@ -24,6 +26,11 @@ fn run_on(threads: usize) -> (Vec<[f64; 2]>, Vec<[f64; 4]>, f64) {
 
 #[test]
 fn one_and_three_threads_agree_bit_for_bit() {
-    let (a, b) = (run_on(1), run_on(3));
-    assert!(a.0 == b.0 && a.1 == b.1 && a.2.to_bits() == b.2.to_bits());
+    for model in ["kirsch.json", "jointed_tunnel.json"] {
+        let (a, b) = (run_on(model, 1), run_on(model, 3));
+        assert!(
+            a.0 == b.0 && a.1 == b.1 && a.2.to_bits() == b.2.to_bits(),
+            "{model}"
+        );
+    }
 }

@@ -107,8 +107,38 @@ fn run_writes_every_contract_file() {
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
-/// Read the file with Python's meshio. Required when `ADIT_REQUIRE_MESHIO=1` (as in `.ci/run`,
-/// which installs it); otherwise skipped with a note when meshio is not installed.
+/// The bundled jointed model runs to equilibrium and writes contacts beside zones.
+#[test]
+fn jointed_tunnel_converges_and_writes_contacts() {
+    let dir = out_dir("jointed");
+    let scene =
+        Scene::load(&Path::new(env!("CARGO_MANIFEST_DIR")).join("models/jointed_tunnel.json"))
+            .unwrap();
+    let r = run_scene(&scene, &dir, &mut Quiet).unwrap();
+    assert_eq!(r.summary.status, "converged", "{:?}", r.summary.reason);
+    assert!(
+        r.summary.blocks > 100 && r.summary.contacts > 1000,
+        "{:?}",
+        (r.summary.blocks, r.summary.contacts)
+    );
+    let pvd = std::fs::read_to_string(dir.join("jointed_tunnel.pvd")).unwrap();
+    assert!(
+        pvd.contains("part=\"1\" file=\"jointed_tunnel_contacts_0000.vtu\""),
+        "{pvd}"
+    );
+    check_with_meshio(
+        &dir.join("jointed_tunnel_zones_0000.vtu"),
+        r.summary.zones,
+        r.summary.nodes,
+    );
+    check_contacts_with_meshio(
+        &dir.join("jointed_tunnel_contacts_0000.vtu"),
+        r.summary.contacts,
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// Read a zones file with Python's meshio and check the contract's fields and sizes.
 fn check_with_meshio(path: &Path, zones: usize, nodes: usize) {
     let script = format!(
         r#"
@@ -125,6 +155,27 @@ for name in ["displacement", "velocity"]:
 print("meshio ok")
 "#
     );
+    run_python(&script, path);
+}
+
+/// Read a contacts file with meshio: vertex cells with the contract's point data.
+fn check_contacts_with_meshio(path: &Path, contacts: usize) {
+    let script = format!(
+        r#"
+import sys, meshio
+m = meshio.read(sys.argv[1])
+assert m.points.shape == ({contacts}, 3), m.points.shape
+for name in ["normal_stress", "shear_stress", "normal_displacement", "shear_displacement", "state"]:
+    assert m.point_data[name].shape[0] == {contacts}, name
+print("meshio ok")
+"#
+    );
+    run_python(&script, path);
+}
+
+/// Run a Python check on `path`. Required when `ADIT_REQUIRE_MESHIO=1` (as in `.ci/run`, which
+/// installs meshio); otherwise skipped with a note when meshio is not installed.
+fn run_python(script: &str, path: &Path) {
     let required = std::env::var("ADIT_REQUIRE_MESHIO").is_ok_and(|v| v == "1");
     let has = Command::new("python3")
         .args(["-c", "import meshio"])
@@ -141,7 +192,7 @@ print("meshio ok")
         return;
     }
     let out = Command::new("python3")
-        .args(["-c", &script])
+        .args(["-c", script])
         .arg(path)
         .output()
         .unwrap();

@@ -72,7 +72,7 @@ impl Cycle {
             .for_each(|((((((state, f), &i), &e), &xi), &len), &mat)| {
                 let [j, k] = blocks.edges[e as usize];
                 let (pj, pk) = (x(j), x(k));
-                let l = (pk[0] - pj[0]).hypot(pk[1] - pj[1]);
+                let l = ((pk[0] - pj[0]).powi(2) + (pk[1] - pj[1]).powi(2)).sqrt();
                 let t = [(pk[0] - pj[0]) / l, (pk[1] - pj[1]) / l];
                 let n = [t[1], -t[0]];
                 let (vi, vj, vk) = (vel[i as usize], vel[j as usize], vel[k as usize]);

@@ -168,8 +168,9 @@ impl Cycle {
                     u[d] += v[d] * dt;
                 }
                 *force = f;
-                v[0].hypot(v[1])
+                v[0] * v[0] + v[1] * v[1]
             })
             .reduce(|| 0.0, f64::max)
+            .sqrt()
     }
 }

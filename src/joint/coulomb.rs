@@ -20,6 +20,16 @@ pub struct CoulombSlip {
     pub dilation_deg: f64,
 }
 
+/// tan of an angle in degrees, exact for 0 (no friction or dilation costs nothing).
+#[inline]
+fn tan_deg(deg: f64) -> f64 {
+    if deg == 0.0 {
+        0.0
+    } else {
+        deg.to_radians().tan()
+    }
+}
+
 impl JointLaw for CoulombSlip {
     /// Normal stress from the total normal displacement, σn = σn0 + kn (un − d) with σn0 the stress
     /// when the contact was made and d the accumulated dilation (so an opened joint recloses at the
@@ -46,11 +56,11 @@ impl JointLaw for CoulombSlip {
         }
         s.normal = normal;
         s.shear += self.shear_stiffness * ds;
-        let limit = c - s.normal * self.friction_deg.to_radians().tan();
+        let limit = c - s.normal * tan_deg(self.friction_deg);
         if s.shear.abs() > limit {
             s.shear = limit * s.shear.signum();
             s.flags |= SLIPPING | FAILED;
-            let tan_psi = self.dilation_deg.to_radians().tan();
+            let tan_psi = tan_deg(self.dilation_deg);
             if tan_psi != 0.0 {
                 s.dilation += ds.abs() * tan_psi;
                 s.normal =
