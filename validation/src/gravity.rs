@@ -5,14 +5,13 @@
 //! −ρg(H − y), σxx = σzz = ν/(1 − ν) σyy, and the settlement u_y(y) = −ρg(Hy − y²/2)/M with the
 //! constrained modulus M = K + 4G/3 (e.g. Jaeger, Cook & Zimmerman, §5.7).
 
-use std::collections::BTreeMap;
 use std::time::Instant;
 
 use adit::Scene;
 use adit::build::build;
-use adit::solve::{Quiet, Solver, Status};
 
 use crate::report::CaseReport;
+use crate::settle;
 
 const RHO: f64 = 2500.0;
 const G: f64 = 9.81;
@@ -55,13 +54,7 @@ pub fn self_weight(h: f64) -> anyhow::Result<CaseReport> {
     let start = Instant::now();
     let scene = column_scene(h, false);
     let mut b = build(&scene)?;
-    let mut solver = Solver::new(&mut b.model, &scene.solve, 0);
-    let sol = solver.solve(&mut b.model, &mut Quiet);
-    anyhow::ensure!(
-        sol.status == Status::Converged,
-        "column did not converge: {:?}",
-        sol.status
-    );
+    let (_, cycles) = settle(&mut b.model, &scene.solve, "column")?;
     let m = YOUNG * (1.0 - POISSON) / ((1.0 + POISSON) * (1.0 - 2.0 * POISSON));
     let model = &b.model;
     let (mut num, mut den) = (0.0, 0.0);
@@ -79,18 +72,15 @@ pub fn self_weight(h: f64) -> anyhow::Result<CaseReport> {
         .fold(0.0, f64::max)
         / top;
     let wall_s = start.elapsed().as_secs_f64();
-    Ok(CaseReport {
-        case: "gravity: confined column self-weight".into(),
-        zones: model.zones.len(),
-        cycles: sol.cycles,
+    let errors = [("stress_l2", (num / den).sqrt()), ("settlement", du)];
+    Ok(CaseReport::new(
+        "gravity: confined column self-weight",
+        model.zones.len(),
+        cycles,
         wall_s,
-        zone_cycles_per_s: model.zones.len() as f64 * sol.cycles as f64 / wall_s,
-        h: Some(h),
-        errors: BTreeMap::from([
-            ("stress_l2".to_string(), (num / den).sqrt()),
-            ("settlement".to_string(), du),
-        ]),
-    })
+        Some(h),
+        &errors,
+    ))
 }
 
 /// In-situ stress with the gravity gradient: the model must stay at rest. Error: largest
@@ -100,13 +90,7 @@ pub fn in_situ_equilibrium(h: f64) -> anyhow::Result<CaseReport> {
     let start = Instant::now();
     let scene = column_scene(h, true);
     let mut b = build(&scene)?;
-    let mut solver = Solver::new(&mut b.model, &scene.solve, 0);
-    let sol = solver.solve(&mut b.model, &mut Quiet);
-    anyhow::ensure!(
-        sol.status == Status::Converged,
-        "column did not converge: {:?}",
-        sol.status
-    );
+    let (_, cycles) = settle(&mut b.model, &scene.solve, "column")?;
     let m = YOUNG * (1.0 - POISSON) / ((1.0 + POISSON) * (1.0 - 2.0 * POISSON));
     let reference = RHO * G * HEIGHT * HEIGHT / (2.0 * m);
     let umax = b
@@ -117,15 +101,15 @@ pub fn in_situ_equilibrium(h: f64) -> anyhow::Result<CaseReport> {
         .map(|u| u[0].hypot(u[1]))
         .fold(0.0, f64::max);
     let wall_s = start.elapsed().as_secs_f64();
-    Ok(CaseReport {
-        case: "gravity: in-situ gradient at rest".into(),
-        zones: b.model.zones.len(),
-        cycles: sol.cycles,
+    let errors = [("displacement", umax / reference)];
+    Ok(CaseReport::new(
+        "gravity: in-situ gradient at rest",
+        b.model.zones.len(),
+        cycles,
         wall_s,
-        zone_cycles_per_s: b.model.zones.len() as f64 * sol.cycles as f64 / wall_s,
-        h: Some(h),
-        errors: BTreeMap::from([("displacement".to_string(), umax / reference)]),
-    })
+        Some(h),
+        &errors,
+    ))
 }
 
 #[cfg(test)]

@@ -4,7 +4,6 @@
 //! joint that cannot slip (static, damped); then the joint takes its friction and the run goes on
 //! in real time without damping.
 
-use std::collections::BTreeMap;
 use std::time::Instant;
 
 use adit::Scene;
@@ -14,6 +13,7 @@ use adit::model::{FIX_X, FIX_Y};
 use adit::solve::{Quiet, Solver, Status};
 
 use crate::report::CaseReport;
+use crate::settle;
 
 const G: f64 = 9.81;
 
@@ -57,13 +57,7 @@ pub fn run(alpha_deg: f64, phi_deg: f64, duration: f64, h: f64) -> anyhow::Resul
     for n in range(base) {
         b.model.nodes.fixed[n] = FIX_X | FIX_Y;
     }
-    let mut settle = Solver::new(&mut b.model, &sc.solve, 0);
-    let settled = settle.solve(&mut b.model, &mut Quiet);
-    anyhow::ensure!(
-        settled.status == Status::Converged,
-        "settling did not converge: {:?}",
-        settled.status
-    );
+    let (_, settled_cycles) = settle(&mut b.model, &sc.solve, "settling")?;
 
     b.model.joint_laws[0] = Box::new(CoulombSlip {
         normal_stiffness: 1e11,
@@ -91,7 +85,7 @@ pub fn run(alpha_deg: f64, phi_deg: f64, duration: f64, h: f64) -> anyhow::Resul
     let steps = (duration / dt / samples as f64).ceil() as u64;
     dynamic.spec.max_cycles = steps;
     dynamic.spec.monitor_every = steps;
-    let (mut worst, mut last, mut cycles) = (0.0f64, 0.0, settled.cycles);
+    let (mut worst, mut last, mut cycles) = (0.0f64, 0.0, settled_cycles);
     for k in 1..=samples {
         let sol = dynamic.solve(&mut b.model, &mut Quiet);
         anyhow::ensure!(
@@ -113,18 +107,16 @@ pub fn run(alpha_deg: f64, phi_deg: f64, duration: f64, h: f64) -> anyhow::Resul
     let name = if accel > 0.0 { "slides" } else { "holds" };
     let wall_s = start.elapsed().as_secs_f64();
     let zones = b.model.zones.len();
-    Ok(CaseReport {
-        case: format!("block on a {alpha_deg}° incline, φ = {phi_deg}°: {name} (deformable)"),
+    let error = if accel > 0.0 { worst } else { last.abs() } / scale;
+    let case = format!("block on a {alpha_deg}° incline, φ = {phi_deg}°: {name} (deformable)");
+    Ok(CaseReport::new(
+        case,
         zones,
         cycles,
         wall_s,
-        zone_cycles_per_s: zones as f64 * cycles as f64 / wall_s,
-        h: Some(h),
-        errors: BTreeMap::from([(
-            "displacement".to_string(),
-            if accel > 0.0 { worst } else { last.abs() } / scale,
-        )]),
-    })
+        Some(h),
+        &[("displacement", error)],
+    ))
 }
 
 #[cfg(test)]

@@ -71,19 +71,18 @@ pub fn scaled(scene: &Scene, factor: f64) -> Scene {
 impl KirschResult {
     /// As a row of the report.
     pub fn report(&self) -> CaseReport {
-        CaseReport {
-            case: self.case.clone(),
-            zones: self.zones,
-            cycles: self.cycles,
-            wall_s: self.wall_s,
-            zone_cycles_per_s: self.zone_cycles_per_s,
-            h: Some(self.h),
-            errors: [
-                ("stress_l2".to_string(), self.stress_l2),
-                ("wall_displacement".to_string(), self.wall_displacement),
-            ]
-            .into(),
-        }
+        let errors = [
+            ("stress_l2", self.stress_l2),
+            ("wall_displacement", self.wall_displacement),
+        ];
+        CaseReport::new(
+            self.case.clone(),
+            self.zones,
+            self.cycles,
+            self.wall_s,
+            Some(self.h),
+            &errors,
+        )
     }
 }
 

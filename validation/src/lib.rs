@@ -10,3 +10,21 @@ pub mod kirsch_case;
 pub mod patch;
 pub mod plot;
 pub mod report;
+pub mod scaling;
+
+use adit::model::Model;
+use adit::scene::SolveSpec;
+use adit::solve::{Quiet, Solver, Status};
+
+/// Solve `model` statically to the ratio of `spec`; an error naming `what` unless it converges.
+/// Returns the solver (masses and step set up) and the cycles taken.
+pub fn settle(model: &mut Model, spec: &SolveSpec, what: &str) -> anyhow::Result<(Solver, u64)> {
+    let mut solver = Solver::new(model, spec, 0);
+    let sol = solver.solve(model, &mut Quiet);
+    anyhow::ensure!(
+        sol.status == Status::Converged,
+        "{what} did not converge: {:?}",
+        sol.status
+    );
+    Ok((solver, sol.cycles))
+}

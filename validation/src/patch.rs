@@ -1,7 +1,6 @@
 //! Patch tests on an irregular mesh (a uniform stress and a linear displacement field must be
 //! reproduced to round-off) and uniaxial compression of one block against Hooke's law.
 
-use std::collections::BTreeMap;
 use std::time::Instant;
 
 use adit::Scene;
@@ -10,6 +9,7 @@ use adit::model::{FIX_X, FIX_Y};
 use adit::solve::{Quiet, Solver, Status};
 
 use crate::report::CaseReport;
+use crate::settle;
 
 /// Material of the patch tests: E = 10 GPa, ν = 0.25.
 const YOUNG: f64 = 10e9;
@@ -63,18 +63,7 @@ fn report(
     wall_s: f64,
     errors: &[(&str, f64)],
 ) -> CaseReport {
-    CaseReport {
-        case: case.into(),
-        zones: built.model.zones.len(),
-        cycles,
-        wall_s,
-        zone_cycles_per_s: built.model.zones.len() as f64 * cycles as f64 / wall_s,
-        h: None,
-        errors: errors
-            .iter()
-            .map(|&(k, v)| (k.to_string(), v))
-            .collect::<BTreeMap<_, _>>(),
-    }
+    CaseReport::new(case, built.model.zones.len(), cycles, wall_s, None, errors)
 }
 
 /// Linear displacement patch test: boundary nodes are driven along u = A·x + c over 100 cycles,
@@ -153,13 +142,7 @@ pub fn uniform_stress(h: f64) -> anyhow::Result<CaseReport> {
                  { "at": [0, 0], "fix": "xy" }, { "at": [1.3, 0.1], "fix": "y" }"#;
     let scene = pentagon_scene(h, bcs, 1e-14);
     let mut built = build(&scene)?;
-    let mut solver = Solver::new(&mut built.model, &scene.solve, 0);
-    let sol = solver.solve(&mut built.model, &mut Quiet);
-    anyhow::ensure!(
-        sol.status == Status::Converged,
-        "patch test did not converge: {:?}",
-        sol.status
-    );
+    let (_, cycles) = settle(&mut built.model, &scene.solve, "patch test")?;
     let sxx = -3e6;
     let syy = 1e6;
     let exact = [sxx, syy, 0.0, 2e6];
@@ -170,7 +153,7 @@ pub fn uniform_stress(h: f64) -> anyhow::Result<CaseReport> {
     Ok(report(
         "patch: uniform stress",
         &built,
-        sol.cycles,
+        cycles,
         wall,
         &[("stress_max", ds)],
     ))
@@ -197,13 +180,7 @@ pub fn uniaxial(h: f64) -> anyhow::Result<CaseReport> {
     );
     let scene = Scene::from_json(&text, "uniaxial scene")?;
     let mut built = build(&scene)?;
-    let mut solver = Solver::new(&mut built.model, &scene.solve, 0);
-    let sol = solver.solve(&mut built.model, &mut Quiet);
-    anyhow::ensure!(
-        sol.status == Status::Converged,
-        "uniaxial test did not converge: {:?}",
-        sol.status
-    );
+    let (_, cycles) = settle(&mut built.model, &scene.solve, "uniaxial test")?;
     let axial = -p * (1.0 - POISSON * POISSON) * 2.0 / YOUNG;
     let lateral = p * POISSON * (1.0 + POISSON) * 2.0 / YOUNG;
     let nodes = &built.model.nodes;
@@ -218,7 +195,7 @@ pub fn uniaxial(h: f64) -> anyhow::Result<CaseReport> {
     Ok(report(
         "uniaxial compression",
         &built,
-        sol.cycles,
+        cycles,
         wall,
         &[
             ("axial_displacement", e_axial),

@@ -21,6 +21,26 @@ pub struct CaseReport {
 }
 
 impl CaseReport {
+    /// A row from its figures; zone-cycles per second follow from zones, cycles and seconds.
+    pub fn new(
+        case: impl Into<String>,
+        zones: usize,
+        cycles: u64,
+        wall_s: f64,
+        h: Option<f64>,
+        errors: &[(&str, f64)],
+    ) -> Self {
+        CaseReport {
+            case: case.into(),
+            zones,
+            cycles,
+            wall_s,
+            zone_cycles_per_s: zones as f64 * cycles as f64 / wall_s,
+            h,
+            errors: errors.iter().map(|&(k, v)| (k.to_string(), v)).collect(),
+        }
+    }
+
     /// The largest of the named errors.
     pub fn worst(&self) -> f64 {
         self.errors.values().copied().fold(0.0, f64::max)
