@@ -1,5 +1,5 @@
-//! Contact detection. Broad phase: sort-and-sweep over block bounding boxes (near-linear in the
-//! number of blocks). Narrow phase: each boundary node of one block against the nearest boundary
+//! Contact detection. Broad phase: a uniform grid over block bounding boxes (linear in the number
+//! of blocks). Narrow phase: each boundary node of one block against the nearest boundary
 //! edge of the other, both ways. Contacts that persist (same node, same opposite block) keep their
 //! joint state.
 
@@ -51,29 +51,51 @@ fn bounds(blocks: &Blocks, x: &[[f64; 2]], b: usize) -> ([f64; 2], [f64; 2]) {
     (lo, hi)
 }
 
-/// Pairs of blocks whose boxes, grown by `tol`, overlap: sort by left edge, sweep.
+/// Pairs of blocks whose boxes, grown by `tol`, overlap. Broad phase on a uniform grid of cells
+/// twice the mean box size: each box is listed in the cells it covers and only boxes sharing a cell
+/// are compared, so the cost grows linearly with the number of blocks (a sort-and-sweep along one
+/// axis degrades to N^1.5 when blocks line up in columns, as joint sets make them).
 pub fn candidate_pairs(blocks: &Blocks, x: &[[f64; 2]], tol: f64) -> Vec<(u32, u32)> {
-    let boxes: Vec<_> = (0..blocks.len()).map(|b| bounds(blocks, x, b)).collect();
-    let mut order: Vec<u32> = (0..blocks.len() as u32).collect();
-    order.sort_by(|&a, &b| {
-        boxes[a as usize].0[0]
-            .total_cmp(&boxes[b as usize].0[0])
-            .then(a.cmp(&b))
-    });
-    let mut pairs = Vec::new();
-    for (k, &a) in order.iter().enumerate() {
-        let (alo, ahi) = boxes[a as usize];
-        for &b in &order[k + 1..] {
-            let (blo, bhi) = boxes[b as usize];
-            if blo[0] > ahi[0] + tol {
-                break;
+    let n = blocks.len();
+    if n < 2 {
+        return Vec::new();
+    }
+    let boxes: Vec<_> = (0..n).map(|b| bounds(blocks, x, b)).collect();
+    let (mut lo, mut extent) = ([f64::INFINITY; 2], 0.0);
+    for (blo, bhi) in &boxes {
+        lo = [lo[0].min(blo[0]), lo[1].min(blo[1])];
+        extent += (bhi[0] - blo[0]).max(bhi[1] - blo[1]);
+    }
+    let cell = (2.0 * extent / n as f64)
+        .max(4.0 * tol)
+        .max(f64::MIN_POSITIVE);
+    let index = |v: f64, d: usize| ((v - lo[d]) / cell).floor() as i64;
+    // (cell, block) entries, sorted so that each cell's blocks are contiguous.
+    let mut entries: Vec<((i64, i64), u32)> = Vec::new();
+    for (b, (blo, bhi)) in boxes.iter().enumerate() {
+        for cx in index(blo[0] - tol, 0)..=index(bhi[0] + tol, 0) {
+            for cy in index(blo[1] - tol, 1)..=index(bhi[1] + tol, 1) {
+                entries.push(((cx, cy), b as u32));
             }
-            if blo[1] <= ahi[1] + tol && alo[1] <= bhi[1] + tol {
-                pairs.push((a.min(b), a.max(b)));
+        }
+    }
+    entries.sort_unstable();
+    let overlap = |a: usize, b: usize| {
+        let ((alo, ahi), (blo, bhi)) = (boxes[a], boxes[b]);
+        (0..2).all(|d| blo[d] <= ahi[d] + tol && alo[d] <= bhi[d] + tol)
+    };
+    let mut pairs = Vec::new();
+    for group in entries.chunk_by(|p, q| p.0 == q.0) {
+        for (k, &(_, a)) in group.iter().enumerate() {
+            for &(_, b) in &group[k + 1..] {
+                if overlap(a as usize, b as usize) {
+                    pairs.push((a.min(b), a.max(b)));
+                }
             }
         }
     }
     pairs.sort_unstable();
+    pairs.dedup();
     pairs
 }
 
