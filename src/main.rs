@@ -74,6 +74,9 @@ fn run(scene_path: &Path, out: Option<PathBuf>, quiet: bool) -> anyhow::Result<b
     let result = run_scene(&scene, &out, &mut progress)?;
     progress.0.finish_and_clear();
     let s = &result.summary;
+    for w in &s.warnings {
+        eprintln!("warning: {w}");
+    }
     println!(
         "scene {}: {} zones, {} nodes, min angle {:.1}°",
         s.scene, s.zones, s.nodes, s.min_zone_angle

@@ -106,6 +106,7 @@ pub fn run_scene(
         critical_timestep: solver.step.dt_critical,
         critical_node: solver.step.limiting_node.0,
         min_zone_angle: built.mesh.min_angle_deg,
+        warnings: built.warnings.clone(),
     };
     writer.write_summary(&summary)?;
     Ok(RunResult {

@@ -117,4 +117,6 @@ pub struct Summary {
     pub critical_node: u32,
     /// Smallest zone angle, degrees.
     pub min_zone_angle: f64,
+    /// What building the model found worth a warning (sliver blocks, absorbed joints).
+    pub warnings: Vec<String>,
 }
