@@ -50,7 +50,7 @@ pub struct Solution {
 }
 
 /// Receives progress during a solve.
-pub trait Observer {
+pub trait Observer: Send {
     /// After each monitor step.
     fn monitored(&mut self, _row: &HistoryRow) {}
     /// When an intermediate output step is due (every `output_every` cycles).
@@ -103,6 +103,12 @@ impl Solver {
 
     /// Cycle until converged, the cycle limit, or failure.
     pub fn solve(&mut self, model: &mut Model, observer: &mut dyn Observer) -> Solution {
+        // Cycle on a worker thread of the pool: each stage's parallel loop then starts from inside
+        // the pool instead of injecting a job and blocking the caller, several times per cycle.
+        rayon::scope(|_| self.cycle_to_stop(model, observer))
+    }
+
+    fn cycle_to_stop(&mut self, model: &mut Model, observer: &mut dyn Observer) -> Solution {
         let mut history = Vec::new();
         let mut last = Monitor {
             ratio: f64::INFINITY,
