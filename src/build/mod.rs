@@ -16,7 +16,7 @@ pub use geometry::{Meshed, domain, joint_segments, mesh, zoning};
 
 use crate::contact::Contacts;
 use crate::contact::detect::{Detection, Touch, detect};
-use crate::joint::{CoulombSlip, JointLaw, JointState};
+use crate::joint::{CoulombSlip, JointLaw, JointState, tan_deg};
 use crate::law::{Elastic, ZoneLaw};
 use crate::model::blocks::{Blocks, NO_EDGE};
 use crate::model::{Gather, MaterialId, Model, Nodes, Zones};
@@ -175,10 +175,10 @@ pub fn build(scene: &Scene) -> anyhow::Result<Built> {
             Box::new(CoulombSlip {
                 normal_stiffness: j.normal_stiffness,
                 shear_stiffness: j.shear_stiffness,
-                friction_deg: j.friction,
+                tan_friction: tan_deg(j.friction),
                 cohesion: j.cohesion,
                 tensile_strength: j.tensile_strength,
-                dilation_deg: j.dilation,
+                tan_dilation: tan_deg(j.dilation),
             }) as Box<dyn JointLaw>
         })
         .collect();

@@ -10,19 +10,18 @@ pub struct CoulombSlip {
     pub normal_stiffness: f64,
     /// Shear stiffness ks, Pa/m.
     pub shear_stiffness: f64,
-    /// Friction angle φ, degrees.
-    pub friction_deg: f64,
+    /// tan φ of the friction angle φ (dimensionless; `tan_deg` converts from degrees).
+    pub tan_friction: f64,
     /// Cohesion c, Pa (lost once the joint fails).
     pub cohesion: f64,
     /// Tensile strength T, Pa (lost once the joint fails).
     pub tensile_strength: f64,
-    /// Dilation angle ψ, degrees.
-    pub dilation_deg: f64,
+    /// tan ψ of the dilation angle ψ (dimensionless).
+    pub tan_dilation: f64,
 }
 
-/// tan of an angle in degrees, exact for 0 (no friction or dilation costs nothing).
-#[inline]
-fn tan_deg(deg: f64) -> f64 {
+/// tan of an angle in degrees, exactly 0 for 0°.
+pub fn tan_deg(deg: f64) -> f64 {
     if deg == 0.0 {
         0.0
     } else {
@@ -56,13 +55,12 @@ impl JointLaw for CoulombSlip {
         }
         s.normal = normal;
         s.shear += self.shear_stiffness * ds;
-        let limit = c - s.normal * tan_deg(self.friction_deg);
+        let limit = c - s.normal * self.tan_friction;
         if s.shear.abs() > limit {
             s.shear = limit * s.shear.signum();
             s.flags |= SLIPPING | FAILED;
-            let tan_psi = tan_deg(self.dilation_deg);
-            if tan_psi != 0.0 {
-                s.dilation += ds.abs() * tan_psi;
+            if self.tan_dilation != 0.0 {
+                s.dilation += ds.abs() * self.tan_dilation;
                 s.normal =
                     s.initial_normal + self.normal_stiffness * (s.normal_displacement - s.dilation);
             }
@@ -82,10 +80,10 @@ mod tests {
         CoulombSlip {
             normal_stiffness: 10e9,
             shear_stiffness: 5e9,
-            friction_deg: 30.0,
+            tan_friction: tan_deg(30.0),
             cohesion: 1e5,
             tensile_strength: 5e4,
-            dilation_deg: 0.0,
+            tan_dilation: 0.0,
         }
     }
 
@@ -140,7 +138,7 @@ mod tests {
     #[test]
     fn dilation_raises_confinement_while_slipping() {
         let law = CoulombSlip {
-            dilation_deg: 10.0,
+            tan_dilation: tan_deg(10.0),
             cohesion: 0.0,
             ..joint()
         };

@@ -2,7 +2,7 @@
 
 mod coulomb;
 
-pub use coulomb::CoulombSlip;
+pub use coulomb::{CoulombSlip, tan_deg};
 
 /// Bit flag of `JointState::flags`: the joint is slipping now.
 pub const SLIPPING: u8 = 1;

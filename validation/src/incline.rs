@@ -8,7 +8,7 @@ use std::time::Instant;
 
 use adit::Scene;
 use adit::build::build;
-use adit::joint::CoulombSlip;
+use adit::joint::{CoulombSlip, tan_deg};
 use adit::model::{FIX_X, FIX_Y};
 use adit::solve::{Quiet, Solver, Status};
 
@@ -62,10 +62,10 @@ pub fn run(alpha_deg: f64, phi_deg: f64, duration: f64, h: f64) -> anyhow::Resul
     b.model.joint_laws[0] = Box::new(CoulombSlip {
         normal_stiffness: 1e11,
         shear_stiffness: 1e11,
-        friction_deg: phi_deg,
+        tan_friction: tan_deg(phi_deg),
         cohesion: 0.0,
         tensile_strength: 0.0,
-        dilation_deg: 0.0,
+        tan_dilation: 0.0,
     });
     for v in &mut b.model.nodes.vel {
         *v = [0.0; 2];
