@@ -7,6 +7,7 @@ pub mod error;
 pub mod geometry;
 pub mod joints;
 pub mod triangulate;
+pub mod voronoi;
 
 pub use blocks::{Block, Blocking, cut_blocks};
 pub use domain::{Domain, Hole};
