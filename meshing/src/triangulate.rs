@@ -163,8 +163,26 @@ pub fn triangulate_block(
             .map(|p| Point2::new(p[0], p[1])),
     );
 
-    let mut cdt = ConstrainedDelaunayTriangulation::<Point2<f64>>::bulk_load_cdt(vertices, edges)
+    // Crossing constraint edges (a degenerate block ring) are reported, not a panic in spade.
+    let mut conflict = None;
+    let mut cdt =
+        ConstrainedDelaunayTriangulation::<Point2<f64>>::try_bulk_load_cdt(vertices, edges, |e| {
+            conflict.get_or_insert(e);
+        })
         .map_err(|e| MeshError::Triangulation(format!("{e:?}")))?;
+    if let Some([a, b]) = conflict {
+        let at = |v: usize| {
+            cdt.vertices()
+                .nth(v)
+                .map(|h| h.position())
+                .map(|p| (p.x, p.y))
+        };
+        return Err(MeshError::Triangulation(format!(
+            "block boundary crosses itself near {:?}–{:?}; joints too close to each other or to a wall",
+            at(a),
+            at(b)
+        )));
+    }
     let budget = zoning.max_zones.max(16 * boundary_vertices);
     let params = RefinementParameters::<f64>::new()
         .exclude_outer_faces(true)
