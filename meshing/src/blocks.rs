@@ -47,7 +47,8 @@ impl Block {
 #[derive(Debug, Clone, PartialEq)]
 pub struct Blocking {
     pub blocks: Vec<Block>,
-    /// Total length of joint traces that ended inside a block and were absorbed into it, m.
+    /// Total length of joint traces inside the rock that ended inside a block and were absorbed
+    /// into it, m.
     pub absorbed_joint_length: f64,
     /// Blocks smaller than `1e-6` of the region's area or thinner than the tolerance
     /// (area / longest edge), by index: kept, but worth a warning.
@@ -179,6 +180,24 @@ pub fn cut_blocks(domain: &Domain, joints: &[Segment], tol: f64) -> Result<Block
     }
     let pts = pool.pts;
 
+    // Merging can leave a joint piece running along a wall between two wall vertices, doubling the
+    // wall's own pieces there; drop it, so that every wall keeps its exact path.
+    let wall_pieces: Vec<(Point, Point)> = edges
+        .iter()
+        .filter(|(_, k)| !matches!(k, EdgeKind::Joint(_)))
+        .map(|(&(u, v), _)| (pts[u as usize], pts[v as usize]))
+        .collect();
+    let along_wall = |a: Point, b: Point| {
+        let m = [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])];
+        let eps = 1e-9 * domain.outer.size();
+        wall_pieces
+            .iter()
+            .any(|&(p, q)| segment_distance(m, p, q) <= eps)
+    };
+    edges.retain(|&(u, v), k| {
+        !matches!(k, EdgeKind::Joint(_)) || !along_wall(pts[u as usize], pts[v as usize])
+    });
+
     // Prune free joint ends until every vertex has degree ≥ 2.
     let mut degree = vec![0u32; pts.len()];
     for &(u, v) in edges.keys() {
@@ -203,7 +222,14 @@ pub fn cut_blocks(domain: &Domain, joints: &[Segment], tol: f64) -> Result<Block
                         pts[key.0 as usize][0], pts[key.0 as usize][1]
                     )));
                 }
-                absorbed += distance(pts[key.0 as usize], pts[key.1 as usize]);
+                // Only pieces inside the rock count: traces beyond the region are just cut off.
+                let (a, b) = (pts[key.0 as usize], pts[key.1 as usize]);
+                let mid = [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])];
+                if domain.outer.contains(mid)
+                    && !domain.holes.iter().any(|h| h.polygon.contains(mid))
+                {
+                    absorbed += distance(a, b);
+                }
                 degree[key.0 as usize] -= 1;
                 degree[key.1 as usize] -= 1;
             }

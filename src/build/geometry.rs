@@ -3,7 +3,7 @@
 
 use adit_meshing::{
     Block, Blocking, Domain, EdgeKind, Hole, JointSet, MeshError, MeshStats, Polygon, Segment,
-    TriMesh, Zoning, cut_blocks, triangulate_block,
+    TriMesh, Zoning, cut_blocks, triangulate_block, voronoi::voronoi_segments,
 };
 use rayon::prelude::*;
 
@@ -31,8 +31,9 @@ pub fn domain(scene: &Scene) -> Result<Domain, MeshError> {
 }
 
 /// Joint traces of the scene over the region's bounding box: joint sets first (feature k = set
-/// index), then explicit joints (k = number of sets + index).
-pub fn joint_segments(scene: &Scene, domain: &Domain) -> Vec<Segment> {
+/// index), then explicit joints (k = number of sets + index), then Voronoi grain boundaries (the
+/// last k).
+pub fn joint_segments(scene: &Scene, domain: &Domain) -> Result<Vec<Segment>, MeshError> {
     let (lo, hi) = domain.outer.bounds();
     let mut out = Vec::new();
     for (k, js) in scene.joint_sets.iter().enumerate() {
@@ -56,7 +57,11 @@ pub fn joint_segments(scene: &Scene, domain: &Domain) -> Vec<Segment> {
             kind: EdgeKind::Joint((sets + i) as u32),
         });
     }
-    out
+    if let Some(v) = &scene.voronoi {
+        let kind = EdgeKind::Joint((sets + scene.joints.len()) as u32);
+        out.extend(voronoi_segments(lo, hi, v.size, v.seed, kind)?);
+    }
+    Ok(out)
 }
 
 /// Zoning controls of a scene.
@@ -120,7 +125,7 @@ pub fn mesh(scene: &Scene) -> anyhow::Result<Meshed> {
 fn mesh_blocks(scene: &Scene) -> Result<Meshed, MeshError> {
     let domain = domain(scene)?;
     let zoning = zoning(scene);
-    let joints = joint_segments(scene, &domain);
+    let joints = joint_segments(scene, &domain)?;
     let blocking = if joints.is_empty() {
         Blocking {
             blocks: vec![Block::from_domain(&domain)],
@@ -128,8 +133,15 @@ fn mesh_blocks(scene: &Scene) -> Result<Meshed, MeshError> {
             slivers: vec![],
         }
     } else {
-        // Vertices closer than 0.3 of the finest zone merge, so joints cut no sliver edges.
-        cut_blocks(&domain, &joints, 0.3 * zoning.h_excavation)?
+        // Vertices closer than 0.3 of the finest zone merge, so joints cut no sliver edges; with
+        // Voronoi grains, never more than 2 % of the grain size, whose many short edges would
+        // otherwise collapse (merging can move the region's boundary: see the session notes).
+        let grain = scene.voronoi.as_ref().map_or(f64::INFINITY, |v| v.size);
+        cut_blocks(
+            &domain,
+            &joints,
+            (0.3 * zoning.h_excavation).min(0.02 * grain),
+        )?
     };
     let excavations: Vec<Polygon> = domain.holes.iter().map(|h| h.polygon.clone()).collect();
     let meshes = blocking

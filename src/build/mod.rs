@@ -193,6 +193,7 @@ pub fn build(scene: &Scene) -> anyhow::Result<Built> {
         .iter()
         .map(|s| material_index(&s.material))
         .chain(scene.joints.iter().map(|j| material_index(&j.material)))
+        .chain(scene.voronoi.iter().map(|v| material_index(&v.material)))
         .collect();
     let contact_tolerance = scene
         .contacts

@@ -32,6 +32,9 @@ pub struct Scene {
     /// Explicit joint segments.
     #[serde(default)]
     pub joints: Vec<JointLine>,
+    /// Voronoi grains: the region cut by the Voronoi tessellation of jittered seeds.
+    #[serde(default)]
+    pub voronoi: Option<VoronoiSpec>,
     #[serde(default)]
     pub contacts: ContactSpec,
     #[serde(default)]
@@ -170,6 +173,19 @@ pub struct JointLine {
     pub from: [f64; 2],
     pub to: [f64; 2],
     /// Joint material name.
+    pub material: String,
+}
+
+/// Grain-based blocks from a Voronoi tessellation.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct VoronoiSpec {
+    /// Mean grain size, m (one seed per `size` × `size` cell, jittered).
+    pub size: f64,
+    /// Seed of the jitter (default 1).
+    #[serde(default = "default_seed")]
+    pub seed: u64,
+    /// Joint material of the grain boundaries.
     pub material: String,
 }
 

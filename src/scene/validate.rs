@@ -182,6 +182,10 @@ impl Scene {
                 return Err(invalid(format!("joints[{i}]"), "`from` and `to` coincide"));
             }
         }
+        if let Some(v) = &self.voronoi {
+            positive("voronoi.size", v.size)?;
+            joint_material("voronoi.material".into(), &v.material)?;
+        }
         if let Some(t) = self.contacts.tolerance {
             positive("contacts.tolerance", t)?;
         }
