@@ -5,7 +5,7 @@ use std::collections::BTreeMap;
 use adit_meshing::{BoundaryEdge, EdgeKind};
 
 use super::in_situ_stress;
-use crate::model::{FIX_X, FIX_Y, Nodes};
+use crate::model::{FIX_X, FIX_Y, Nodes, traction};
 use crate::scene::{BoundaryCondition, Fix, Scene};
 
 fn fix_flags(f: Fix) -> u8 {
@@ -43,7 +43,7 @@ pub(super) fn apply_condition(
         }
     }
     let poisson = scene.materials[&scene.region.material].poisson;
-    let traction = |p: [f64; 2], n: [f64; 2]| -> Option<[f64; 2]> {
+    let load = |p: [f64; 2], n: [f64; 2]| -> Option<[f64; 2]> {
         let s = if let Some(s) = bc.stress {
             [s.sxx, s.syy, 0.0, s.sxy]
         } else if bc.in_situ_traction {
@@ -57,17 +57,11 @@ pub(super) fn apply_condition(
         } else {
             return None;
         };
-        Some([s[0] * n[0] + s[3] * n[1], s[3] * n[0] + s[1] * n[1]])
+        Some(traction(&s, n))
     };
-    if bc.stress.is_some()
-        || bc.in_situ_traction
-        || bc.normal_stress.is_some()
-        || bc.shear_stress.is_some()
-    {
+    if bc.load_kinds() > 0 {
         let edges = boundary.iter().filter(|e| in_part(e.kind));
-        add_tractions(nodes, edges, |p, n| {
-            traction(p, n).expect("a load is given")
-        });
+        add_tractions(nodes, edges, |p, n| load(p, n).expect("a load is given"));
     }
 }
 

@@ -19,7 +19,7 @@ use crate::contact::detect::{Detection, Touch, detect};
 use crate::joint::{CoulombSlip, JointLaw, JointState, tan_deg};
 use crate::law::{Elastic, ZoneLaw};
 use crate::model::blocks::{Blocks, NO_EDGE};
-use crate::model::{Gather, MaterialId, Model, Nodes, Zones};
+use crate::model::{Gather, MaterialId, Model, Nodes, Zones, traction};
 use crate::scene::{InSitu, Scene};
 
 /// A model ready to cycle, with what was learnt while building it.
@@ -210,11 +210,11 @@ pub fn build(scene: &Scene) -> anyhow::Result<Built> {
         let s = in_situ_stress(&scene.in_situ, t.point[1], poisson);
         let n = t.normal;
         let tangent = [-n[1], n[0]];
-        let traction = [s[0] * n[0] + s[3] * n[1], s[3] * n[0] + s[1] * n[1]];
-        let normal = traction[0] * n[0] + traction[1] * n[1];
+        let t = traction(&s, n);
+        let normal = t[0] * n[0] + t[1] * n[1];
         JointState {
             normal,
-            shear: traction[0] * tangent[0] + traction[1] * tangent[1],
+            shear: t[0] * tangent[0] + t[1] * tangent[1],
             initial_normal: normal,
             ..Default::default()
         }

@@ -325,15 +325,20 @@ mod tests {
         (blocks, x)
     }
 
+    /// Detection over the squares at positions `x`, 1 mm tolerance.
+    fn at<'a>(blocks: &'a Blocks, x: &'a [[f64; 2]]) -> Detection<'a> {
+        Detection {
+            blocks,
+            x,
+            tolerance: 1e-3,
+            joint_material: &[0],
+        }
+    }
+
     #[test]
     fn touching_squares_make_four_contacts_on_the_shared_face() {
         let (blocks, x) = two_squares();
-        let d = Detection {
-            blocks: &blocks,
-            x: &x,
-            tolerance: 1e-3,
-            joint_material: &[0],
-        };
+        let d = at(&blocks, &x);
         let c = detect(&d, &Contacts::default(), &|t: &Touch| JointState {
             normal_displacement: t.gap,
             ..Default::default()
@@ -353,20 +358,10 @@ mod tests {
         for p in &mut x[4..] {
             p[0] += 0.5;
         }
-        let d = Detection {
-            blocks: &blocks,
-            x: &x,
-            tolerance: 1e-3,
-            joint_material: &[0],
-        };
+        let d = at(&blocks, &x);
         assert!(detect(&d, &Contacts::default(), &|_: &Touch| JointState::default()).is_empty());
         let (blocks, x) = two_squares();
-        let d = Detection {
-            blocks: &blocks,
-            x: &x,
-            tolerance: 1e-3,
-            joint_material: &[0],
-        };
+        let d = at(&blocks, &x);
         let first = detect(&d, &Contacts::default(), &|_: &Touch| JointState {
             shear: 7.0,
             ..Default::default()

@@ -44,8 +44,6 @@ pub struct Cycle {
     pub contact_force: Vec<[f64; 2]>,
     /// Upper bound on how far any node has moved since the last detection, m.
     pub moved: f64,
-    /// Detections run so far (the one at build time not counted).
-    pub detections: u64,
     pub seconds: StageSeconds,
 }
 

@@ -6,7 +6,7 @@ pub mod nodes;
 pub mod zones;
 
 pub use nodes::{FIX_X, FIX_Y, Nodes};
-pub use zones::{Stress, Zones};
+pub use zones::{Stress, Zones, traction};
 
 use crate::contact::Contacts;
 use crate::joint::JointLaw;
@@ -15,10 +15,6 @@ use crate::law::ZoneLaw;
 /// Index of a node.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub struct NodeId(pub u32);
-
-/// Index of a zone (constant-strain triangle).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
-pub struct ZoneId(pub u32);
 
 /// Index of a zone material.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]

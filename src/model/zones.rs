@@ -40,6 +40,11 @@ pub fn cst_gradients(p: [[f64; 2]; 3]) -> ([f64; 6], f64) {
     (g, 0.5 * two_a)
 }
 
+/// Traction t = σ·n (Pa) of an in-plane stress on a plane of unit normal n (Cauchy's formula).
+pub fn traction(s: &Stress, n: [f64; 2]) -> [f64; 2] {
+    [s[0] * n[0] + s[3] * n[1], s[3] * n[0] + s[1] * n[1]]
+}
+
 impl Zones {
     pub fn len(&self) -> usize {
         self.nodes.len()

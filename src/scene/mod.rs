@@ -287,6 +287,15 @@ pub struct BoundaryCondition {
     pub shear_stress: Option<f64>,
 }
 
+impl BoundaryCondition {
+    /// How many kinds of load are given: `stress`, `in_situ_traction`, `normal_stress`/`shear_stress`.
+    pub fn load_kinds(&self) -> u8 {
+        self.stress.is_some() as u8
+            + self.in_situ_traction as u8
+            + (self.normal_stress.is_some() || self.shear_stress.is_some()) as u8
+    }
+}
+
 /// Which velocity components are fixed.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
 pub enum Fix {

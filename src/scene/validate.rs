@@ -259,11 +259,7 @@ impl Scene {
                 }
             }
             (None, Some(_)) => {
-                if bc.stress.is_some()
-                    || bc.in_situ_traction
-                    || bc.normal_stress.is_some()
-                    || bc.shear_stress.is_some()
-                {
+                if bc.load_kinds() > 0 {
                     return Err(invalid(
                         &p,
                         "a point condition (`at`) can only fix velocities",
@@ -272,9 +268,7 @@ impl Scene {
             }
             _ => return Err(invalid(&p, "give exactly one of `part` and `at`")),
         }
-        let loads = bc.stress.is_some() as u8
-            + bc.in_situ_traction as u8
-            + (bc.normal_stress.is_some() || bc.shear_stress.is_some()) as u8;
+        let loads = bc.load_kinds();
         if loads > 1 {
             return Err(invalid(
                 &p,

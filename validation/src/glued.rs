@@ -54,10 +54,7 @@ mod tests {
     /// Coarse twin: twice the shipped zone size, kn = 1e11 Pa/m.
     #[test]
     fn glued_joints_reproduce_the_intact_kirsch_solution() {
-        let kirsch = Scene::load(
-            &std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../models/kirsch.json"),
-        )
-        .unwrap();
+        let kirsch = crate::shipped_kirsch().unwrap();
         let r = run_glued(&scaled(&kirsch, 2.0), 1e11).unwrap();
         eprintln!("{r:?}");
         assert_eq!(r.status, "converged");

@@ -5,6 +5,7 @@ use std::time::Instant;
 
 use adit::Scene;
 use adit::build::{add_tractions, build};
+use adit::model::traction;
 use adit::solve::{Quiet, Solver, Status};
 use adit_meshing::EdgeKind;
 use serde::Serialize;
@@ -111,8 +112,8 @@ pub fn run(scene: &Scene, case: &str, load: OuterLoad) -> anyhow::Result<KirschR
             .iter()
             .filter(|e| matches!(e.kind, EdgeKind::Region(_)));
         add_tractions(&mut built.model.nodes, edges, |p, n| {
-            let s = exact.stress(p[0], p[1]);
-            [s[0] * n[0] + s[2] * n[1], s[2] * n[0] + s[1] * n[1]]
+            let [sxx, syy, sxy] = exact.stress(p[0], p[1]);
+            traction(&[sxx, syy, 0.0, sxy], n)
         });
     }
     let mut solver = Solver::new(&mut built.model, &scene.solve, 0);
@@ -167,8 +168,7 @@ mod tests {
     use super::*;
 
     fn kirsch_scene() -> Scene {
-        Scene::load(&std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../models/kirsch.json"))
-            .unwrap()
+        crate::shipped_kirsch().unwrap()
     }
 
     /// Coarse twin of the report's Kirsch levels: twice the default zone size.

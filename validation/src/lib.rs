@@ -12,9 +12,23 @@ pub mod plot;
 pub mod report;
 pub mod scaling;
 
+use std::path::PathBuf;
+
 use adit::model::Model;
 use adit::scene::SolveSpec;
 use adit::solve::{Quiet, Solver, Status};
+
+/// The repository root (models, docs and target live there).
+pub fn repository_root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..")
+}
+
+/// The Kirsch scene as shipped in `models/kirsch.json`.
+pub fn shipped_kirsch() -> anyhow::Result<adit::Scene> {
+    Ok(adit::Scene::load(
+        &repository_root().join("models/kirsch.json"),
+    )?)
+}
 
 /// Solve `model` statically to the ratio of `spec`; an error naming `what` unless it converges.
 /// Returns the solver (masses and step set up) and the cycles taken.

@@ -2,7 +2,6 @@
 //! and refreshes `docs/validation.md`.
 
 use std::fmt::Write as _;
-use std::path::{Path, PathBuf};
 
 use adit::Scene;
 use adit_validation::kirsch_case::{KirschResult, OuterLoad, run, scaled};
@@ -16,10 +15,6 @@ const LEVELS: [f64; 4] = [4.0, 2.0, 1.0, 0.6];
 /// Unbalanced-force ratio for the convergence levels: tight enough that solver error is far below
 /// discretisation error at the finest level.
 const STUDY_RATIO: f64 = 1e-8;
-
-fn root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("..")
-}
 
 fn print_row(r: &CaseReport) {
     let errors: Vec<String> = r
@@ -123,8 +118,8 @@ fn table(md: &mut String, rows: &[CaseReport]) {
 }
 
 fn main() -> anyhow::Result<()> {
-    let root = root();
-    let scene = Scene::load(&root.join("models/kirsch.json"))?;
+    let root = adit_validation::repository_root();
+    let scene = adit_validation::shipped_kirsch()?;
     let threads = rayon::current_num_threads();
     println!("adit validation on {threads} threads");
 
