@@ -78,13 +78,16 @@ fn run(scene_path: &Path, out: Option<PathBuf>, quiet: bool) -> anyhow::Result<b
         eprintln!("warning: {w}");
     }
     println!(
-        "scene {}: {} zones, {} nodes, min angle {:.1}°",
-        s.scene, s.zones, s.nodes, s.min_zone_angle
+        "scene {}: {} blocks ({} rigid, {} simple), {} zones, {} nodes, min angle {:.1}°",
+        s.scene, s.blocks, s.rigid_blocks, s.simple_blocks, s.zones, s.nodes, s.min_zone_angle
     );
+    let limit = match s.critical_block {
+        Some(b) => format!("block {b}"),
+        None => format!("node {}", s.critical_node),
+    };
     println!(
-        "time step: critical {:.3e} s (node {}), used {:.3e} s{}",
+        "time step: critical {:.3e} s ({limit}), used {:.3e} s{}",
         s.critical_timestep,
-        s.critical_node,
         s.timestep,
         if scene.solve.mode == adit::scene::SolveMode::Static {
             " with mass scaling"
@@ -93,8 +96,13 @@ fn run(scene_path: &Path, out: Option<PathBuf>, quiet: bool) -> anyhow::Result<b
         }
     );
     println!(
-        "{} after {} cycles, ratio {:.2e}, {:.2} s wall, {:.3e} zone-cycles/s",
-        s.status, s.cycles, s.final_ratio, s.wall_seconds, s.zone_cycles_per_second
+        "{} after {} cycles, ratio {:.2e}, {:.2} s wall, {:.3e} zone-cycles/s, {:.3e} block-cycles/s",
+        s.status,
+        s.cycles,
+        s.final_ratio,
+        s.wall_seconds,
+        s.zone_cycles_per_second,
+        s.block_cycles_per_second
     );
     println!("results in {}", result.out_dir.display());
     if let Some(reason) = &s.reason {

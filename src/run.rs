@@ -6,6 +6,7 @@ use std::time::Instant;
 use crate::build::{Built, build};
 use crate::cycle::Cycle;
 use crate::model::Model;
+use crate::model::bodies::BodyMode;
 use crate::output::{OutputWriter, Summary};
 use crate::scene::Scene;
 use crate::solve::{HistoryRow, Observer, Solution, Solver, Status};
@@ -82,20 +83,35 @@ pub fn run_scene(
     let wall = start.elapsed().as_secs_f64();
     let cycling = seconds.detect + seconds.contacts + seconds.zones + seconds.motion;
     let zones = built.model.zones.len();
+    let per_second = |items: usize| {
+        if cycling > 0.0 {
+            items as f64 * solution.cycles as f64 / cycling
+        } else {
+            0.0
+        }
+    };
+    let count = |mode| {
+        built
+            .model
+            .bodies
+            .mode
+            .iter()
+            .filter(|&&m| m == mode)
+            .count()
+    };
     let summary = Summary {
         scene: scene.name.clone(),
         zones,
         nodes: built.model.nodes.len(),
         blocks: built.model.blocks.len(),
+        rigid_blocks: count(BodyMode::Rigid),
+        simple_blocks: count(BodyMode::Simple),
         contacts: built.model.contacts.len(),
         cycles: solution.cycles,
         wall_seconds: wall,
         stage_seconds: seconds,
-        zone_cycles_per_second: if cycling > 0.0 {
-            zones as f64 * solution.cycles as f64 / cycling
-        } else {
-            0.0
-        },
+        zone_cycles_per_second: per_second(zones),
+        block_cycles_per_second: per_second(built.model.blocks.len()),
         final_ratio: solution.final_ratio,
         status: solution.status.label().to_string(),
         reason: match &solution.status {
@@ -105,6 +121,7 @@ pub fn run_scene(
         timestep: solver.params.dt,
         critical_timestep: solver.step.dt_critical,
         critical_node: solver.step.limiting_node.0,
+        critical_block: solver.step.limiting_block,
         min_zone_angle: built.mesh.min_angle_deg,
         warnings: built.warnings.clone(),
     };

@@ -2,10 +2,12 @@
 //! history, and report intermediate output steps to an observer.
 
 use crate::cycle::timestep::{
-    StepLimit, critical_step, lumped_masses, nodal_stiffness, scaled_masses,
+    StepLimit, body_masses, body_step, body_stiffness, critical_step, lumped_masses,
+    nodal_stiffness, scaled_masses,
 };
 use crate::cycle::{Cycle, CycleParams, Monitor};
 use crate::model::Model;
+use crate::model::bodies::NO_BODY;
 use crate::scene::{SolveMode, SolveSpec};
 
 /// How a solve ended.
@@ -78,17 +80,32 @@ impl Solver {
     pub fn new(model: &mut Model, spec: &SolveSpec, output_every: u64) -> Solver {
         let stiffness = nodal_stiffness(model);
         let real = lumped_masses(model);
-        let step = critical_step(&stiffness, &real);
+        let mut step = critical_step(&stiffness, &real);
+        let body_k = body_stiffness(model, &stiffness);
+        let body_real = body_masses(model);
+        body_step(model, &body_k, &body_real, &mut step);
+        let s = spec.safety_factor;
         let dt = match spec.mode {
             SolveMode::Static => {
-                model.nodes.mass = scaled_masses(&stiffness, spec.safety_factor);
+                model.nodes.mass = scaled_masses(&stiffness, s);
+                model.bodies.mass = body_k
+                    .iter()
+                    .map(|d| d.map(|k| if k > 0.0 { k / (4.0 * s * s) } else { 1.0 }))
+                    .collect();
                 1.0
             }
             SolveMode::Dynamic => {
                 model.nodes.mass = real;
-                spec.safety_factor * step.dt_critical
+                model.bodies.mass = body_real;
+                s * step.dt_critical
             }
         };
+        // Body nodes move with their body and carry no mass of their own.
+        for (m, &b) in model.nodes.mass.iter_mut().zip(&model.bodies.of_node) {
+            if b != NO_BODY {
+                *m = 0.0;
+            }
+        }
         Solver {
             cycle: Cycle::new(model),
             params: CycleParams {

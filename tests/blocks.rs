@@ -4,7 +4,7 @@ use adit::Scene;
 use adit::build::build;
 use adit::solve::{Quiet, Solver, Status};
 
-fn column(friction: f64) -> Scene {
+fn column(friction: f64, mode: &str) -> Scene {
     let text = format!(
         r#"{{
         "name": "column",
@@ -15,6 +15,7 @@ fn column(friction: f64) -> Scene {
         "joint_materials": {{ "bedding": {{ "normal_stiffness": 1e11, "shear_stiffness": 1e11, "friction": {friction} }} }},
         "joint_sets": [{{ "dip": 0, "spacing": 1, "material": "bedding" }}],
         "gravity": [0, -9.81],
+        "blocks": {{ "mode": "{mode}" }},
         "boundary": [{{ "part": "base", "fix": "xy" }}, {{ "part": "left", "fix": "x" }}, {{ "part": "right", "fix": "x" }}],
         "solve": {{ "ratio": 1e-7 }}
     }}"#
@@ -24,7 +25,13 @@ fn column(friction: f64) -> Scene {
 
 #[test]
 fn column_of_blocks_carries_the_weight_above_each_joint() {
-    let scene = column(30.0);
+    for mode in ["deformable", "simple", "rigid"] {
+        weight_above_each_joint(mode);
+    }
+}
+
+fn weight_above_each_joint(mode: &str) {
+    let scene = column(30.0, mode);
     let mut b = build(&scene).unwrap();
     assert_eq!(b.model.blocks.len(), 3);
     assert!(!b.model.contacts.is_empty());
@@ -48,7 +55,7 @@ fn column_of_blocks_carries_the_weight_above_each_joint() {
         );
         let err = (-force - weight).abs() / weight;
         eprintln!(
-            "joint at y = {joint_y}: normal force {force:.1} N/m, weight above {weight:.1} N/m, error {err:.2e}"
+            "{mode}: joint at y = {joint_y}: normal force {force:.1} N/m, weight above {weight:.1} N/m, error {err:.2e}"
         );
         assert!(err < 0.02, "error {err}");
     }
@@ -118,6 +125,57 @@ fn free_collision_conserves_momentum_and_exchanges_velocities() {
     );
 }
 
+/// A free rigid block spinning at 20 rad/s through several turns (dynamic, undamped) keeps its
+/// shape to round-off, its spin and its kinetic energy, and its centroid stays put.
+#[test]
+fn free_rigid_block_spins_without_distortion() {
+    let text = r#"{
+        "name": "spin",
+        "materials": { "rock": { "density": 2500, "young": 10e9, "poisson": 0.25 } },
+        "region": { "polygon": [[0, 0], [2, 0], [2.5, 1], [0.3, 1.2]], "material": "rock" },
+        "zoning": { "edge_at_excavation": 0.5, "edge_far": 0.5 },
+        "blocks": { "mode": "rigid" },
+        "solve": { "mode": "dynamic", "damping": 0, "max_cycles": 1000 }
+    }"#;
+    let scene = Scene::from_json(text, "spin").unwrap();
+    let mut b = build(&scene).unwrap();
+    assert_eq!(b.model.bodies.len(), 1);
+    assert_eq!(b.model.zones.len(), 0);
+    let mut solver = Solver::new(&mut b.model, &scene.solve, 0);
+    // A lone block has no stiffness: its step is set by hand for this test.
+    solver.params.dt = 1e-4;
+    b.model.bodies.velocity[0][2] = 20.0;
+    let x = |m: &adit::model::Model| -> Vec<[f64; 2]> {
+        (0..m.nodes.len())
+            .map(|n| {
+                [
+                    m.nodes.pos[n][0] + m.nodes.disp[n][0],
+                    m.nodes.pos[n][1] + m.nodes.disp[n][1],
+                ]
+            })
+            .collect()
+    };
+    let dist = |p: [f64; 2], q: [f64; 2]| (p[0] - q[0]).hypot(p[1] - q[1]);
+    let before = x(&b.model);
+    let c0 = b.model.bodies.centroid[0];
+    let cycles = 10;
+    for _ in 0..cycles {
+        let sol = solver.solve(&mut b.model, &mut Quiet);
+        assert!(!matches!(sol.status, Status::Failed(_)), "{:?}", sol.status);
+    }
+    let turns = 20.0 * 1e-4 * (1000 * cycles) as f64 / std::f64::consts::TAU;
+    assert!(turns > 3.0, "{turns} turns");
+    let after = x(&b.model);
+    for i in 0..before.len() {
+        for j in 0..i {
+            let (d0, d1) = (dist(before[i], before[j]), dist(after[i], after[j]));
+            assert!((d1 - d0).abs() < 1e-12, "distance {i}-{j}: {d0} → {d1}");
+        }
+    }
+    assert_eq!(b.model.bodies.velocity[0][2], 20.0);
+    assert!(dist(b.model.bodies.centroid[0], c0) < 1e-14);
+}
+
 /// Voronoi grains confined by 1 MPa all round, starting from the matching in-situ stress: the
 /// grain model converges, no grain boundary fails, and the grains carry the confinement (their
 /// area-averaged stress equals the boundary stress, by the average-stress theorem).
@@ -143,12 +201,14 @@ fn confined_voronoi_grains_carry_the_confining_stress() {
     let mut solver = Solver::new(&mut b.model, &scene.solve, 0);
     let sol = solver.solve(&mut b.model, &mut Quiet);
     assert_eq!(sol.status, Status::Converged, "{:?}", sol.status);
+    // Grain boundaries are the face contacts, which start with the in-situ stress; corner
+    // contacts (grains meeting at a point) start unstressed and may open.
     let failed = b
         .model
         .contacts
         .state
         .iter()
-        .filter(|s| s.flags != 0)
+        .filter(|s| s.initial_normal < 0.0 && s.flags != 0)
         .count();
     assert_eq!(failed, 0, "grain boundaries failed");
     let z = &b.model.zones;

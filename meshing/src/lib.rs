@@ -14,4 +14,6 @@ pub use domain::{Domain, Hole};
 pub use error::MeshError;
 pub use geometry::{Point, Polygon};
 pub use joints::{EdgeKind, JointSet, Segment};
-pub use triangulate::{BoundaryEdge, MeshStats, TriMesh, Zoning, triangulate, triangulate_block};
+pub use triangulate::{
+    BoundaryEdge, MeshStats, TriMesh, Zoning, triangulate, triangulate_block, triangulate_outline,
+};

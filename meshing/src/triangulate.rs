@@ -163,6 +163,50 @@ pub fn triangulate_block(
             .map(|p| Point2::new(p[0], p[1])),
     );
 
+    let budget = zoning.max_zones.max(16 * boundary_vertices);
+    let params = RefinementParameters::<f64>::new()
+        .exclude_outer_faces(true)
+        .with_angle_limit(AngleLimit::from_deg(zoning.min_angle_deg))
+        .with_max_allowed_area(0.5 * zoning.h_far * zoning.h_far)
+        .with_max_additional_vertices(budget);
+    let mesh = constrained_mesh(block, vertices, edges, params, Some(budget))?;
+    if mesh.triangles.len() > zoning.max_zones {
+        return Err(MeshError::Zoning(format!(
+            "{} zones exceed the limit of {}; coarsen the zoning",
+            mesh.triangles.len(),
+            zoning.max_zones
+        )));
+    }
+    Ok(mesh)
+}
+
+/// Triangles over one block's own vertices, with no vertex added: the outline of a rigid or simple
+/// block (drawn in the output; such blocks have no zones).
+pub fn triangulate_outline(block: &Block) -> Result<TriMesh, MeshError> {
+    let mut vertices: Vec<Point2<f64>> = Vec::new();
+    let mut edges: Vec<[usize; 2]> = Vec::new();
+    for ring in std::iter::once(&block.outer).chain(&block.holes) {
+        let first = vertices.len();
+        vertices.extend(ring.vertices.iter().map(|v| Point2::new(v[0], v[1])));
+        let last = vertices.len();
+        edges.extend((first..last).map(|k| [k, if k + 1 == last { first } else { k + 1 }]));
+    }
+    let params = RefinementParameters::<f64>::new()
+        .exclude_outer_faces(true)
+        .with_angle_limit(AngleLimit::from_deg(0.0))
+        .with_max_additional_vertices(0);
+    constrained_mesh(block, vertices, edges, params, None)
+}
+
+/// Constrained Delaunay triangulation of the block rings `edges` over `vertices`, refined by
+/// `params`; `budget` (when given) is the vertex budget whose exhaustion is an error.
+fn constrained_mesh(
+    block: &Block,
+    vertices: Vec<Point2<f64>>,
+    edges: Vec<[usize; 2]>,
+    params: RefinementParameters<f64>,
+    budget: Option<usize>,
+) -> Result<TriMesh, MeshError> {
     // Crossing constraint edges (a degenerate block ring) are reported, not a panic in spade.
     let mut conflict = None;
     let mut cdt =
@@ -183,14 +227,8 @@ pub fn triangulate_block(
             at(b)
         )));
     }
-    let budget = zoning.max_zones.max(16 * boundary_vertices);
-    let params = RefinementParameters::<f64>::new()
-        .exclude_outer_faces(true)
-        .with_angle_limit(AngleLimit::from_deg(zoning.min_angle_deg))
-        .with_max_allowed_area(0.5 * zoning.h_far * zoning.h_far)
-        .with_max_additional_vertices(budget);
     let result = cdt.refine(params);
-    if !result.refinement_complete {
+    if let (false, Some(budget)) = (result.refinement_complete, budget) {
         return Err(MeshError::Triangulation(format!(
             "refinement did not complete within {budget} added vertices; coarsen the zoning or lower the minimum angle"
         )));
@@ -201,13 +239,6 @@ pub fn triangulate_block(
         .filter(|f| !excluded.contains(&f.fix()))
         .map(|f| f.vertices().map(|v| v.fix().index()))
         .collect();
-    if tris.len() > zoning.max_zones {
-        return Err(MeshError::Zoning(format!(
-            "{} zones exceed the limit of {}; coarsen the zoning",
-            tris.len(),
-            zoning.max_zones
-        )));
-    }
     let pos: Vec<Point> = cdt
         .vertices()
         .map(|v| [v.position().x, v.position().y])
@@ -453,6 +484,17 @@ mod tests {
                 "triangles are counter-clockwise"
             );
         }
+    }
+
+    #[test]
+    fn outline_uses_only_the_block_vertices() {
+        let d = kirsch_domain();
+        let block = Block::from_domain(&d);
+        let mesh = triangulate_outline(&block).unwrap();
+        let s = mesh.stats();
+        assert_eq!(mesh.points.len(), 4 + 64);
+        assert_relative_eq!(s.area, d.area(), max_relative = 1e-9);
+        assert_eq!(mesh.boundary.len(), 4 + 64);
     }
 
     #[test]

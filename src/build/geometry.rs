@@ -3,11 +3,11 @@
 
 use adit_meshing::{
     Block, Blocking, Domain, EdgeKind, Hole, JointSet, MeshError, MeshStats, Polygon, Segment,
-    TriMesh, Zoning, cut_blocks, triangulate_block, voronoi::voronoi_segments,
+    TriMesh, Zoning, cut_blocks, triangulate_block, triangulate_outline, voronoi::voronoi_segments,
 };
 use rayon::prelude::*;
 
-use crate::scene::Scene;
+use crate::scene::{BlockMode, Scene};
 
 /// The domain (region with excavation holes) a scene describes.
 pub fn domain(scene: &Scene) -> Result<Domain, MeshError> {
@@ -80,26 +80,40 @@ pub fn zoning(scene: &Scene) -> Zoning {
 pub struct Meshed {
     pub domain: Domain,
     pub blocking: Blocking,
-    /// One mesh per block, in block order.
+    /// One mesh per block, in block order (the outline only for rigid and simple blocks).
     pub meshes: Vec<TriMesh>,
+    /// Mode of each block.
+    pub modes: Vec<BlockMode>,
 }
 
 impl Meshed {
-    /// Mesh statistics over all blocks.
+    /// Mesh statistics over the zones of the deformable blocks (rigid and simple blocks have none).
     pub fn stats(&self) -> MeshStats {
-        let all: Vec<MeshStats> = self.meshes.iter().map(TriMesh::stats).collect();
+        let all: Vec<MeshStats> = self
+            .meshes
+            .iter()
+            .zip(&self.modes)
+            .filter(|(_, m)| **m == BlockMode::Deformable)
+            .map(|(mesh, _)| mesh.stats())
+            .collect();
         MeshStats {
             zones: all.iter().map(|s| s.zones).sum(),
             nodes: all.iter().map(|s| s.nodes).sum(),
-            min_angle_deg: all
-                .iter()
-                .map(|s| s.min_angle_deg)
-                .fold(f64::INFINITY, f64::min),
-            min_edge: all.iter().map(|s| s.min_edge).fold(f64::INFINITY, f64::min),
+            min_angle_deg: finite_or_zero(
+                all.iter()
+                    .map(|s| s.min_angle_deg)
+                    .fold(f64::INFINITY, f64::min),
+            ),
+            min_edge: finite_or_zero(all.iter().map(|s| s.min_edge).fold(f64::INFINITY, f64::min)),
             max_edge: all.iter().map(|s| s.max_edge).fold(0.0, f64::max),
             area: all.iter().map(|s| s.area).sum(),
         }
     }
+}
+
+/// 0 for the empty minimum (no deformable block).
+fn finite_or_zero(v: f64) -> f64 {
+    if v.is_finite() { v } else { 0.0 }
 }
 
 /// The scene field a meshing error is about: `region.polygon` or `excavations[i]`.
@@ -144,14 +158,44 @@ fn mesh_blocks(scene: &Scene) -> Result<Meshed, MeshError> {
         )?
     };
     let excavations: Vec<Polygon> = domain.holes.iter().map(|h| h.polygon.clone()).collect();
+    let modes = block_modes(scene, &blocking.blocks);
     let meshes = blocking
         .blocks
         .par_iter()
-        .map(|b| triangulate_block(b, &excavations, &zoning))
+        .zip(&modes)
+        .map(|(b, mode)| match mode {
+            BlockMode::Deformable => triangulate_block(b, &excavations, &zoning),
+            BlockMode::Simple | BlockMode::Rigid => triangulate_outline(b),
+        })
         .collect::<Result<Vec<_>, _>>()?;
     Ok(Meshed {
         domain,
         blocking,
         meshes,
+        modes,
     })
+}
+
+/// Mode of each block: the scene's `blocks.mode`, overridden by the regions in order (a polygon
+/// takes the blocks whose centroid lies inside it, a point the block containing it).
+pub fn block_modes(scene: &Scene, blocks: &[Block]) -> Vec<BlockMode> {
+    let inside =
+        |b: &Block, p: [f64; 2]| b.outer.contains(p) && !b.holes.iter().any(|h| h.contains(p));
+    blocks
+        .iter()
+        .map(|b| {
+            let c = b.outer.centroid();
+            scene
+                .blocks
+                .regions
+                .iter()
+                .rev()
+                .find(|r| match (&r.polygon, r.at) {
+                    (Some(poly), _) => Polygon::new(poly.clone()).contains(c),
+                    (None, Some(p)) => inside(b, p),
+                    (None, None) => false,
+                })
+                .map_or(scene.blocks.mode, |r| r.mode)
+        })
+        .collect()
 }

@@ -16,11 +16,12 @@ pub use geometry::{Meshed, domain, joint_segments, mesh, zoning};
 
 use crate::contact::Contacts;
 use crate::contact::detect::{Detection, Touch, detect};
-use crate::joint::{CoulombSlip, JointLaw, JointState, tan_deg};
+use crate::joint::{CoulombSlip, FAILED, Glued, JointLaw, JointState, tan_deg};
 use crate::law::{Elastic, ZoneLaw};
 use crate::model::blocks::{Blocks, NO_EDGE};
-use crate::model::{Gather, MaterialId, Model, Nodes, Zones, traction};
-use crate::scene::{InSitu, Scene};
+use crate::model::bodies::{Bodies, BodyMode, DOFS, FIX_SPIN, NO_BODY, polygon_moments};
+use crate::model::{BODY, Gather, MaterialId, Model, Nodes, Zones, traction};
+use crate::scene::{BlockMode, InSitu, Scene};
 
 /// A model ready to cycle, with what was learnt while building it.
 pub struct Built {
@@ -51,8 +52,12 @@ pub fn in_situ_stress(s: &InSitu, y: f64, poisson: f64) -> [f64; 4] {
 /// The block meshes joined into one numbering.
 struct Assembled {
     pos: Vec<[f64; 2]>,
+    /// Zones of the deformable blocks and the block of each.
     triangles: Vec<[u32; 3]>,
     zone_block: Vec<u32>,
+    /// Outline triangles of the rigid and simple blocks and the block of each.
+    outline: Vec<[u32; 3]>,
+    outline_block: Vec<u32>,
     blocks: Blocks,
     boundary: Vec<BoundaryEdge>,
 }
@@ -60,6 +65,7 @@ struct Assembled {
 /// Concatenate the block meshes: global nodes, zones, and the block table.
 fn assemble(meshed: &Meshed) -> Assembled {
     let (mut pos, mut tris, mut zone_block) = (Vec::new(), Vec::new(), Vec::new());
+    let (mut outline, mut outline_block) = (Vec::new(), Vec::new());
     let mut blocks = Blocks {
         node_start: vec![0],
         zone_start: vec![0],
@@ -70,8 +76,13 @@ fn assemble(meshed: &Meshed) -> Assembled {
     for (b, m) in meshed.meshes.iter().enumerate() {
         let offset = pos.len() as u32;
         pos.extend_from_slice(&m.points);
-        tris.extend(m.triangles.iter().map(|t| t.map(|n| n + offset)));
-        zone_block.extend(std::iter::repeat_n(b as u32, m.triangles.len()));
+        let (t, owner) = if meshed.modes[b] == BlockMode::Deformable {
+            (&mut tris, &mut zone_block)
+        } else {
+            (&mut outline, &mut outline_block)
+        };
+        t.extend(m.triangles.iter().map(|t| t.map(|n| n + offset)));
+        owner.extend(std::iter::repeat_n(b as u32, m.triangles.len()));
         for e in &m.boundary {
             let nodes = e.nodes.map(|n| n + offset);
             blocks.edges.push(nodes);
@@ -94,9 +105,74 @@ fn assemble(meshed: &Meshed) -> Assembled {
         pos,
         triangles: tris,
         zone_block,
+        outline,
+        outline_block,
         blocks,
         boundary,
     }
+}
+
+/// The rigid and simple blocks of `modes` as bodies: centroid, area and radius from the polygon,
+/// weight ρ A g, the in-situ stress at the centroid for a simple block, fixity from the boundary
+/// conditions on their nodes (any fixed node holds the block's rotation and strain, and the
+/// translation components it names); their nodes are marked `BODY`.
+fn bodies(
+    modes: &[BlockMode],
+    blocks: &Blocks,
+    nodes: &mut Nodes,
+    material: MaterialId,
+    law: &dyn ZoneLaw,
+    stress_at: impl Fn([f64; 2]) -> [f64; 4],
+    gravity: [f64; 2],
+) -> Bodies {
+    let mut out = Bodies {
+        of_node: vec![NO_BODY; nodes.len()],
+        ..Default::default()
+    };
+    for (b, &mode) in modes.iter().enumerate() {
+        let mode = match mode {
+            BlockMode::Deformable => continue,
+            BlockMode::Rigid => BodyMode::Rigid,
+            BlockMode::Simple => BodyMode::Simple,
+        };
+        let k = out.len() as u32;
+        let range = [blocks.node_start[b], blocks.node_start[b + 1]];
+        let m = polygon_moments(blocks.edge_range(b).map(|e| {
+            let [p, q] = blocks.edges[e];
+            (nodes.pos[p as usize], nodes.pos[q as usize])
+        }));
+        let c = m.centroid;
+        let (mut radius, mut fixed) = (0.0f64, 0u8);
+        for n in range[0] as usize..range[1] as usize {
+            let p = nodes.pos[n];
+            radius = radius.max((p[0] - c[0]).hypot(p[1] - c[1]));
+            if nodes.fixed[n] != 0 {
+                fixed |= nodes.fixed[n] | FIX_SPIN;
+            }
+            nodes.fixed[n] |= BODY;
+            out.of_node[n] = k;
+        }
+        let mass = law.density() * m.area;
+        out.block.push(b as u32);
+        out.mode.push(mode);
+        out.nodes.push(range);
+        out.centroid.push(c);
+        out.velocity.push([0.0; DOFS]);
+        out.mass.push(m.masses(law.density()));
+        out.force.push([0.0; DOFS]);
+        out.weight.push([mass * gravity[0], mass * gravity[1]]);
+        out.area.push(m.area);
+        out.radius.push(radius);
+        out.material.push(material);
+        out.stress.push(match mode {
+            BodyMode::Simple => stress_at(c),
+            BodyMode::Rigid => [0.0; 4],
+        });
+        out.state.push(0);
+        out.fixed.push(fixed);
+        out.step.push((c, c, [1.0, 0.0, 0.0, 1.0]));
+    }
+    out
 }
 
 /// Build the model of a validated scene.
@@ -107,6 +183,8 @@ pub fn build(scene: &Scene) -> anyhow::Result<Built> {
         pos,
         triangles: tris,
         zone_block,
+        outline,
+        outline_block,
         blocks,
         boundary,
     } = assemble(&meshed);
@@ -166,12 +244,36 @@ pub fn build(scene: &Scene) -> anyhow::Result<Built> {
         });
     }
 
+    let mut bodies = bodies(
+        &meshed.modes,
+        &blocks,
+        &mut nodes,
+        MaterialId(region_mat as u32),
+        laws[region_mat].as_ref(),
+        |c| in_situ_stress(&scene.in_situ, c[1], poisson),
+        scene.gravity,
+    );
+    let body_of_block: BTreeMap<u32, u32> = bodies
+        .block
+        .iter()
+        .enumerate()
+        .map(|(k, &b)| (b, k as u32))
+        .collect();
+    bodies.outline = outline;
+    bodies.outline_body = outline_block.iter().map(|b| body_of_block[b]).collect();
+
     // Joint laws, and the material of each joint feature (sets first, then explicit joints).
     let joint_material_names: Vec<String> = scene.joint_materials.keys().cloned().collect();
     let joint_laws: Vec<Box<dyn JointLaw>> = scene
         .joint_materials
         .values()
         .map(|j| {
+            if j.glued {
+                return Box::new(Glued {
+                    normal_stiffness: j.normal_stiffness,
+                    shear_stiffness: j.shear_stiffness,
+                }) as Box<dyn JointLaw>;
+            }
             Box::new(CoulombSlip {
                 normal_stiffness: j.normal_stiffness,
                 shear_stiffness: j.shear_stiffness,
@@ -205,8 +307,15 @@ pub fn build(scene: &Scene) -> anyhow::Result<Built> {
         blocks.len()
     );
 
-    // Joints present from the start are intact and carry the in-situ traction.
+    // Joints present from the start are intact and carry the in-situ traction; corner contacts
+    // (blocks meeting at a point, not along a joint) start unstressed, without strength.
     let in_situ_joint = |t: &Touch| {
+        if !t.face {
+            return JointState {
+                flags: FAILED,
+                ..Default::default()
+            };
+        }
         let s = in_situ_stress(&scene.in_situ, t.point[1], poisson);
         let n = t.normal;
         let tangent = [-n[1], n[0]];
@@ -257,6 +366,7 @@ pub fn build(scene: &Scene) -> anyhow::Result<Built> {
         material_names,
         size,
         blocks,
+        bodies,
         contacts,
         contact_gather,
         joint_laws,

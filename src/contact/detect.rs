@@ -32,6 +32,9 @@ pub struct Touch {
     pub normal: [f64; 2],
     /// Signed gap, m (negative: overlap).
     pub gap: f64,
+    /// Whether the node's boundary runs along the other block (a face contact) rather than only
+    /// touching it at a point (a corner contact, as between diagonal blocks at a joint crossing).
+    pub face: bool,
 }
 
 /// A node and an edge make a contact only if the outward normal of one of the node's edges and the
@@ -160,6 +163,7 @@ fn node_to_edge(d: &Detection, a: usize, b: usize) -> Vec<Found> {
                             point: q,
                             normal,
                             gap,
+                            face: false,
                         },
                     ),
                 ));
@@ -172,30 +176,45 @@ fn node_to_edge(d: &Detection, a: usize, b: usize) -> Vec<Found> {
     found
 }
 
-/// Length of joint a contact at `node` stands for: half of each boundary edge from the node to a
-/// neighbour that touches the same block, halved again because both sides of a joint carry
-/// contacts (together they cover it once). A lone contact (a corner against a face) takes a quarter
-/// of its shorter edge, halved likewise.
-fn contact_length(d: &Detection, node: u32, touches: impl Fn(u32) -> bool) -> f64 {
+/// Length of joint a contact at `node` against block `b` stands for: half of each boundary edge
+/// at the node whose midpoint lies within the tolerance of block b's boundary (the edge runs along
+/// b), halved again because both sides of a joint carry contacts (together they cover it once).
+/// A corner contact, whose edges both leave b (diagonal blocks at a joint crossing, a corner
+/// against a face), takes a quarter of its shorter edge, halved likewise. Returns the length, m,
+/// and whether it is a face contact.
+fn contact_length(d: &Detection, node: u32, b: usize) -> (f64, bool) {
     let (mut shared, mut shortest) = (0.0, f64::INFINITY);
     for &e in d.blocks.node_edges[node as usize]
         .iter()
         .filter(|&&e| e != NO_EDGE)
     {
-        let [a, b] = d.blocks.edges[e as usize];
-        let other = if a == node { b } else { a };
-        let (p, q) = (d.x[a as usize], d.x[b as usize]);
+        let [p, q] = d.blocks.edges[e as usize].map(|n| d.x[n as usize]);
         let len = (q[0] - p[0]).hypot(q[1] - p[1]);
         shortest = shortest.min(len);
-        if touches(other) {
+        let mid = [0.5 * (p[0] + q[0]), 0.5 * (p[1] + q[1])];
+        if distance_to_block(d, mid, b) <= d.tolerance {
             shared += 0.5 * len;
         }
     }
-    0.5 * if shared > 0.0 {
-        shared
+    if shared > 0.0 {
+        (0.5 * shared, true)
     } else {
-        0.25 * shortest
+        (0.5 * 0.25 * shortest, false)
     }
+}
+
+/// Distance from `p` to the boundary of block `b`, m.
+fn distance_to_block(d: &Detection, p: [f64; 2], b: usize) -> f64 {
+    d.blocks
+        .edge_range(b)
+        .map(|e| {
+            let [a, c] = d.blocks.edges[e].map(|n| d.x[n as usize]);
+            let t = [c[0] - a[0], c[1] - a[1]];
+            let s = (((p[0] - a[0]) * t[0] + (p[1] - a[1]) * t[1]) / (t[0] * t[0] + t[1] * t[1]))
+                .clamp(0.0, 1.0);
+            (p[0] - a[0] - s * t[0]).hypot(p[1] - a[1] - s * t[1])
+        })
+        .fold(f64::INFINITY, f64::min)
 }
 
 /// Outward unit normals of the (up to two) boundary edges meeting at node `n`.
@@ -260,10 +279,9 @@ pub fn detect(
         .collect();
     let mut out = Contacts::default();
     for list in per_pair {
-        let touching: std::collections::HashSet<(u32, u32)> =
-            list.iter().map(|(f, b)| (f.0, *b)).collect();
-        for ((node, edge, xi, touch), block_b) in list {
-            let length = contact_length(d, node, |m| touching.contains(&(m, block_b)));
+        for ((node, edge, xi, mut touch), block_b) in list {
+            let (length, face) = contact_length(d, node, block_b as usize);
+            touch.face = face;
             let state = match history.get(&(node, block_b)) {
                 Some(&c) => previous.state[c],
                 None => fresh(&touch),

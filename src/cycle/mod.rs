@@ -2,6 +2,7 @@
 //! contact forces, zone forces, motion; the monitor runs every few cycles. The `Cycle` owns only
 //! scratch space, the detection trigger and stage timers. Structural forces join with supports.
 
+mod bodies;
 mod contacts;
 pub mod monitor;
 pub mod timestep;
@@ -11,7 +12,7 @@ use std::time::Instant;
 use rayon::prelude::*;
 
 use crate::law::StrainIncrement;
-use crate::model::{FIX_X, FIX_Y, Model};
+use crate::model::{BODY, FIX_X, FIX_Y, Model};
 
 pub use monitor::Monitor;
 
@@ -67,7 +68,7 @@ impl Cycle {
         let t2 = Instant::now();
         self.zone_forces(model, p);
         let t3 = Instant::now();
-        let speed = self.motion(model, p);
+        let speed = self.motion(model, p).max(self.body_motion(model, p));
         self.moved += speed * p.dt;
         let t4 = Instant::now();
         self.seconds.detect += (t1 - t0).as_secs_f64();
@@ -154,6 +155,10 @@ impl Cycle {
                     let c = cf[s as usize];
                     f[0] += c[0];
                     f[1] += c[1];
+                }
+                if fixed & BODY != 0 {
+                    *force = f;
+                    return 0.0;
                 }
                 for (d, flag) in [(0, FIX_X), (1, FIX_Y)] {
                     if fixed & flag != 0 {

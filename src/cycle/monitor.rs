@@ -56,6 +56,19 @@ impl Cycle {
             gross += g;
             kinetic += k;
         }
+        // Rigid and simple blocks: their unbalanced force, moments and strain forces over their
+        // radius, their weight as gross force, ½ Σ M q̇² as kinetic energy.
+        let b = &model.bodies;
+        for k in 0..b.len() {
+            let (q, l) = (b.force[k], b.radius[k]);
+            let turning = q[2..].iter().fold(0.0f64, |m, x| m.max(x.abs() / l));
+            max_force = max_force.max(q[0].hypot(q[1]).max(turning));
+            gross += b.weight[k][0].hypot(b.weight[k][1]);
+            let (v, m) = (b.velocity[k], b.mass[k]);
+            kinetic += (0..b.mode[k].dofs())
+                .map(|d| 0.5 * m[d] * v[d] * v[d])
+                .sum::<f64>();
+        }
         if !(max_force.is_finite() && kinetic.is_finite()) {
             return Err(self.first_bad(model));
         }
@@ -84,6 +97,22 @@ impl Cycle {
     }
 
     fn first_bad(&self, model: &Model) -> String {
+        let bodies = &model.bodies;
+        if let Some(k) = (0..bodies.len()).find(|&k| {
+            bodies.velocity[k]
+                .iter()
+                .chain(&bodies.force[k])
+                .any(|v| !v.is_finite())
+        }) {
+            let c = bodies.centroid[k];
+            return format!(
+                "non-finite velocity or force of {} block {} at ({:.4}, {:.4})",
+                bodies.mode[k].label(),
+                bodies.block[k],
+                c[0],
+                c[1]
+            );
+        }
         let contacts = &model.contacts;
         if let Some(c) = contacts
             .state

@@ -7,6 +7,7 @@
 //! masses instead (m_i = R_i/(4 s²), Δt = 1), as FLAC's mass scaling for static solutions
 //! (Itasca, FLAC *Theory and Background*, §1.3.5; Cundall 1982).
 
+use crate::model::bodies::{BodyMode, DOFS, Dof, Moments, polygon_moments, velocity_map};
 use crate::model::{Model, NodeId, Zones};
 
 /// What the step derivation found.
@@ -14,8 +15,11 @@ use crate::model::{Model, NodeId, Zones};
 pub struct StepLimit {
     /// Critical step with real masses, s.
     pub dt_critical: f64,
-    /// Node whose stiffness-to-mass ratio sets the critical step.
+    /// Node whose stiffness-to-mass ratio sets the critical step (the first node of the limiting
+    /// block when a rigid or simple block sets it).
     pub limiting_node: NodeId,
+    /// The rigid or simple block that sets the critical step, if one does.
+    pub limiting_block: Option<u32>,
 }
 
 /// Element stiffness K = A Bᵀ D B of a plane-strain CST with moduli α1 = K + 4G/3, α2 = K − 2G/3, G;
@@ -104,12 +108,13 @@ pub fn lumped_masses(model: &Model) -> Vec<f64> {
     m
 }
 
-/// The critical time step with real masses and the node that sets it.
+/// The critical time step with real masses and the node that sets it (nodes without mass, those of
+/// rigid and simple blocks, are left to `body_step`).
 pub fn critical_step(stiffness: &[f64], masses: &[f64]) -> StepLimit {
     let (node, ratio) = stiffness
         .iter()
         .zip(masses)
-        .map(|(r, m)| r / m)
+        .map(|(r, m)| if *m > 0.0 { r / m } else { 0.0 })
         .enumerate()
         .fold(
             (0, 0.0f64),
@@ -118,6 +123,94 @@ pub fn critical_step(stiffness: &[f64], masses: &[f64]) -> StepLimit {
     StepLimit {
         dt_critical: 2.0 / ratio.sqrt(),
         limiting_node: NodeId(node as u32),
+        limiting_block: None,
+    }
+}
+
+/// Current area, centroid and second moments of body k's block.
+pub fn body_moments(model: &Model, k: usize) -> Moments {
+    let (blocks, nodes) = (&model.blocks, &model.nodes);
+    let x = |n: u32| {
+        let (p, u) = (nodes.pos[n as usize], nodes.disp[n as usize]);
+        [p[0] + u[0], p[1] + u[1]]
+    };
+    let b = model.bodies.block[k] as usize;
+    polygon_moments(blocks.edge_range(b).map(|e| {
+        let [a, c] = blocks.edges[e];
+        (x(a), x(c))
+    }))
+}
+
+/// Stiffness bounds D (one per DOF) of each body: the body's DOFs drive its nodes through
+/// v_i = T_i q̇, so the reduced stiffness is at most S = Σ_i R_i T_iᵀT_i (R_i the node's Gershgorin
+/// bound), plus A·[[K+4G/3, K−2G/3, 0], [K−2G/3, K+4G/3, 0], [0, 0, 4G]] on a simple block's strain
+/// rates. With |T| bounded entrywise by |r_i| and weights w = (1, 1, 1/ℓ, …) (ℓ the block's radius),
+/// D_k = Σ_l |S_kl| w_l / w_k ≥ S in the PSD sense (weighted Gershgorin), so ω² ≤ max_k D_k/M_k
+/// for a diagonal mass M.
+pub fn body_stiffness(model: &Model, nodal: &[f64]) -> Vec<Dof> {
+    let bodies = &model.bodies;
+    (0..bodies.len())
+        .map(|k| {
+            let ell = bodies.radius[k];
+            let c = bodies.centroid[k];
+            let mut s = [[0.0f64; DOFS]; DOFS];
+            let range = bodies.nodes[k][0] as usize..bodies.nodes[k][1] as usize;
+            for (n, &r_n) in range.clone().zip(&nodal[range]) {
+                let (p, u) = (model.nodes.pos[n], model.nodes.disp[n]);
+                let rho = (p[0] + u[0] - c[0]).hypot(p[1] + u[1] - c[1]);
+                let t = velocity_map([rho, rho]).map(|row| row.map(f64::abs));
+                for a in 0..DOFS {
+                    for b in 0..DOFS {
+                        s[a][b] += r_n * (t[0][a] * t[0][b] + t[1][a] * t[1][b]);
+                    }
+                }
+            }
+            let dofs = bodies.mode[k].dofs();
+            if bodies.mode[k] == BodyMode::Simple {
+                let (kb, g) = model.laws[bodies.material[k].0 as usize].moduli();
+                let (a1, a2, area) = (kb + 4.0 / 3.0 * g, kb - 2.0 / 3.0 * g, bodies.area[k]);
+                s[3][3] += area * a1;
+                s[4][4] += area * a1;
+                s[3][4] += area * a2;
+                s[4][3] += area * a2;
+                s[5][5] += area * 4.0 * g;
+            }
+            let w = |d: usize| if d < 2 { 1.0 } else { 1.0 / ell };
+            std::array::from_fn(|a| {
+                if a >= dofs {
+                    return 0.0;
+                }
+                (0..dofs).map(|b| s[a][b].abs() * w(b) / w(a)).sum()
+            })
+        })
+        .collect()
+}
+
+/// Real diagonal generalised masses of each body (its density over its current polygon).
+pub fn body_masses(model: &Model) -> Vec<Dof> {
+    (0..model.bodies.len())
+        .map(|k| {
+            let rho = model.laws[model.bodies.material[k].0 as usize].density();
+            body_moments(model, k).masses(rho)
+        })
+        .collect()
+}
+
+/// Tighten `limit` by the bodies: Δt_crit = 2/√(max_k D_k/M_k) over each body's DOFs.
+pub fn body_step(model: &Model, stiffness: &[Dof], masses: &[Dof], limit: &mut StepLimit) {
+    for k in 0..model.bodies.len() {
+        let dofs = model.bodies.mode[k].dofs();
+        let w2 = (0..dofs)
+            .map(|d| stiffness[k][d] / masses[k][d])
+            .fold(0.0, f64::max);
+        let dt = 2.0 / w2.sqrt();
+        if dt < limit.dt_critical {
+            *limit = StepLimit {
+                dt_critical: dt,
+                limiting_node: NodeId(model.bodies.nodes[k][0]),
+                limiting_block: Some(model.bodies.block[k]),
+            };
+        }
     }
 }
 

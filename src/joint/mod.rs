@@ -1,8 +1,10 @@
 //! Joint constitutive laws behind one small trait; each law is one file.
 
 mod coulomb;
+mod glued;
 
 pub use coulomb::{CoulombSlip, tan_deg};
+pub use glued::Glued;
 
 /// Bit flag of `JointState::flags`: the joint is slipping now.
 pub const SLIPPING: u8 = 1;

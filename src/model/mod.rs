@@ -2,10 +2,11 @@
 //! typed ids. Stages of the cycle borrow the parts they need.
 
 pub mod blocks;
+pub mod bodies;
 pub mod nodes;
 pub mod zones;
 
-pub use nodes::{FIX_X, FIX_Y, Nodes};
+pub use nodes::{BODY, FIX_X, FIX_Y, Nodes};
 pub use zones::{Stress, Zones, traction};
 
 use crate::contact::Contacts;
@@ -61,7 +62,8 @@ impl Gather {
     }
 }
 
-/// Everything a run evolves: nodes, zones, zone laws and the gather table.
+/// Everything a run evolves: nodes, zones, rigid and simple blocks, contacts, their laws and the
+/// gather tables.
 pub struct Model {
     pub nodes: Nodes,
     pub zones: Zones,
@@ -73,6 +75,8 @@ pub struct Model {
     /// Largest extent of the model, m (a length scale for runaway checks).
     pub size: f64,
     pub blocks: blocks::Blocks,
+    /// Rigid and simple blocks (deformable blocks have zones instead).
+    pub bodies: bodies::Bodies,
     pub contacts: Contacts,
     /// For each node, the slots of the contact-force buffer acting on it (contact·3 + role).
     pub contact_gather: Gather,

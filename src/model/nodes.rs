@@ -5,6 +5,8 @@
 pub const FIX_X: u8 = 1;
 /// Bit flag: y velocity fixed.
 pub const FIX_Y: u8 = 2;
+/// Bit flag: the node belongs to a rigid or simple block and moves with it (`cycle::bodies`).
+pub const BODY: u8 = 4;
 
 /// Structure-of-arrays node state.
 #[derive(Debug, Clone, Default)]
@@ -21,7 +23,7 @@ pub struct Nodes {
     pub mass: Vec<f64>,
     /// Applied force: boundary tractions and gravity, N/m.
     pub applied: Vec<[f64; 2]>,
-    /// Fixity bit flags (`FIX_X`, `FIX_Y`).
+    /// Fixity bit flags (`FIX_X`, `FIX_Y`, `BODY`).
     pub fixed: Vec<u8>,
 }
 

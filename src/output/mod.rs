@@ -99,11 +99,16 @@ pub struct Summary {
     pub zones: usize,
     pub nodes: usize,
     pub blocks: usize,
+    /// Blocks in rigid and in simple mode (the rest are deformable).
+    pub rigid_blocks: usize,
+    pub simple_blocks: usize,
     pub contacts: usize,
     pub cycles: u64,
     pub wall_seconds: f64,
     pub stage_seconds: StageSeconds,
     pub zone_cycles_per_second: f64,
+    /// Blocks × cycles per second of cycling, the figure of merit of rigid and simple blocks.
+    pub block_cycles_per_second: f64,
     pub final_ratio: f64,
     /// `converged`, `cycle_limit` or `failed`.
     pub status: String,
@@ -115,6 +120,8 @@ pub struct Summary {
     /// Critical time step with real masses, s, and the node that sets it.
     pub critical_timestep: f64,
     pub critical_node: u32,
+    /// The rigid or simple block that sets the critical time step, if one does.
+    pub critical_block: Option<u32>,
     /// Smallest zone angle, degrees.
     pub min_zone_angle: f64,
     /// What building the model found worth a warning (sliver blocks, absorbed joints).

@@ -1,4 +1,5 @@
-//! Zone results as a binary XML unstructured grid (`.vtu`, vtkio): one triangle cell per zone at
+//! Zone results as a binary XML unstructured grid (`.vtu`, vtkio): one triangle cell per zone (and
+//! per outline triangle of a rigid or simple block) at
 //! its original position, with stress, principal stresses, block, material and state per cell and
 //! displacement and velocity per point (the output contract of `design.md`).
 
@@ -18,18 +19,59 @@ pub fn principal(s: &Stress) -> (f64, f64) {
     ((c - r).min(s[2]), (c + r).max(s[2]))
 }
 
+/// One cell of the zone grid: a zone of a deformable block, or an outline triangle of a rigid or
+/// simple block (carrying its block's uniform stress; zero for a rigid block).
+struct Cell {
+    nodes: [u32; 3],
+    stress: Stress,
+    block: u32,
+    material: u32,
+    state: u8,
+}
+
+/// The zones, then the rigid and simple blocks' outline triangles.
+fn cells(model: &Model) -> impl Iterator<Item = Cell> + '_ {
+    let (z, b) = (&model.zones, &model.bodies);
+    let zones = (0..z.len()).map(move |i| Cell {
+        nodes: z.nodes[i],
+        stress: z.stress[i],
+        block: z.block[i],
+        material: z.material[i].0,
+        state: z.state[i],
+    });
+    let outlines = b.outline.iter().zip(&b.outline_body).map(move |(t, &k)| {
+        let k = k as usize;
+        Cell {
+            nodes: *t,
+            stress: b.stress[k],
+            block: b.block[k],
+            material: b.material[k].0,
+            state: b.state[k],
+        }
+    });
+    zones.chain(outlines)
+}
+
 /// The zone grid of `model` as XML text.
 pub fn zones_vtu(model: &Model) -> Result<Vec<u8>, vtkio::Error> {
-    let (nodes, zones) = (&model.nodes, &model.zones);
+    let nodes = &model.nodes;
+    let cells: Vec<Cell> = cells(model).collect();
     let points: Vec<f64> = nodes.pos.iter().flat_map(|p| [p[0], p[1], 0.0]).collect();
-    let connectivity: Vec<u64> = zones.nodes.iter().flatten().map(|&n| n as u64).collect();
-    let offsets: Vec<u64> = (1..=zones.len() as u64).map(|k| 3 * k).collect();
-    let stress: Vec<f64> = zones
-        .stress
+    let connectivity: Vec<u64> = cells
         .iter()
-        .flat_map(|s| [s[0], s[3], 0.0, s[3], s[1], 0.0, 0.0, 0.0, s[2]])
+        .flat_map(|c| c.nodes)
+        .map(|n| n as u64)
         .collect();
-    let (sigma1, sigma3): (Vec<f64>, Vec<f64>) = zones.stress.iter().map(principal).unzip();
+    let offsets: Vec<u64> = (1..=cells.len() as u64).map(|k| 3 * k).collect();
+    let stress: Vec<f64> = cells
+        .iter()
+        .flat_map(|c| {
+            let s = c.stress;
+            [s[0], s[3], 0.0, s[3], s[1], 0.0, 0.0, 0.0, s[2]]
+        })
+        .collect();
+    let (sigma1, sigma3): (Vec<f64>, Vec<f64>) = cells.iter().map(|c| principal(&c.stress)).unzip();
+    let int = |f: &dyn Fn(&Cell) -> i32| -> Vec<i32> { cells.iter().map(f).collect() };
     let vec3 = |v: &[[f64; 2]]| -> Vec<f64> { v.iter().flat_map(|p| [p[0], p[1], 0.0]).collect() };
     let piece = UnstructuredGridPiece {
         points: points.into(),
@@ -38,7 +80,7 @@ pub fn zones_vtu(model: &Model) -> Result<Vec<u8>, vtkio::Error> {
                 connectivity,
                 offsets,
             },
-            types: vec![CellType::Triangle; zones.len()],
+            types: vec![CellType::Triangle; cells.len()],
         },
         data: Attributes {
             point: vec![
@@ -49,17 +91,9 @@ pub fn zones_vtu(model: &Model) -> Result<Vec<u8>, vtkio::Error> {
                 Attribute::generic("stress", 9).with_data(stress),
                 Attribute::generic("sigma1", 1).with_data(sigma1),
                 Attribute::generic("sigma3", 1).with_data(sigma3),
-                Attribute::generic("block", 1)
-                    .with_data(zones.block.iter().map(|&b| b as i32).collect::<Vec<i32>>()),
-                Attribute::generic("material", 1).with_data(
-                    zones
-                        .material
-                        .iter()
-                        .map(|m| m.0 as i32)
-                        .collect::<Vec<i32>>(),
-                ),
-                Attribute::generic("state", 1)
-                    .with_data(zones.state.iter().map(|&s| s as i32).collect::<Vec<i32>>()),
+                Attribute::generic("block", 1).with_data(int(&|c| c.block as i32)),
+                Attribute::generic("material", 1).with_data(int(&|c| c.material as i32)),
+                Attribute::generic("state", 1).with_data(int(&|c| c.state as i32)),
             ],
         },
     };

@@ -37,6 +37,9 @@ pub struct Scene {
     pub voronoi: Option<VoronoiSpec>,
     #[serde(default)]
     pub contacts: ContactSpec,
+    /// Block modes: deformable, simple or rigid, for all blocks or by region.
+    #[serde(default)]
+    pub blocks: BlocksSpec,
     #[serde(default)]
     pub in_situ: InSitu,
     /// Gravitational acceleration (m/s²), as a vector; default none.
@@ -125,6 +128,10 @@ pub struct JointMaterial {
     /// Dilation angle, degrees (default 0).
     #[serde(default)]
     pub dilation: f64,
+    /// A glued joint (construction joint): elastic springs that never slip or open; friction,
+    /// cohesion, tensile strength and dilation are then unused (default false).
+    #[serde(default)]
+    pub glued: bool,
 }
 
 fn default_friction() -> f64 {
@@ -196,6 +203,40 @@ pub struct ContactSpec {
     /// Largest gap at which a node and an edge make a contact, m (default 5 % of
     /// `zoning.edge_at_excavation`); detection reruns once anything has moved half of it.
     pub tolerance: Option<f64>,
+}
+
+/// How blocks move: `deformable` (zones), `simple` (rigid motion plus one uniform strain, 6 DOF)
+/// or `rigid` (3 DOF).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum BlockMode {
+    #[default]
+    Deformable,
+    Simple,
+    Rigid,
+}
+
+/// Block modes of a scene: one for all blocks, overridden by region (later entries win).
+#[derive(Debug, Clone, Default, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct BlocksSpec {
+    /// Mode of every block not in a listed region (default `deformable`).
+    pub mode: BlockMode,
+    /// Modes by region: blocks whose centroid lies inside `polygon`, or the block containing `at`.
+    pub regions: Vec<ModeRegion>,
+}
+
+/// A block mode for the blocks of one region or the block at one point.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ModeRegion {
+    pub mode: BlockMode,
+    /// Polygon (m): blocks whose centroid lies inside take the mode.
+    #[serde(default)]
+    pub polygon: Option<Vec<[f64; 2]>>,
+    /// Point (m): the block containing it takes the mode.
+    #[serde(default)]
+    pub at: Option<[f64; 2]>,
 }
 
 /// Zoning controls.

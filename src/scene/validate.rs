@@ -189,6 +189,17 @@ impl Scene {
         if let Some(t) = self.contacts.tolerance {
             positive("contacts.tolerance", t)?;
         }
+        for (i, r) in self.blocks.regions.iter().enumerate() {
+            let p = format!("blocks.regions[{i}]");
+            match (&r.polygon, &r.at) {
+                (Some(poly), None) if poly.len() >= 3 => {}
+                (Some(_), None) => {
+                    return Err(invalid(format!("{p}.polygon"), "needs at least 3 vertices"));
+                }
+                (None, Some(_)) => {}
+                _ => return Err(invalid(p, "give exactly one of `polygon` and `at`")),
+            }
+        }
         let s = &self.in_situ;
         for (f, v) in [
             ("sxx", s.sxx),

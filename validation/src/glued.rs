@@ -1,5 +1,5 @@
 //! Glued-joint consistency: the Kirsch problem with the domain cut by two joint sets whose joints
-//! are glued (strength far above any stress) must reproduce the intact solution as the joint
+//! are glued (`glued: true`: springs that never slip or open) must reproduce the intact solution as the joint
 //! stiffness grows. Reported against the joint normal stiffness.
 
 use adit::Scene;
@@ -17,9 +17,10 @@ pub fn glued_scene(kirsch: &Scene, k: f64) -> Scene {
             normal_stiffness: k,
             shear_stiffness: k,
             friction: 45.0,
-            cohesion: 1e12,
-            tensile_strength: 1e12,
+            cohesion: 0.0,
+            tensile_strength: 0.0,
             dilation: 0.0,
+            glued: true,
         },
     );
     let set = |dip: f64, spacing: f64, origin: [f64; 2]| JointSetSpec {

@@ -1,4 +1,5 @@
-//! A block on an incline (deformable mode): gravity tilted by α over a horizontal joint. With
+//! A block on an incline, in each block mode (deformable, simple, rigid; the base stays
+//! deformable and fixed): gravity tilted by α over a horizontal joint. With
 //! friction φ < α the block slides with x(t) = ½ g (sin α − cos α tan φ) t² (Newton's second law
 //! with Coulomb friction); with φ > α it holds. The block first settles under its weight on a
 //! joint that cannot slip (static, damped); then the joint takes its friction and the run goes on
@@ -10,6 +11,7 @@ use adit::Scene;
 use adit::build::build;
 use adit::joint::{CoulombSlip, tan_deg};
 use adit::model::{FIX_X, FIX_Y};
+use adit::scene::BlockMode;
 use adit::solve::{Quiet, Solver, Status};
 
 use crate::report::CaseReport;
@@ -17,7 +19,7 @@ use crate::settle;
 
 const G: f64 = 9.81;
 
-fn scene(alpha_deg: f64, h: f64) -> Scene {
+fn scene(alpha_deg: f64, h: f64, mode: BlockMode) -> Scene {
     let a = alpha_deg.to_radians();
     let text = format!(
         r#"{{
@@ -29,20 +31,37 @@ fn scene(alpha_deg: f64, h: f64) -> Scene {
         "joint_materials": {{ "plane": {{ "normal_stiffness": 1e11, "shear_stiffness": 1e11, "friction": 80 }} }},
         "joints": [{{ "from": [2, 1], "to": [3, 1], "material": "plane" }}],
         "gravity": [{gx}, {gy}],
+        "blocks": {{ "regions": [{{ "at": [2.5, 1.25], "mode": "{mode}" }}] }},
         "solve": {{ "ratio": 1e-7, "max_cycles": 400000 }}
     }}"#,
         gx = G * a.sin(),
-        gy = -G * a.cos()
+        gy = -G * a.cos(),
+        mode = mode_name(mode)
     );
     Scene::from_json(&text, "incline scene").expect("valid incline scene")
+}
+
+/// The scene name of a block mode.
+pub fn mode_name(mode: BlockMode) -> &'static str {
+    match mode {
+        BlockMode::Deformable => "deformable",
+        BlockMode::Simple => "simple",
+        BlockMode::Rigid => "rigid",
+    }
 }
 
 /// Slide (or hold) the block for `duration` seconds with friction `phi_deg` on a slope `alpha_deg`;
 /// error: largest |x_h(t) − x(t)| over the samples relative to the final exact slide (sliding), or
 /// final displacement relative to what sliding without friction would give (holding).
-pub fn run(alpha_deg: f64, phi_deg: f64, duration: f64, h: f64) -> anyhow::Result<CaseReport> {
+pub fn run(
+    alpha_deg: f64,
+    phi_deg: f64,
+    duration: f64,
+    h: f64,
+    mode: BlockMode,
+) -> anyhow::Result<CaseReport> {
     let start = Instant::now();
-    let mut sc = scene(alpha_deg, h);
+    let mut sc = scene(alpha_deg, h, mode);
     let mut b = build(&sc)?;
     anyhow::ensure!(b.model.blocks.len() == 2, "expected a base and a block");
     // The base (block owning the node at the origin) is held fixed.
@@ -69,6 +88,9 @@ pub fn run(alpha_deg: f64, phi_deg: f64, duration: f64, h: f64) -> anyhow::Resul
     });
     for v in &mut b.model.nodes.vel {
         *v = [0.0; 2];
+    }
+    for v in &mut b.model.bodies.velocity {
+        *v = [0.0; 6];
     }
     sc.solve.mode = adit::scene::SolveMode::Dynamic;
     sc.solve.damping = 0.0;
@@ -108,7 +130,10 @@ pub fn run(alpha_deg: f64, phi_deg: f64, duration: f64, h: f64) -> anyhow::Resul
     let wall_s = start.elapsed().as_secs_f64();
     let zones = b.model.zones.len();
     let error = if accel > 0.0 { worst } else { last.abs() } / scale;
-    let case = format!("block on a {alpha_deg}° incline, φ = {phi_deg}°: {name} (deformable)");
+    let case = format!(
+        "block on a {alpha_deg}° incline, φ = {phi_deg}°: {name} ({})",
+        mode_name(mode)
+    );
     Ok(CaseReport::new(
         case,
         zones,
@@ -124,17 +149,23 @@ mod tests {
     use super::*;
 
     /// Long enough (0.23 m) for the block to pass over base nodes (0.2 m apart) without snagging.
+    const MODES: [BlockMode; 3] = [BlockMode::Deformable, BlockMode::Simple, BlockMode::Rigid];
+
     #[test]
-    fn block_slides_down_a_steeper_incline() {
-        let r = run(30.0, 20.0, 0.5, 0.2).unwrap();
-        eprintln!("{r:?}");
-        assert!(r.errors["displacement"] < 0.02, "{r:?}");
+    fn block_slides_down_a_steeper_incline_in_every_mode() {
+        for mode in MODES {
+            let r = run(30.0, 20.0, 0.5, 0.2, mode).unwrap();
+            eprintln!("{r:?}");
+            assert!(r.errors["displacement"] < 0.02, "{r:?}");
+        }
     }
 
     #[test]
-    fn block_holds_on_a_gentler_incline() {
-        let r = run(30.0, 40.0, 0.2, 0.25).unwrap();
-        eprintln!("{r:?}");
-        assert!(r.errors["displacement"] < 0.02, "{r:?}");
+    fn block_holds_on_a_gentler_incline_in_every_mode() {
+        for mode in MODES {
+            let r = run(30.0, 40.0, 0.2, 0.25, mode).unwrap();
+            eprintln!("{r:?}");
+            assert!(r.errors["displacement"] < 0.02, "{r:?}");
+        }
     }
 }
