@@ -16,12 +16,14 @@ pub use geometry::{Meshed, domain, joint_segments, mesh, zoning};
 
 use crate::contact::Contacts;
 use crate::contact::detect::{Detection, Touch, detect};
-use crate::joint::{CoulombSlip, FAILED, Glued, JointLaw, JointState, tan_deg};
+use crate::joint::{
+    ContinuouslyYielding, CoulombSlip, FAILED, Glued, JointLaw, JointState, tan_deg,
+};
 use crate::law::{Elastic, ZoneLaw};
 use crate::model::blocks::{Blocks, NO_EDGE};
 use crate::model::bodies::{Bodies, BodyMode, DOFS, FIX_SPIN, NO_BODY, polygon_moments};
 use crate::model::{BODY, Gather, MaterialId, Model, Nodes, Zones, traction};
-use crate::scene::{BlockMode, InSitu, Scene};
+use crate::scene::{BlockMode, InSitu, JointLawKind, Scene};
 
 /// A model ready to cycle, with what was learnt while building it.
 pub struct Built {
@@ -267,21 +269,29 @@ pub fn build(scene: &Scene) -> anyhow::Result<Built> {
     let joint_laws: Vec<Box<dyn JointLaw>> = scene
         .joint_materials
         .values()
-        .map(|j| {
-            if j.glued {
-                return Box::new(Glued {
-                    normal_stiffness: j.normal_stiffness,
-                    shear_stiffness: j.shear_stiffness,
-                }) as Box<dyn JointLaw>;
+        .map(|j| -> Box<dyn JointLaw> {
+            let (normal_stiffness, shear_stiffness) = (j.normal_stiffness, j.shear_stiffness);
+            match j.law {
+                JointLawKind::Glued => Box::new(Glued {
+                    normal_stiffness,
+                    shear_stiffness,
+                }),
+                JointLawKind::Coulomb => Box::new(CoulombSlip {
+                    normal_stiffness,
+                    shear_stiffness,
+                    tan_friction: tan_deg(j.friction),
+                    cohesion: j.cohesion,
+                    tensile_strength: j.tensile_strength,
+                    tan_dilation: tan_deg(j.dilation),
+                }),
+                JointLawKind::ContinuouslyYielding => Box::new(ContinuouslyYielding {
+                    normal_stiffness,
+                    shear_stiffness,
+                    friction: j.friction.to_radians(),
+                    initial_friction: j.initial_friction.unwrap_or(j.friction).to_radians(),
+                    roughness: j.roughness.expect("validated"),
+                }),
             }
-            Box::new(CoulombSlip {
-                normal_stiffness: j.normal_stiffness,
-                shear_stiffness: j.shear_stiffness,
-                tan_friction: tan_deg(j.friction),
-                cohesion: j.cohesion,
-                tensile_strength: j.tensile_strength,
-                tan_dilation: tan_deg(j.dilation),
-            }) as Box<dyn JointLaw>
         })
         .collect();
     let material_index = |name: &str| {

@@ -2,9 +2,11 @@
 
 mod coulomb;
 mod glued;
+mod yielding;
 
 pub use coulomb::{CoulombSlip, tan_deg};
 pub use glued::Glued;
+pub use yielding::{ContinuouslyYielding, SHEAR_NEGATIVE};
 
 /// Bit flag of `JointState::flags`: the joint is slipping now.
 pub const SLIPPING: u8 = 1;
@@ -28,7 +30,11 @@ pub struct JointState {
     pub initial_normal: f64,
     /// Accumulated dilation (opening the joint would need to keep its stress), m.
     pub dilation: f64,
-    /// `SLIPPING`, `OPEN`, `FAILED` bit flags.
+    /// Bounding friction angle φm of the continuously yielding law, rad (0 until first used).
+    pub bounding_friction: f64,
+    /// Reversal factor r of the continuously yielding law (τ/τm at the last shear reversal).
+    pub reversal: f64,
+    /// `SLIPPING`, `OPEN`, `FAILED` bit flags (and a law's own, such as `SHEAR_NEGATIVE`).
     pub flags: u8,
 }
 

@@ -108,7 +108,7 @@ fn default_segments() -> usize {
     128
 }
 
-/// A Coulomb slip joint material.
+/// A joint material: stiffnesses, strength, and the law that uses them.
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct JointMaterial {
@@ -128,10 +128,26 @@ pub struct JointMaterial {
     /// Dilation angle, degrees (default 0).
     #[serde(default)]
     pub dilation: f64,
-    /// A glued joint (construction joint): elastic springs that never slip or open; friction,
-    /// cohesion, tensile strength and dilation are then unused (default false).
+    /// Joint law: `coulomb` (default), `continuously_yielding` or `glued` (a construction joint:
+    /// elastic springs that never slip or open).
     #[serde(default)]
-    pub glued: bool,
+    pub law: JointLawKind,
+    /// Continuously yielding: initial bounding friction angle φm0, degrees (default `friction`).
+    #[serde(default)]
+    pub initial_friction: Option<f64>,
+    /// Continuously yielding: roughness length R, m (required for that law).
+    #[serde(default)]
+    pub roughness: Option<f64>,
+}
+
+/// Which joint law a joint material follows.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum JointLawKind {
+    #[default]
+    Coulomb,
+    ContinuouslyYielding,
+    Glued,
 }
 
 fn default_friction() -> f64 {
@@ -499,6 +515,28 @@ mod tests {
                 "{msg}"
             );
         }
+    }
+
+    #[test]
+    fn continuously_yielding_joint_needs_its_roughness() {
+        let joint = |extra: &str| {
+            GOOD.replace(
+                "\"zoning\"",
+                &format!(
+                    r#""joint_materials": {{ "j": {{ "law": "continuously_yielding", "normal_stiffness": 1e10,
+                       "shear_stiffness": 1e9{extra} }} }}, "zoning""#
+                ),
+            )
+        };
+        assert_eq!(
+            error_of(&joint("")),
+            "joint_materials.j.roughness: required by the continuously yielding law"
+        );
+        assert!(
+            error_of(&joint(r#", "roughness": 1e-3, "initial_friction": 20"#))
+                .starts_with("joint_materials.j.initial_friction: must be in [friction, 90)")
+        );
+        assert!(Scene::from_json(&joint(r#", "roughness": 1e-3"#), "t").is_ok());
     }
 
     #[test]

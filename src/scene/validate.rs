@@ -2,7 +2,7 @@
 
 use thiserror::Error;
 
-use super::{BoundaryCondition, Scene};
+use super::{BoundaryCondition, JointLawKind, Scene};
 
 /// Why a scene cannot be used.
 #[derive(Debug, Error)]
@@ -141,6 +141,30 @@ impl Scene {
                 return Err(invalid(
                     format!("{p}.dilation"),
                     format!("must be in [0, 90) degrees, got {}", j.dilation),
+                ));
+            }
+            if j.law == JointLawKind::ContinuouslyYielding {
+                match j.roughness {
+                    Some(r) => positive(&format!("{p}.roughness"), r)?,
+                    None => {
+                        return Err(invalid(
+                            format!("{p}.roughness"),
+                            "required by the continuously yielding law",
+                        ));
+                    }
+                }
+                if let Some(f) = j.initial_friction
+                    && !(f >= j.friction && f < 90.0)
+                {
+                    return Err(invalid(
+                        format!("{p}.initial_friction"),
+                        format!("must be in [friction, 90) degrees, got {f}"),
+                    ));
+                }
+            } else if j.roughness.is_some() || j.initial_friction.is_some() {
+                return Err(invalid(
+                    &p,
+                    "`roughness` and `initial_friction` belong to the continuously yielding law",
                 ));
             }
             for (f, v) in [

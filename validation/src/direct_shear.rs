@@ -21,7 +21,15 @@ const COHESION: f64 = 0.2e6;
 const FRICTION: f64 = 30.0;
 const DILATION: f64 = 5.0;
 
-fn scene(h: f64) -> Scene {
+/// The Coulomb joint of the test.
+fn coulomb() -> String {
+    format!(
+        r#"{{ "normal_stiffness": 1e10, "shear_stiffness": {KS}, "friction": {FRICTION},
+             "cohesion": {COHESION}, "dilation": {DILATION} }}"#
+    )
+}
+
+fn scene(h: f64, joint: &str) -> Scene {
     let text = format!(
         r#"{{
         "name": "direct_shear",
@@ -29,8 +37,7 @@ fn scene(h: f64) -> Scene {
         "region": {{ "polygon": [[-0.5, 0], [1.5, 0], [1.5, 0.5], [1, 0.5], [1, 1], [0, 1], [0, 0.5], [-0.5, 0.5]],
                     "edge_names": ["base", "e1", "e2", "e3", "top", "e5", "e6", "e7"], "material": "rock" }},
         "zoning": {{ "edge_at_excavation": {h}, "edge_far": {h} }},
-        "joint_materials": {{ "sample": {{ "normal_stiffness": 1e10, "shear_stiffness": {KS}, "friction": {FRICTION},
-                                         "cohesion": {COHESION}, "dilation": {DILATION} }} }},
+        "joint_materials": {{ "sample": {joint} }},
         "joints": [{{ "from": [0, 0.5], "to": [1, 0.5], "material": "sample" }}],
         "boundary": [{{ "part": "base", "fix": "xy" }}, {{ "part": "top", "fix": "x" }},
                      {{ "part": "top", "normal_stress": {sn} }}],
@@ -41,12 +48,22 @@ fn scene(h: f64) -> Scene {
     Scene::from_json(&text, "direct shear scene").expect("valid direct shear scene")
 }
 
-/// Shear the specimen to 3 mm; errors: peak and residual shear stress against c + σn tan φ and
-/// σn tan φ, the pre-peak shear stiffness against ks, and the dilation rate against tan ψ.
-pub fn run(h: f64) -> anyhow::Result<CaseReport> {
-    let start = Instant::now();
-    let sc = scene(h);
-    let mut b = build(&sc)?;
+/// One sample of a shear test.
+#[derive(Debug, Clone, Copy)]
+struct Sample {
+    /// Horizontal displacement of the top block, m.
+    x: f64,
+    /// Shear force on the joint (Σ τ L over its contacts), N/m: the average shear stress of the 1 m joint, Pa.
+    shear: f64,
+    /// Vertical displacement of the top block, m.
+    y: f64,
+    /// Length-weighted mean shear displacement of the joint's contacts, m.
+    slip: f64,
+}
+
+/// Load the specimen with σn, then drive the top block sideways to 3 mm; the curve and the cycles.
+fn shear(sc: &Scene) -> anyhow::Result<(Vec<Sample>, u64, usize)> {
+    let mut b = build(sc)?;
     let (mut solver, settled_cycles) = settle(&mut b.model, &sc.solve, "normal loading")?;
     // The whole top block is driven sideways (x fixed at a constant velocity, y free): like the
     // guided box of a shear rig, it cannot rotate, so the joint shears uniformly.
@@ -66,7 +83,7 @@ pub fn run(h: f64) -> anyhow::Result<CaseReport> {
     let chunk = 500u64;
     solver.spec.max_cycles = chunk;
     solver.spec.ratio = 0.0;
-    let mut curve: Vec<(f64, f64, f64)> = Vec::new(); // (shear displacement, average shear stress, normal displacement)
+    let mut curve: Vec<Sample> = Vec::new();
     let mut cycles = settled_cycles;
     while mean(&b.model, 0) - x0 < 3e-3 {
         let sol = solver.solve(&mut b.model, &mut Quiet);
@@ -79,25 +96,41 @@ pub fn run(h: f64) -> anyhow::Result<CaseReport> {
         let c = &b.model.contacts;
         // Both sides' contacts together cover the 1 m joint once: Σ τ L is the shear force.
         let force: f64 = (0..c.len()).map(|k| c.state[k].shear * c.length[k]).sum();
-        curve.push((mean(&b.model, 0) - x0, force.abs(), mean(&b.model, 1) - y0));
+        let slip = (0..c.len())
+            .map(|k| c.state[k].shear_displacement.abs() * c.length[k])
+            .sum::<f64>()
+            / c.length.iter().sum::<f64>();
+        curve.push(Sample {
+            x: mean(&b.model, 0) - x0,
+            shear: force.abs(),
+            y: mean(&b.model, 1) - y0,
+            slip,
+        });
     }
+    Ok((curve, cycles, b.model.zones.len()))
+}
+
+/// Shear the specimen to 3 mm; errors: peak and residual shear stress against c + σn tan φ and
+/// σn tan φ, the pre-peak shear stiffness against ks, and the dilation rate against tan ψ.
+pub fn run(h: f64) -> anyhow::Result<CaseReport> {
+    let start = Instant::now();
+    let (curve, cycles, zones) = shear(&scene(h, &coulomb()))?;
     let tan_phi = FRICTION.to_radians().tan();
     let peak_exact = COHESION + SIGMA_N * tan_phi;
     let residual_exact = SIGMA_N * tan_phi;
-    let peak = curve.iter().map(|p| p.1).fold(0.0, f64::max);
-    let residual = curve.last().expect("sheared").1;
+    let peak = curve.iter().map(|p| p.shear).fold(0.0, f64::max);
+    let residual = curve.last().expect("sheared").shear;
     // Pre-peak stiffness: secant at a third of the peak.
     let pre = curve
         .iter()
-        .find(|p| p.1 > peak_exact / 3.0)
+        .find(|p| p.shear > peak_exact / 3.0)
         .expect("loading branch");
-    let stiffness = pre.1 / pre.0;
+    let stiffness = pre.shear / pre.x;
     // Dilation rate over the last third of the slip.
     let n = curve.len();
     let (a, z) = (curve[2 * n / 3], curve[n - 1]);
-    let dilation_rate = (z.2 - a.2) / (z.0 - a.0);
+    let dilation_rate = (z.y - a.y) / (z.x - a.x);
     let wall_s = start.elapsed().as_secs_f64();
-    let zones = b.model.zones.len();
     let errors = [
         ("peak_shear", (peak - peak_exact).abs() / peak_exact),
         (
@@ -121,6 +154,32 @@ pub fn run(h: f64) -> anyhow::Result<CaseReport> {
     ))
 }
 
+/// The same test with a continuously yielding joint whose bounding friction starts at the basic
+/// friction (φm0 = φ = 30°, so no wear): under constant σn the joint's average shear stress
+/// follows τ = τm (1 − exp(−ks u/τm)), τm = σn tan φ, against its mean slip u (the law's closed
+/// form, Cundall & Hart 1984). Error: largest |τ − τ(u)| over the curve relative to τm.
+pub fn run_yielding(h: f64) -> anyhow::Result<CaseReport> {
+    let start = Instant::now();
+    let joint = format!(
+        r#"{{ "law": "continuously_yielding", "normal_stiffness": 1e10, "shear_stiffness": {KS},
+             "friction": {FRICTION}, "roughness": 1e-3 }}"#
+    );
+    let (curve, cycles, zones) = shear(&scene(h, &joint))?;
+    let tau_m = SIGMA_N * FRICTION.to_radians().tan();
+    let worst = curve
+        .iter()
+        .map(|p| (p.shear - tau_m * (1.0 - (-KS * p.slip / tau_m).exp())).abs() / tau_m)
+        .fold(0.0, f64::max);
+    Ok(CaseReport::new(
+        "direct shear, continuously yielding joint, σn = 1 MPa, φ = φm0 = 30°",
+        zones,
+        cycles,
+        start.elapsed().as_secs_f64(),
+        Some(h),
+        &[("shear_curve", worst)],
+    ))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -136,5 +195,14 @@ mod tests {
         // 1e-7, 2e-8 and 5e-9 m per cycle); the end contacts dilate less. The report's finer mesh is
         // within 2 %.
         assert!(r.errors["dilation_rate"] < 0.15, "{r:?}");
+    }
+
+    /// 3.1 % on this coarse mesh, 1.4 % at the report's 0.0625 m (the end contacts, which lose
+    /// and gain partners, lag the closed form; the error halves with the zone size).
+    #[test]
+    fn continuously_yielding_joint_follows_its_closed_form() {
+        let r = run_yielding(0.125).unwrap();
+        eprintln!("{r:?}");
+        assert!(r.errors["shear_curve"] < 0.05, "{r:?}");
     }
 }

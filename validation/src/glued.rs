@@ -1,9 +1,9 @@
 //! Glued-joint consistency: the Kirsch problem with the domain cut by two joint sets whose joints
-//! are glued (`glued: true`: springs that never slip or open) must reproduce the intact solution as the joint
+//! are glued (`law: glued`: springs that never slip or open) must reproduce the intact solution as the joint
 //! stiffness grows. Reported against the joint normal stiffness.
 
 use adit::Scene;
-use adit::scene::{JointMaterial, JointSetSpec};
+use adit::scene::{JointLawKind, JointMaterial, JointSetSpec};
 
 use crate::kirsch_case::{KirschResult, OuterLoad, run};
 
@@ -20,7 +20,9 @@ pub fn glued_scene(kirsch: &Scene, k: f64) -> Scene {
             cohesion: 0.0,
             tensile_strength: 0.0,
             dilation: 0.0,
-            glued: true,
+            law: JointLawKind::Glued,
+            initial_friction: None,
+            roughness: None,
         },
     );
     let set = |dip: f64, spacing: f64, origin: [f64; 2]| JointSetSpec {

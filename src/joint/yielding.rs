@@ -1,0 +1,172 @@
+//! Continuously yielding joint (Cundall & Hart 1984, "Analysis of block test no. 1 for inelastic
+//! rock mass behavior", Itasca report; UDEC's continuously yielding model), with constant
+//! stiffnesses. The shear stress approaches a bounding strength τm = |σn| tan φm continuously
+//! instead of switching from elastic to plastic:
+//!
+//!   Δτ = F ks Δus,   F = (1 − τ/τm) / (1 − r),   τm = |σn| tan φm · sign(Δus),
+//!
+//! with r = 0 at first and r = τ/τm restored on each reversal of the shear direction (so unloading
+//! starts elastic, F = 1). The irreversible part of the shear increment, Δu^p = (1 − F)|Δus|,
+//! wears the asperities: the bounding friction falls towards the basic friction φ,
+//!
+//!   Δφm = −(φm − φ) Δu^p / R,
+//!
+//! R (m) being the joint's roughness length, and the joint dilates by tan(φm − φ) Δu^p (the
+//! asperity angle is φm − φ). The normal stress is σn = σn0 + kn (un − d) as in the Coulomb law; the
+//! joint carries no tension (it opens at σn > 0 and then carries nothing).
+
+use super::{JointLaw, JointState, OPEN, SLIPPING};
+
+/// Bit flag of `JointState::flags`: the last shear increment was negative.
+pub const SHEAR_NEGATIVE: u8 = 8;
+
+/// Continuously yielding joint material.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ContinuouslyYielding {
+    /// Normal stiffness kn, Pa/m.
+    pub normal_stiffness: f64,
+    /// Shear stiffness ks, Pa/m.
+    pub shear_stiffness: f64,
+    /// Basic (residual) friction angle φ, rad.
+    pub friction: f64,
+    /// Initial bounding friction angle φm0 ≥ φ, rad.
+    pub initial_friction: f64,
+    /// Roughness length R, m: the plastic shear displacement over which φm − φ falls by a factor e.
+    pub roughness: f64,
+}
+
+impl ContinuouslyYielding {
+    /// Current bounding friction φm (rad) of a contact: φm0 until its first update (a state
+    /// stores 0 until then; φm never falls below φ, so 0 is free unless φ = 0).
+    pub fn bounding_friction(&self, s: &JointState) -> f64 {
+        if s.bounding_friction == 0.0 {
+            self.initial_friction
+        } else {
+            s.bounding_friction
+        }
+    }
+}
+
+impl JointLaw for ContinuouslyYielding {
+    fn update(&self, s: &mut JointState, dn: f64, ds: f64) {
+        let mut phi_m = self.bounding_friction(s);
+        s.normal_displacement += dn;
+        s.shear_displacement += ds;
+        s.flags &= !(SLIPPING | OPEN);
+        let normal =
+            s.initial_normal + self.normal_stiffness * (s.normal_displacement - s.dilation);
+        if normal > 0.0 {
+            s.normal = 0.0;
+            s.shear = 0.0;
+            s.flags |= OPEN;
+            s.bounding_friction = phi_m;
+            return;
+        }
+        s.normal = normal;
+        if ds != 0.0 {
+            let negative = ds < 0.0;
+            let bound = -normal * phi_m.tan() * if negative { -1.0 } else { 1.0 };
+            if negative != (s.flags & SHEAR_NEGATIVE != 0) {
+                // Reversal: restart from an elastic response.
+                s.reversal = if bound != 0.0 { s.shear / bound } else { 0.0 };
+                s.flags ^= SHEAR_NEGATIVE;
+            }
+            let ratio = if bound != 0.0 { s.shear / bound } else { 1.0 };
+            let f = ((1.0 - ratio) / (1.0 - s.reversal)).clamp(0.0, 1.0);
+            s.shear += f * self.shear_stiffness * ds;
+            if s.shear.abs() > bound.abs() {
+                s.shear = bound;
+            }
+            let plastic = (1.0 - f) * ds.abs();
+            if plastic > 0.5 * ds.abs() {
+                s.flags |= SLIPPING;
+            }
+            if phi_m > self.friction {
+                s.dilation += (phi_m - self.friction).tan() * plastic;
+                phi_m -= (phi_m - self.friction) * plastic / self.roughness;
+                s.normal =
+                    s.initial_normal + self.normal_stiffness * (s.normal_displacement - s.dilation);
+            }
+        }
+        s.bounding_friction = phi_m;
+    }
+
+    fn stiffness(&self) -> (f64, f64) {
+        (self.normal_stiffness, self.shear_stiffness)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn law(initial_deg: f64) -> ContinuouslyYielding {
+        ContinuouslyYielding {
+            normal_stiffness: 1e10,
+            shear_stiffness: 1e9,
+            friction: 30f64.to_radians(),
+            initial_friction: initial_deg.to_radians(),
+            roughness: 1e-3,
+        }
+    }
+
+    fn confined(sn: f64) -> JointState {
+        JointState {
+            normal: sn,
+            initial_normal: sn,
+            ..Default::default()
+        }
+    }
+
+    /// With φm0 = φ under constant σn, monotonic shear follows τ = τm (1 − exp(−ks u/τm)).
+    #[test]
+    fn monotonic_shear_follows_the_exponential_closed_form() {
+        let l = law(30.0);
+        let mut s = confined(-1e6);
+        let tau_m = 1e6 * 30f64.to_radians().tan();
+        let du = 1e-8;
+        let mut worst = 0.0f64;
+        for k in 1..=200_000 {
+            l.update(&mut s, 0.0, du);
+            let u = k as f64 * du;
+            let exact = tau_m * (1.0 - (-1e9 * u / tau_m).exp());
+            worst = worst.max((s.shear - exact).abs() / tau_m);
+        }
+        assert!(worst < 1e-4, "largest error {worst}");
+        assert!(s.flags & SLIPPING != 0);
+    }
+
+    /// A rough joint (φm0 = 45°) under constant normal stress (it opens as it dilates) peaks above
+    /// σn tan φ, then wears towards it.
+    #[test]
+    fn rough_joint_peaks_then_softens_to_the_basic_friction() {
+        let l = law(45.0);
+        let mut s = confined(-1e6);
+        let (mut peak, mut opening) = (0.0f64, 0.0);
+        for _ in 0..100_000 {
+            let d = s.dilation;
+            l.update(&mut s, opening, 1e-7);
+            opening = s.dilation - d;
+            peak = peak.max(s.shear);
+        }
+        let residual = 1e6 * 30f64.to_radians().tan();
+        assert!(peak > 1.2 * residual, "peak {peak}");
+        assert!(s.shear < 1.05 * residual, "after 10 mm: {}", s.shear);
+        assert!(s.dilation > 1e-4, "dilation {}", s.dilation);
+        assert!((s.normal + 1e6).abs() < 0.01 * 1e6, "σn {}", s.normal);
+    }
+
+    /// Reversing the shear direction unloads elastically (F = 1 at the reversal).
+    #[test]
+    fn reversal_unloads_with_the_elastic_stiffness() {
+        let l = law(30.0);
+        let mut s = confined(-1e6);
+        for _ in 0..20_000 {
+            l.update(&mut s, 0.0, 1e-7);
+        }
+        let before = s.shear;
+        l.update(&mut s, 0.0, -1e-8);
+        let drop = before - s.shear;
+        assert!((drop - 1e9 * 1e-8).abs() < 1e-6 * drop, "{drop}");
+    }
+}
