@@ -14,8 +14,8 @@ use adit_meshing::{BoundaryEdge, Domain, EdgeKind, MeshStats};
 pub use boundary::add_tractions;
 pub use geometry::{Meshed, domain, joint_segments, mesh, zoning};
 
-use crate::contact::Contacts;
 use crate::contact::detect::{Detection, Touch, detect};
+use crate::contact::{Contacts, rounding};
 use crate::joint::{
     ContinuouslyYielding, CoulombSlip, FAILED, Glued, JointLaw, JointState, tan_deg,
 };
@@ -187,7 +187,7 @@ pub fn build(scene: &Scene) -> anyhow::Result<Built> {
         zone_block,
         outline,
         outline_block,
-        blocks,
+        mut blocks,
         boundary,
     } = assemble(&meshed);
     let mut nodes = Nodes::at(pos);
@@ -255,6 +255,14 @@ pub fn build(scene: &Scene) -> anyhow::Result<Built> {
         |c| in_situ_stress(&scene.in_situ, c[1], poisson),
         scene.gravity,
     );
+    if !bodies.is_empty() {
+        let mean_radius = bodies.radius.iter().sum::<f64>() / bodies.len() as f64;
+        let round = scene.blocks.round.unwrap_or(0.01 * mean_radius);
+        let modes = &meshed.modes;
+        blocks.round = rounding::radii(&blocks, &nodes.pos, round, |b| {
+            modes[b] != BlockMode::Deformable
+        });
+    }
     let body_of_block: BTreeMap<u32, u32> = bodies
         .block
         .iter()
@@ -318,10 +326,13 @@ pub fn build(scene: &Scene) -> anyhow::Result<Built> {
     );
 
     // Joints present from the start are intact and carry the in-situ traction; corner contacts
-    // (blocks meeting at a point, not along a joint) start unstressed, without strength.
+    // (blocks meeting at a point, not along a joint) start unstressed, without strength, at their
+    // gap if apart (rounded corners of diagonal blocks at a joint crossing), else at zero overlap
+    // (the cut geometry has none; a negative gap is an artefact of the corner).
     let in_situ_joint = |t: &Touch| {
         if !t.face {
             return JointState {
+                normal_displacement: t.gap.max(0.0),
                 flags: FAILED,
                 ..Default::default()
             };

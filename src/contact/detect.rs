@@ -8,7 +8,7 @@ use std::collections::HashMap;
 use adit_meshing::EdgeKind;
 use rayon::prelude::*;
 
-use super::Contacts;
+use super::{Contacts, rounding};
 use crate::joint::JointState;
 use crate::model::blocks::{Blocks, NO_EDGE};
 
@@ -102,10 +102,12 @@ pub fn candidate_pairs(blocks: &Blocks, x: &[[f64; 2]], tol: f64) -> Vec<(u32, u
     pairs
 }
 
-/// One node-to-edge candidate: (node, edge, ξ, touch).
-type Found = (u32, u32, f64, Touch);
+/// One candidate: (node, edge, ξ, touch, corner).
+type Found = (u32, u32, f64, Touch, bool);
 
-/// Nodes of block `a` touching edges of block `b`.
+/// Nodes of block `a` touching edges of block `b`. A rounded node (a convex corner of a rigid or
+/// simple block) measures from its rounding centre, less its radius; a rounded node that meets no
+/// edge of b face-on may meet a rounded corner of b, along the line of the two centres.
 fn node_to_edge(d: &Detection, a: usize, b: usize) -> Vec<Found> {
     let (blo, bhi) = bounds(d.blocks, d.x, b);
     let tol = d.tolerance;
@@ -117,6 +119,9 @@ fn node_to_edge(d: &Detection, a: usize, b: usize) -> Vec<Found> {
         {
             continue;
         }
+        let r = d.blocks.round_of(n);
+        let at = |v: u32| d.x[v as usize];
+        let c = rounding::centre(d.blocks, &at, n, r);
         let own = edge_normals_at(d, n);
         // Nearest edge; among equally near ones (a node at a corner of B), the one facing the node.
         let mut best: Option<(f64, f64, Found)> = None;
@@ -125,14 +130,14 @@ fn node_to_edge(d: &Detection, a: usize, b: usize) -> Vec<Found> {
             let (pj, pk) = (d.x[j as usize], d.x[k as usize]);
             let t = [pk[0] - pj[0], pk[1] - pj[1]];
             let len = t[0].hypot(t[1]);
-            let xi = ((p[0] - pj[0]) * t[0] + (p[1] - pj[1]) * t[1]) / (len * len);
+            let xi = ((c[0] - pj[0]) * t[0] + (c[1] - pj[1]) * t[1]) / (len * len);
             if !(-1e-9..=1.0 + 1e-9).contains(&xi) {
                 continue;
             }
             let xi = xi.clamp(0.0, 1.0);
             let q = [pj[0] + xi * t[0], pj[1] + xi * t[1]];
             let normal = [t[1] / len, -t[0] / len];
-            let gap = (p[0] - q[0]) * normal[0] + (p[1] - q[1]) * normal[1];
+            let gap = (c[0] - q[0]) * normal[0] + (c[1] - q[1]) * normal[1] - r;
             if gap > tol || gap < -0.5 * len {
                 continue;
             }
@@ -152,28 +157,53 @@ fn node_to_edge(d: &Detection, a: usize, b: usize) -> Vec<Found> {
                 .as_ref()
                 .is_none_or(|(bd, bf, _)| dist < bd - eps || (dist <= bd + eps && facing < *bf));
             if better {
-                best = Some((
-                    dist,
-                    facing,
-                    (
-                        n,
-                        eb as u32,
-                        xi,
-                        Touch {
-                            point: q,
-                            normal,
-                            gap,
-                            face: false,
-                        },
-                    ),
-                ));
+                let touch = Touch {
+                    point: q,
+                    normal,
+                    gap,
+                    face: false,
+                };
+                best = Some((dist, facing, (n, eb as u32, xi, touch, false)));
             }
         }
-        if let Some((_, _, f)) = best {
-            found.push(f);
+        match best {
+            Some((_, _, f)) => found.push(f),
+            None if r > 0.0 => found.extend(corner_to_corner(d, n, c, r, b)),
+            None => {}
         }
     }
     found
+}
+
+/// The rounded corner of block `b` nearest to node n's rounding centre `c` (radius `r`), if the
+/// arcs are within the tolerance: normal along the line of centres, contact on the corner's
+/// outgoing edge at ξ = 0.
+fn corner_to_corner(d: &Detection, n: u32, c: [f64; 2], r: f64, b: usize) -> Option<Found> {
+    d.blocks
+        .edge_range(b)
+        .filter_map(|eb| {
+            let j = d.blocks.edges[eb][0];
+            let rj = d.blocks.round_of(j);
+            if rj == 0.0 {
+                return None;
+            }
+            let cj = rounding::centre(d.blocks, &|v: u32| d.x[v as usize], j, rj);
+            let (dx, dy) = (c[0] - cj[0], c[1] - cj[1]);
+            let dist = dx.hypot(dy);
+            let gap = dist - r - rj;
+            (gap <= d.tolerance && dist > 0.0).then(|| {
+                let normal = [dx / dist, dy / dist];
+                let touch = Touch {
+                    point: d.x[j as usize],
+                    normal,
+                    gap,
+                    face: false,
+                };
+                (gap, (n, eb as u32, 0.0, touch, true))
+            })
+        })
+        .min_by(|p, q| p.0.total_cmp(&q.0))
+        .map(|(_, f)| f)
 }
 
 /// Length of joint a contact at `node` against block `b` stands for: half of each boundary edge
@@ -279,7 +309,7 @@ pub fn detect(
         .collect();
     let mut out = Contacts::default();
     for list in per_pair {
-        for ((node, edge, xi, mut touch), block_b) in list {
+        for ((node, edge, xi, mut touch, corner), block_b) in list {
             let (length, face) = contact_length(d, node, block_b as usize);
             touch.face = face;
             let state = match history.get(&(node, block_b)) {
@@ -292,6 +322,7 @@ pub fn detect(
             out.xi.push(xi);
             out.length.push(length);
             out.material.push(material_of(d, node, edge));
+            out.corner.push(corner);
             out.state.push(state);
         }
     }
@@ -339,6 +370,7 @@ mod tests {
             edges,
             edge_kind,
             node_edges,
+            round: vec![],
         };
         (blocks, x)
     }
@@ -386,5 +418,33 @@ mod tests {
         });
         let again = detect(&d, &first, &|_: &Touch| JointState::default());
         assert!(again.state.iter().all(|s| s.shear == 7.0));
+    }
+
+    /// Two rigid squares meeting corner to corner (the second moved diagonally by s from sharing
+    /// its face): rounded with radius r, each corner touches the other along the diagonal line of
+    /// the rounding centres when their arcs are within the tolerance.
+    #[test]
+    fn rounded_corners_meet_along_the_line_of_centres() {
+        let (mut blocks, mut x) = two_squares();
+        let r = 0.05;
+        // Arcs 0.2 mm apart: √2 (s + 2r) − 2r = 0.2 mm.
+        let s = (2.0 * r + 0.2e-3) / std::f64::consts::SQRT_2 - 2.0 * r;
+        for p in &mut x[4..] {
+            p[0] += s;
+            p[1] += 1.0 + s;
+        }
+        let fresh = |t: &Touch| JointState {
+            normal_displacement: t.gap,
+            ..Default::default()
+        };
+        blocks.round = crate::contact::rounding::radii(&blocks, &x, r, |_| true);
+        let rounded = detect(&at(&blocks, &x), &Contacts::default(), &fresh);
+        // Node 2 (top right of the first square) against node 4 (bottom left of the second), both ways.
+        assert_eq!(rounded.len(), 2, "{rounded:?}");
+        for k in 0..2 {
+            assert!(rounded.corner[k]);
+            assert_eq!(rounded.xi[k], 0.0);
+            assert!((rounded.state[k].normal_displacement - 0.2e-3).abs() < 1e-12);
+        }
     }
 }

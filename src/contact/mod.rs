@@ -2,6 +2,7 @@
 //! (UDEC's deformable-block contacts), each with a joint state that persists across re-detection.
 
 pub mod detect;
+pub mod rounding;
 
 use crate::joint::JointState;
 
@@ -21,6 +22,9 @@ pub struct Contacts {
     pub length: Vec<f64>,
     /// Joint material of the contact.
     pub material: Vec<u32>,
+    /// Whether the contact is between two rounded corners (its node against the edge's first node,
+    /// ξ = 0, along the line of the rounding centres) rather than node against edge.
+    pub corner: Vec<bool>,
     pub state: Vec<JointState>,
 }
 

@@ -4,6 +4,7 @@ use rayon::prelude::*;
 
 use super::{Cycle, CycleParams};
 use crate::contact::detect::{Detection, Touch, detect};
+use crate::contact::rounding;
 use crate::joint::{FAILED, JointState};
 use crate::model::{Gather, Model};
 
@@ -40,7 +41,8 @@ impl Cycle {
     }
 
     /// Contact stage: relative velocity of the node against the point ξ of the edge, projected on the
-    /// edge's normal n (outward of the edge's block) and tangent t, gives the increments
+    /// edge's normal n (outward of the edge's block; for two rounded corners, the unit vector
+    /// between their rounding centres) and tangent t, gives the increments
     /// Δun = v_rel·n Δt, Δus = v_rel·t Δt; the joint law returns the stresses, and the force
     /// F = −L(σn n + τ t) acts on the node while −(1 − ξ)F and −ξF act on the edge's nodes, so
     /// momentum is conserved exactly.
@@ -67,13 +69,23 @@ impl Cycle {
             .zip(contacts.xi.par_iter())
             .zip(contacts.length.par_iter())
             .zip(contacts.material.par_iter())
+            .zip(contacts.corner.par_iter())
             .with_min_len(256)
-            .for_each(|((((((state, f), &i), &e), &xi), &len), &mat)| {
+            .for_each(|(((((((state, f), &i), &e), &xi), &len), &mat), &corner)| {
                 let [j, k] = blocks.edges[e as usize];
-                let (pj, pk) = (x(j), x(k));
-                let l = ((pk[0] - pj[0]).powi(2) + (pk[1] - pj[1]).powi(2)).sqrt();
-                let t = [(pk[0] - pj[0]) / l, (pk[1] - pj[1]) / l];
-                let n = [t[1], -t[0]];
+                let n = if corner {
+                    // Rounded corner against rounded corner: along the line of the centres.
+                    let ci = rounding::centre(blocks, &x, i, blocks.round_of(i));
+                    let cj = rounding::centre(blocks, &x, j, blocks.round_of(j));
+                    let (dx, dy) = (ci[0] - cj[0], ci[1] - cj[1]);
+                    let l = dx.hypot(dy);
+                    [dx / l, dy / l]
+                } else {
+                    let (pj, pk) = (x(j), x(k));
+                    let l = ((pk[0] - pj[0]).powi(2) + (pk[1] - pj[1]).powi(2)).sqrt();
+                    [(pk[1] - pj[1]) / l, -(pk[0] - pj[0]) / l]
+                };
+                let t = [-n[1], n[0]];
                 let (vi, vj, vk) = (vel[i as usize], vel[j as usize], vel[k as usize]);
                 let vr = [
                     vi[0] - (1.0 - xi) * vj[0] - xi * vk[0],

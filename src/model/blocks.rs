@@ -19,6 +19,9 @@ pub struct Blocks {
     pub edge_kind: Vec<EdgeKind>,
     /// For each node, its boundary edges [incoming, outgoing], or `NO_EDGE` for interior nodes.
     pub node_edges: Vec<[u32; 2]>,
+    /// Corner rounding radius of each node, m (`contact::rounding`; 0 but at the convex corners of
+    /// rigid and simple blocks; empty: no rounding).
+    pub round: Vec<f64>,
 }
 
 impl Blocks {
@@ -34,6 +37,11 @@ impl Blocks {
     /// Boundary edge ids of block `b`.
     pub fn edge_range(&self, b: usize) -> std::ops::Range<usize> {
         self.edge_start[b] as usize..self.edge_start[b + 1] as usize
+    }
+
+    /// Rounding radius of node `n`, m.
+    pub fn round_of(&self, n: u32) -> f64 {
+        self.round.get(n as usize).copied().unwrap_or(0.0)
     }
 
     /// Block owning node `n`.

@@ -240,6 +240,9 @@ pub struct BlocksSpec {
     pub mode: BlockMode,
     /// Modes by region: blocks whose centroid lies inside `polygon`, or the block containing `at`.
     pub regions: Vec<ModeRegion>,
+    /// Corner rounding radius of rigid and simple blocks, m (UDEC's `round`); default 1 % of their
+    /// mean radius. Each corner's radius is capped so its arc spans at most a quarter of its edges.
+    pub round: Option<f64>,
 }
 
 /// A block mode for the blocks of one region or the block at one point.

@@ -213,6 +213,9 @@ impl Scene {
         if let Some(t) = self.contacts.tolerance {
             positive("contacts.tolerance", t)?;
         }
+        if let Some(r) = self.blocks.round {
+            positive("blocks.round", r)?;
+        }
         for (i, r) in self.blocks.regions.iter().enumerate() {
             let p = format!("blocks.regions[{i}]");
             match (&r.polygon, &r.at) {
