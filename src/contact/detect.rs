@@ -206,13 +206,20 @@ fn corner_to_corner(d: &Detection, n: u32, c: [f64; 2], r: f64, b: usize) -> Opt
         .map(|(_, f)| f)
 }
 
-/// Length of joint a contact at `node` against block `b` stands for: half of each boundary edge
-/// at the node whose midpoint lies within the tolerance of block b's boundary (the edge runs along
-/// b), halved again because both sides of a joint carry contacts (together they cover it once).
-/// A corner contact, whose edges both leave b (diagonal blocks at a joint crossing, a corner
-/// against a face), takes a quarter of its shorter edge, halved likewise. Returns the length, m,
-/// and whether it is a face contact.
-fn contact_length(d: &Detection, node: u32, b: usize) -> (f64, bool) {
+/// Length of joint a contact at `node` against `edge` of block `b` stands for: half of each
+/// boundary edge at the node whose midpoint lies within the tolerance of block b's boundary (the
+/// node's edge runs along b; the contact edge and its two neighbours are tried first, then all of
+/// b's edges, which a long edge against a finely zoned block needs), halved again because both sides of a
+/// joint carry contacts (together they cover it once). A corner contact, whose edges both leave
+/// the other block (diagonal blocks at a joint crossing, a corner against a face), takes a quarter
+/// of its shorter edge, halved likewise. Returns the length, m, and whether it is a face contact.
+fn contact_length(d: &Detection, node: u32, edge: u32, b: usize) -> (f64, bool) {
+    let [j, k] = d.blocks.edges[edge as usize];
+    let near = [
+        edge,
+        d.blocks.node_edges[j as usize][0],
+        d.blocks.node_edges[k as usize][1],
+    ];
     let (mut shared, mut shortest) = (0.0, f64::INFINITY);
     for &e in d.blocks.node_edges[node as usize]
         .iter()
@@ -222,7 +229,10 @@ fn contact_length(d: &Detection, node: u32, b: usize) -> (f64, bool) {
         let len = (q[0] - p[0]).hypot(q[1] - p[1]);
         shortest = shortest.min(len);
         let mid = [0.5 * (p[0] + q[0]), 0.5 * (p[1] + q[1])];
-        if distance_to_block(d, mid, b) <= d.tolerance {
+        let within = |e: u32| distance_to_edge(d, mid, e) <= d.tolerance;
+        let along = near.iter().filter(|&&e| e != NO_EDGE).any(|&e| within(e))
+            || d.blocks.edge_range(b).any(|e| within(e as u32));
+        if along {
             shared += 0.5 * len;
         }
     }
@@ -233,18 +243,13 @@ fn contact_length(d: &Detection, node: u32, b: usize) -> (f64, bool) {
     }
 }
 
-/// Distance from `p` to the boundary of block `b`, m.
-fn distance_to_block(d: &Detection, p: [f64; 2], b: usize) -> f64 {
-    d.blocks
-        .edge_range(b)
-        .map(|e| {
-            let [a, c] = d.blocks.edges[e].map(|n| d.x[n as usize]);
-            let t = [c[0] - a[0], c[1] - a[1]];
-            let s = (((p[0] - a[0]) * t[0] + (p[1] - a[1]) * t[1]) / (t[0] * t[0] + t[1] * t[1]))
-                .clamp(0.0, 1.0);
-            (p[0] - a[0] - s * t[0]).hypot(p[1] - a[1] - s * t[1])
-        })
-        .fold(f64::INFINITY, f64::min)
+/// Distance from `p` to boundary edge `e`, m.
+fn distance_to_edge(d: &Detection, p: [f64; 2], e: u32) -> f64 {
+    let [a, c] = d.blocks.edges[e as usize].map(|n| d.x[n as usize]);
+    let t = [c[0] - a[0], c[1] - a[1]];
+    let s = (((p[0] - a[0]) * t[0] + (p[1] - a[1]) * t[1]) / (t[0] * t[0] + t[1] * t[1]))
+        .clamp(0.0, 1.0);
+    (p[0] - a[0] - s * t[0]).hypot(p[1] - a[1] - s * t[1])
 }
 
 /// Outward unit normals of the (up to two) boundary edges meeting at node `n`.
@@ -310,7 +315,7 @@ pub fn detect(
     let mut out = Contacts::default();
     for list in per_pair {
         for ((node, edge, xi, mut touch, corner), block_b) in list {
-            let (length, face) = contact_length(d, node, block_b as usize);
+            let (length, face) = contact_length(d, node, edge, block_b as usize);
             touch.face = face;
             let state = match history.get(&(node, block_b)) {
                 Some(&c) => previous.state[c],
