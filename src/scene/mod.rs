@@ -543,6 +543,28 @@ mod tests {
     }
 
     #[test]
+    fn block_mode_regions_need_one_shape() {
+        let with = |region: &str| {
+            GOOD.replace(
+                "\"zoning\"",
+                &format!(r#""blocks": {{ "regions": [{region}] }}, "zoning""#),
+            )
+        };
+        assert_eq!(
+            error_of(&with(
+                r#"{ "mode": "rigid", "at": [1, 1], "polygon": [[0, 0], [1, 0], [1, 1]] }"#
+            )),
+            "blocks.regions[0]: give exactly one of `polygon` and `at`"
+        );
+        assert!(
+            error_of(&with(r#"{ "mode": "stiff", "at": [1, 1] }"#))
+                .contains("unknown variant `stiff`")
+        );
+        let s = Scene::from_json(&with(r#"{ "mode": "simple", "at": [1, 1] }"#), "t").unwrap();
+        assert_eq!(s.blocks.regions[0].mode, BlockMode::Simple);
+    }
+
+    #[test]
     fn unknown_boundary_part_lists_the_known_ones() {
         let text = GOOD.replace(
             "\"zoning\"",

@@ -191,10 +191,9 @@ mod tests {
         for e in ["peak_shear", "residual_shear", "shear_stiffness"] {
             assert!(r.errors[e] < 0.02, "{e}: {r:?}");
         }
-        // On this coarse mesh the block rises about 11 % less than tan ψ per unit slip (the same at
-        // 1e-7, 2e-8 and 5e-9 m per cycle); the end contacts dilate less. The report's finer mesh is
-        // within 2 %.
-        assert!(r.errors["dilation_rate"] < 0.15, "{r:?}");
+        // On this coarse mesh the block rises about 5 % less than tan ψ per unit slip: the end
+        // contacts, which lose and gain partners, dilate less. The report's finer mesh is within 2 %.
+        assert!(r.errors["dilation_rate"] < 0.08, "{r:?}");
     }
 
     /// 3.1 % on this coarse mesh, 1.4 % at the report's 0.0625 m (the end contacts, which lose
