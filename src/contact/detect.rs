@@ -3,8 +3,6 @@
 //! edge of the other, both ways. Contacts that persist (same node, same opposite block) keep their
 //! joint state.
 
-use std::collections::HashMap;
-
 use adit_meshing::EdgeKind;
 use rayon::prelude::*;
 
@@ -40,6 +38,11 @@ pub struct Touch {
 /// A node and an edge make a contact only if the outward normal of one of the node's edges and the
 /// edge's are at more than about 107° (cosine below −0.3).
 const MIN_FACING: f64 = 0.3;
+
+/// Length of (x, y), m (a plain square root: `hypot`'s overflow care costs more than it buys here).
+fn norm(x: f64, y: f64) -> f64 {
+    (x * x + y * y).sqrt()
+}
 
 /// Bounding box of block b over its boundary nodes, m.
 fn bounds(blocks: &Blocks, x: &[[f64; 2]], b: usize) -> ([f64; 2], [f64; 2]) {
@@ -105,6 +108,9 @@ pub fn candidate_pairs(blocks: &Blocks, x: &[[f64; 2]], tol: f64) -> Vec<(u32, u
 /// One candidate: (node, edge, ξ, touch, corner).
 type Found = (u32, u32, f64, Touch, bool);
 
+/// One detected contact: node, edge, block B, ξ, length, material, corner, joint state.
+type Record = (u32, u32, u32, f64, f64, u32, bool, JointState);
+
 /// Nodes of block `a` touching edges of block `b`. A rounded node (a convex corner of a rigid or
 /// simple block) measures from its rounding centre, less its radius; a rounded node that meets no
 /// edge of b face-on may meet a rounded corner of b, along the line of the two centres.
@@ -129,7 +135,7 @@ fn node_to_edge(d: &Detection, a: usize, b: usize) -> Vec<Found> {
             let [j, k] = d.blocks.edges[eb];
             let (pj, pk) = (d.x[j as usize], d.x[k as usize]);
             let t = [pk[0] - pj[0], pk[1] - pj[1]];
-            let len = t[0].hypot(t[1]);
+            let len = norm(t[0], t[1]);
             let xi = ((c[0] - pj[0]) * t[0] + (c[1] - pj[1]) * t[1]) / (len * len);
             if !(-1e-9..=1.0 + 1e-9).contains(&xi) {
                 continue;
@@ -189,7 +195,7 @@ fn corner_to_corner(d: &Detection, n: u32, c: [f64; 2], r: f64, b: usize) -> Opt
             }
             let cj = rounding::centre(d.blocks, &|v: u32| d.x[v as usize], j, rj);
             let (dx, dy) = (c[0] - cj[0], c[1] - cj[1]);
-            let dist = dx.hypot(dy);
+            let dist = norm(dx, dy);
             let gap = dist - r - rj;
             (gap <= d.tolerance && dist > 0.0).then(|| {
                 let normal = [dx / dist, dy / dist];
@@ -226,7 +232,7 @@ fn contact_length(d: &Detection, node: u32, edge: u32, b: usize) -> (f64, bool) 
         .filter(|&&e| e != NO_EDGE)
     {
         let [p, q] = d.blocks.edges[e as usize].map(|n| d.x[n as usize]);
-        let len = (q[0] - p[0]).hypot(q[1] - p[1]);
+        let len = norm(q[0] - p[0], q[1] - p[1]);
         shortest = shortest.min(len);
         let mid = [0.5 * (p[0] + q[0]), 0.5 * (p[1] + q[1])];
         let within = |e: u32| distance_to_edge(d, mid, e) <= d.tolerance;
@@ -249,7 +255,7 @@ fn distance_to_edge(d: &Detection, p: [f64; 2], e: u32) -> f64 {
     let t = [c[0] - a[0], c[1] - a[1]];
     let s = (((p[0] - a[0]) * t[0] + (p[1] - a[1]) * t[1]) / (t[0] * t[0] + t[1] * t[1]))
         .clamp(0.0, 1.0);
-    (p[0] - a[0] - s * t[0]).hypot(p[1] - a[1] - s * t[1])
+    norm(p[0] - a[0] - s * t[0], p[1] - a[1] - s * t[1])
 }
 
 /// Outward unit normals of the (up to two) boundary edges meeting at node `n`.
@@ -260,7 +266,7 @@ fn edge_normals_at(d: &Detection, n: u32) -> Vec<[f64; 2]> {
         .map(|&e| {
             let [a, b] = d.blocks.edges[e as usize];
             let (p, q) = (d.x[a as usize], d.x[b as usize]);
-            let len = (q[0] - p[0]).hypot(q[1] - p[1]);
+            let len = norm(q[0] - p[0], q[1] - p[1]);
             [(q[1] - p[1]) / len, -(q[0] - p[0]) / len]
         })
         .collect()
@@ -289,47 +295,62 @@ pub fn detect(
     previous: &Contacts,
     fresh: &(dyn Fn(&Touch) -> JointState + Sync),
 ) -> Contacts {
-    let history: HashMap<(u32, u32), usize> = previous
-        .node
-        .iter()
-        .zip(&previous.block)
-        .enumerate()
-        .map(|(c, (&n, &b))| ((n, b), c))
-        .collect();
+    // The previous contacts of each node (compressed rows, a counting sort), to find a persisting
+    // one's state without hashing.
+    let mut start = vec![0u32; d.x.len() + 1];
+    for &n in &previous.node {
+        start[n as usize + 1] += 1;
+    }
+    for i in 0..d.x.len() {
+        start[i + 1] += start[i];
+    }
+    let mut fill = start.clone();
+    let mut by_node = vec![0u32; previous.len()];
+    for (c, &n) in previous.node.iter().enumerate() {
+        by_node[fill[n as usize] as usize] = c as u32;
+        fill[n as usize] += 1;
+    }
+    let persisting = |node: u32, block: u32| {
+        by_node[start[node as usize] as usize..start[node as usize + 1] as usize]
+            .iter()
+            .map(|&c| c as usize)
+            .find(|&c| previous.block[c] == block)
+    };
     let pairs = candidate_pairs(d.blocks, d.x, d.tolerance);
-    let per_pair: Vec<Vec<(Found, u32)>> = pairs
+    let per_pair: Vec<Vec<Record>> = pairs
         .par_iter()
         .map(|&(a, b)| {
-            let mut v: Vec<(Found, u32)> = node_to_edge(d, a as usize, b as usize)
+            let both = node_to_edge(d, a as usize, b as usize)
                 .into_iter()
                 .map(|f| (f, b))
-                .collect();
-            v.extend(
-                node_to_edge(d, b as usize, a as usize)
-                    .into_iter()
-                    .map(|f| (f, a)),
-            );
-            v
+                .chain(
+                    node_to_edge(d, b as usize, a as usize)
+                        .into_iter()
+                        .map(|f| (f, a)),
+                );
+            both.map(|((node, edge, xi, mut touch, corner), block_b)| {
+                let (length, face) = contact_length(d, node, edge, block_b as usize);
+                touch.face = face;
+                let state = match persisting(node, block_b) {
+                    Some(c) => previous.state[c],
+                    None => fresh(&touch),
+                };
+                let material = material_of(d, node, edge);
+                (node, edge, block_b, xi, length, material, corner, state)
+            })
+            .collect()
         })
         .collect();
     let mut out = Contacts::default();
-    for list in per_pair {
-        for ((node, edge, xi, mut touch, corner), block_b) in list {
-            let (length, face) = contact_length(d, node, edge, block_b as usize);
-            touch.face = face;
-            let state = match history.get(&(node, block_b)) {
-                Some(&c) => previous.state[c],
-                None => fresh(&touch),
-            };
-            out.node.push(node);
-            out.edge.push(edge);
-            out.block.push(block_b);
-            out.xi.push(xi);
-            out.length.push(length);
-            out.material.push(material_of(d, node, edge));
-            out.corner.push(corner);
-            out.state.push(state);
-        }
+    for (node, edge, block, xi, length, material, corner, state) in per_pair.into_iter().flatten() {
+        out.node.push(node);
+        out.edge.push(edge);
+        out.block.push(block);
+        out.xi.push(xi);
+        out.length.push(length);
+        out.material.push(material);
+        out.corner.push(corner);
+        out.state.push(state);
     }
     out
 }
