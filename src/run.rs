@@ -60,6 +60,11 @@ pub fn run_scene(
     let start = Instant::now();
     let mut built = build(scene)?;
     let mut solver = Solver::new(&mut built.model, &scene.solve, scene.output.every);
+    anyhow::ensure!(
+        solver.params.dt.is_finite(),
+        "solve: no zone or contact stiffness to derive the time step from (a lone rigid or simple \
+         block without joints); make the block deformable or add joints"
+    );
     let mut writer = OutputWriter::new(out_dir, &scene.name)?;
     let mut writing = Writing {
         writer: &mut writer,

@@ -230,6 +230,32 @@ fn free_rigid_block_spins_without_distortion() {
     assert!(dist(b.model.bodies.centroid[0], c0) < 1e-14);
 }
 
+/// A lone rigid block in a dynamic run has nothing to derive a time step from: a clear error, not
+/// a run with an infinite step.
+#[test]
+fn lone_rigid_block_in_dynamics_is_a_clear_error() {
+    let text = r#"{
+        "name": "lone",
+        "materials": { "rock": { "density": 2500, "young": 10e9, "poisson": 0.25 } },
+        "region": { "polygon": [[0, 0], [1, 0], [1, 1], [0, 1]], "material": "rock" },
+        "zoning": { "edge_at_excavation": 0.5, "edge_far": 0.5 },
+        "blocks": { "mode": "rigid" },
+        "gravity": [0, -9.81],
+        "solve": { "mode": "dynamic", "damping": 0, "max_cycles": 10 }
+    }"#;
+    let scene = Scene::from_json(text, "lone").unwrap();
+    let out = std::env::temp_dir().join("adit_lone_rigid_block");
+    let err = adit::run::run_scene(&scene, &out, &mut Quiet)
+        .err()
+        .expect("no time step");
+    assert!(
+        err.to_string()
+            .starts_with("solve: no zone or contact stiffness"),
+        "{err}"
+    );
+    assert!(!out.join("summary.json").exists());
+}
+
 /// Voronoi grains confined by 1 MPa all round, starting from the matching in-situ stress: the
 /// grain model converges, no grain boundary fails, and the grains carry the confinement (their
 /// area-averaged stress equals the boundary stress, by the average-stress theorem).

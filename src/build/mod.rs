@@ -2,6 +2,7 @@
 //! in-situ stress in zones and joints, apply fixities, boundary tractions and gravity, and detect
 //! the contacts along the joints.
 
+mod bodies;
 mod boundary;
 mod geometry;
 #[cfg(test)]
@@ -14,15 +15,14 @@ use adit_meshing::{BoundaryEdge, Domain, EdgeKind, MeshStats};
 pub use boundary::add_tractions;
 pub use geometry::{Meshed, domain, joint_segments, mesh, zoning};
 
+use crate::contact::Contacts;
 use crate::contact::detect::{Detection, Touch, detect};
-use crate::contact::{Contacts, rounding};
 use crate::joint::{
     ContinuouslyYielding, CoulombSlip, FAILED, Glued, JointLaw, JointState, tan_deg,
 };
 use crate::law::{Elastic, ZoneLaw};
 use crate::model::blocks::{Blocks, NO_EDGE};
-use crate::model::bodies::{Bodies, BodyMode, DOFS, FIX_SPIN, NO_BODY, polygon_moments};
-use crate::model::{BODY, Gather, MaterialId, Model, Nodes, Zones, traction};
+use crate::model::{Gather, MaterialId, Model, Nodes, Zones, traction};
 use crate::scene::{BlockMode, InSitu, JointLawKind, Scene};
 
 /// A model ready to cycle, with what was learnt while building it.
@@ -114,69 +114,6 @@ fn assemble(meshed: &Meshed) -> Assembled {
     }
 }
 
-/// The rigid and simple blocks of `modes` as bodies: centroid, area and radius from the polygon,
-/// weight ρ A g, the in-situ stress at the centroid for a simple block, fixity from the boundary
-/// conditions on their nodes (any fixed node holds the block's rotation and strain, and the
-/// translation components it names); their nodes are marked `BODY`.
-fn bodies(
-    modes: &[BlockMode],
-    blocks: &Blocks,
-    nodes: &mut Nodes,
-    material: MaterialId,
-    law: &dyn ZoneLaw,
-    stress_at: impl Fn([f64; 2]) -> [f64; 4],
-    gravity: [f64; 2],
-) -> Bodies {
-    let mut out = Bodies {
-        of_node: vec![NO_BODY; nodes.len()],
-        ..Default::default()
-    };
-    for (b, &mode) in modes.iter().enumerate() {
-        let mode = match mode {
-            BlockMode::Deformable => continue,
-            BlockMode::Rigid => BodyMode::Rigid,
-            BlockMode::Simple => BodyMode::Simple,
-        };
-        let k = out.len() as u32;
-        let range = [blocks.node_start[b], blocks.node_start[b + 1]];
-        let m = polygon_moments(blocks.edge_range(b).map(|e| {
-            let [p, q] = blocks.edges[e];
-            (nodes.pos[p as usize], nodes.pos[q as usize])
-        }));
-        let c = m.centroid;
-        let (mut radius, mut fixed) = (0.0f64, 0u8);
-        for n in range[0] as usize..range[1] as usize {
-            let p = nodes.pos[n];
-            radius = radius.max((p[0] - c[0]).hypot(p[1] - c[1]));
-            if nodes.fixed[n] != 0 {
-                fixed |= nodes.fixed[n] | FIX_SPIN;
-            }
-            nodes.fixed[n] |= BODY;
-            out.of_node[n] = k;
-        }
-        let mass = law.density() * m.area;
-        out.block.push(b as u32);
-        out.mode.push(mode);
-        out.nodes.push(range);
-        out.centroid.push(c);
-        out.velocity.push([0.0; DOFS]);
-        out.mass.push(m.masses(law.density()));
-        out.force.push([0.0; DOFS]);
-        out.weight.push([mass * gravity[0], mass * gravity[1]]);
-        out.area.push(m.area);
-        out.radius.push(radius);
-        out.material.push(material);
-        out.stress.push(match mode {
-            BodyMode::Simple => stress_at(c),
-            BodyMode::Rigid => [0.0; 4],
-        });
-        out.state.push(0);
-        out.fixed.push(fixed);
-        out.step.push((c, c, [1.0, 0.0, 0.0, 1.0]));
-    }
-    out
-}
-
 /// Build the model of a validated scene.
 pub fn build(scene: &Scene) -> anyhow::Result<Built> {
     let meshed = mesh(scene)?;
@@ -246,7 +183,7 @@ pub fn build(scene: &Scene) -> anyhow::Result<Built> {
         });
     }
 
-    let mut bodies = bodies(
+    let mut bodies = bodies::bodies(
         &meshed.modes,
         &blocks,
         &mut nodes,
@@ -256,12 +193,7 @@ pub fn build(scene: &Scene) -> anyhow::Result<Built> {
         scene.gravity,
     );
     if !bodies.is_empty() {
-        let mean_radius = bodies.radius.iter().sum::<f64>() / bodies.len() as f64;
-        let round = scene.blocks.round.unwrap_or(0.01 * mean_radius);
-        let modes = &meshed.modes;
-        blocks.round = rounding::radii(&blocks, &nodes.pos, round, |b| {
-            modes[b] != BlockMode::Deformable
-        });
+        blocks.round = bodies::round(scene, &bodies, &blocks, &nodes.pos, &meshed.modes);
     }
     let body_of_block: BTreeMap<u32, u32> = bodies
         .block
