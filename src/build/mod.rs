@@ -20,10 +20,10 @@ use crate::contact::detect::{Detection, Touch, detect};
 use crate::joint::{
     ContinuouslyYielding, CoulombSlip, FAILED, Glued, JointLaw, JointState, tan_deg,
 };
-use crate::law::{Elastic, ZoneLaw};
+use crate::law::{Elastic, MohrCoulomb, ZoneLaw};
 use crate::model::blocks::{Blocks, NO_EDGE};
 use crate::model::{Gather, MaterialId, Model, Nodes, Zones, traction};
-use crate::scene::{BlockMode, InSitu, JointLawKind, Scene};
+use crate::scene::{BlockMode, InSitu, JointLawKind, Scene, ZoneLawKind};
 
 /// A model ready to cycle, with what was learnt while building it.
 pub struct Built {
@@ -135,7 +135,18 @@ pub fn build(scene: &Scene) -> anyhow::Result<Built> {
     let laws: Vec<Box<dyn ZoneLaw>> = scene
         .materials
         .values()
-        .map(|m| Box::new(Elastic::from_young(m.young, m.poisson, m.density)) as Box<dyn ZoneLaw>)
+        .map(|m| -> Box<dyn ZoneLaw> {
+            let elastic = Elastic::from_young(m.young, m.poisson, m.density);
+            match m.law {
+                ZoneLawKind::Elastic => Box::new(elastic),
+                ZoneLawKind::MohrCoulomb => {
+                    let c = m.cohesion.expect("validated");
+                    let phi = m.friction.expect("validated");
+                    let tension = m.tensile_strength.unwrap_or(f64::INFINITY);
+                    Box::new(MohrCoulomb::new(elastic, c, phi, m.dilation, tension))
+                }
+            }
+        })
         .collect();
     let region_mat = material_names
         .iter()

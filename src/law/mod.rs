@@ -1,8 +1,10 @@
 //! Zone constitutive laws behind one small trait; each law is one file.
 
 mod elastic;
+mod mohr_coulomb;
 
 pub use elastic::Elastic;
+pub use mohr_coulomb::{MohrCoulomb, SHEAR_NOW, SHEAR_PAST, TENSION_NOW, TENSION_PAST};
 
 use crate::model::Stress;
 

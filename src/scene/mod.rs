@@ -53,7 +53,7 @@ pub struct Scene {
     pub output: OutputSpec,
 }
 
-/// An isotropic elastic zone material.
+/// A zone material: isotropic elasticity, and the strength of the Mohr–Coulomb law.
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Material {
@@ -63,6 +63,30 @@ pub struct Material {
     pub young: f64,
     /// Poisson's ratio (dimensionless, −1 < ν < 0.5).
     pub poisson: f64,
+    /// Zone law: `elastic` (default) or `mohr_coulomb`.
+    #[serde(default)]
+    pub law: ZoneLawKind,
+    /// Mohr–Coulomb: cohesion c, Pa (required for that law).
+    #[serde(default)]
+    pub cohesion: Option<f64>,
+    /// Mohr–Coulomb: friction angle φ, degrees (required for that law).
+    #[serde(default)]
+    pub friction: Option<f64>,
+    /// Mohr–Coulomb: dilation angle ψ, degrees (default 0; at most φ).
+    #[serde(default)]
+    pub dilation: f64,
+    /// Mohr–Coulomb: tensile strength σt, Pa (default and cap: c / tan φ).
+    #[serde(default)]
+    pub tensile_strength: Option<f64>,
+}
+
+/// Which zone law a material follows.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ZoneLawKind {
+    #[default]
+    Elastic,
+    MohrCoulomb,
 }
 
 /// The modelled region: one polygon, its edge names and its material.
@@ -540,6 +564,29 @@ mod tests {
                 .starts_with("joint_materials.j.initial_friction: must be in [friction, 90)")
         );
         assert!(Scene::from_json(&joint(r#", "roughness": 1e-3"#), "t").is_ok());
+    }
+
+    #[test]
+    fn mohr_coulomb_material_needs_its_strength() {
+        let mc = |extra: &str| {
+            GOOD.replace(
+                "\"poisson\": 0.2",
+                &format!(r#""poisson": 0.2, "law": "mohr_coulomb"{extra}"#),
+            )
+        };
+        assert_eq!(
+            error_of(&mc(r#", "friction": 30"#)),
+            "materials.rock: `law: mohr_coulomb` needs `cohesion` and `friction`"
+        );
+        assert!(
+            error_of(&mc(r#", "cohesion": 1e6, "friction": 30, "dilation": 40"#))
+                .starts_with("materials.rock.dilation: must be in [0, friction]")
+        );
+        assert!(Scene::from_json(&mc(r#", "cohesion": 1e6, "friction": 30"#), "t").is_ok());
+        assert!(
+            error_of(&GOOD.replace("\"poisson\": 0.2", r#""poisson": 0.2, "cohesion": 1e6"#))
+                .contains("belong to `law: mohr_coulomb`")
+        );
     }
 
     #[test]

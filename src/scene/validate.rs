@@ -2,7 +2,7 @@
 
 use thiserror::Error;
 
-use super::{BoundaryCondition, JointLawKind, Scene};
+use super::{BoundaryCondition, JointLawKind, Material, Scene, ZoneLawKind};
 
 /// Why a scene cannot be used.
 #[derive(Debug, Error)]
@@ -26,6 +26,57 @@ fn invalid(path: impl Into<String>, reason: impl Into<String>) -> SceneError {
     SceneError::Invalid {
         path: path.into(),
         reason: reason.into(),
+    }
+}
+
+/// The Mohr–Coulomb fields of material `m` (path `p`): required and in range for that law, absent
+/// for the elastic one.
+fn validate_strength(p: &str, m: &Material) -> Result<(), SceneError> {
+    let given = m.cohesion.is_some()
+        || m.friction.is_some()
+        || m.tensile_strength.is_some()
+        || m.dilation != 0.0;
+    match m.law {
+        ZoneLawKind::Elastic if given => Err(invalid(
+            p,
+            "cohesion, friction, dilation and tensile_strength belong to `law: mohr_coulomb`",
+        )),
+        ZoneLawKind::Elastic => Ok(()),
+        ZoneLawKind::MohrCoulomb => {
+            let (Some(c), Some(phi)) = (m.cohesion, m.friction) else {
+                return Err(invalid(
+                    p,
+                    "`law: mohr_coulomb` needs `cohesion` and `friction`",
+                ));
+            };
+            if !(c >= 0.0 && c.is_finite()) {
+                return Err(invalid(
+                    format!("{p}.cohesion"),
+                    format!("must be zero or positive, got {c}"),
+                ));
+            }
+            if !(0.0..90.0).contains(&phi) {
+                return Err(invalid(
+                    format!("{p}.friction"),
+                    format!("must be in [0, 90) degrees, got {phi}"),
+                ));
+            }
+            if !(0.0..=phi).contains(&m.dilation) {
+                return Err(invalid(
+                    format!("{p}.dilation"),
+                    format!("must be in [0, friction] degrees, got {}", m.dilation),
+                ));
+            }
+            if let Some(t) = m.tensile_strength
+                && (t.is_nan() || t < 0.0)
+            {
+                return Err(invalid(
+                    format!("{p}.tensile_strength"),
+                    format!("must be zero or positive, got {t}"),
+                ));
+            }
+            Ok(())
+        }
     }
 }
 
@@ -65,6 +116,7 @@ impl Scene {
                     ),
                 ));
             }
+            validate_strength(&p, m)?;
         }
         if !self.materials.contains_key(&self.region.material) {
             return Err(invalid(

@@ -11,6 +11,7 @@ pub mod modes;
 pub mod patch;
 pub mod plot;
 pub mod report;
+pub mod salencon;
 pub mod scaling;
 
 use std::path::PathBuf;

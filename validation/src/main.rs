@@ -8,7 +8,7 @@ use adit::scene::BlockMode;
 use adit_validation::kirsch_case::{KirschResult, OuterLoad, run, scaled};
 use adit_validation::plot::{Series, speed_and_convergence};
 use adit_validation::report::{CaseReport, fitted_order, observed_order};
-use adit_validation::{direct_shear, glued, gravity, incline, modes, patch, scaling};
+use adit_validation::{direct_shear, glued, gravity, incline, modes, patch, salencon, scaling};
 use plotters::style::RGBColor;
 
 /// Uniform refinement factors of the Kirsch levels (1 = the shipped model's zoning).
@@ -170,6 +170,14 @@ fn main() -> anyhow::Result<()> {
     print_row(&shear);
     let yielding = direct_shear::run_yielding(0.0625)?;
     print_row(&yielding);
+    let salencon_cases = vec![
+        salencon::run(&scene, 2.0)?,
+        salencon::run(&scene, 1.0)?,
+        salencon::run(&scene, 0.6)?,
+    ];
+    for r in &salencon_cases {
+        print_row(r);
+    }
     let jointed = Scene::load(&root.join("models/jointed_tunnel.json"))?;
     let mixed = Scene::load(&root.join("models/jointed_tunnel_mixed.json"))?;
     let mode_runs = modes::table(&jointed, Some(&mixed))?;
@@ -198,6 +206,7 @@ fn main() -> anyhow::Result<()> {
     all.push(shear.clone());
     all.push(yielding.clone());
     all.extend(mode_reports.iter().cloned());
+    all.extend(salencon_cases.iter().cloned());
     let out = root.join("target/validation");
     std::fs::create_dir_all(&out)?;
     std::fs::write(out.join("report.json"), serde_json::to_string_pretty(&all)?)?;
@@ -328,6 +337,19 @@ fn main() -> anyhow::Result<()> {
          (`displacement`: largest displacement relative to the self-weight settlement of the top).\n"
     );
     table(&mut md, &gravity_cases);
+    let _ = writeln!(md, "\n## Mohr–Coulomb rock: Salençon's hole\n");
+    let _ = writeln!(
+        md,
+        "The Kirsch geometry (a = 1 m, 40 m square, zoning scaled ×2, ×1, ×0.6) in Mohr–Coulomb rock (E = 10 GPa, \
+         ν = 0.25, c = 5 MPa, φ = 30°, ψ = 0, no tension beyond c/tan φ) under a hydrostatic p0 = 30 MPa, the hole \
+         excavated at once (zones start at −p0, the wall is free), against Salençon's (1969) elastic–perfectly \
+         plastic solution: plastic radius Rp = a[2/(Kp+1)·(p0+q)/(pi+q)]^(1/(Kp−1)) (Kp = (1+sin φ)/(1−sin φ), \
+         q = 2c cos φ/((1−sin φ)(Kp−1))) and the radial and hoop stresses in the plastic and elastic zones. \
+         `plastic_radius`: radius of the circle with the hole's area plus that of the zones that have yielded in \
+         shear; `stress_l2`: area-weighted L2 of (σr, σθ) over zones with centroid r ≤ 3Rp. The wall \
+         displacement (which needs the flow rule's closed form) follows with issue 4.\n"
+    );
+    table(&mut md, &salencon_cases);
     let _ = writeln!(md, "\n## Jointed rock: glued joints\n");
     let _ = writeln!(
         md,

@@ -1,0 +1,230 @@
+//! Mohr–Coulomb elastic–perfectly plastic zone law with tension cut-off and non-associated shear
+//! flow, in principal stresses (Itasca, FLAC/FLAC3D *Theory and Background*, "Mohr-Coulomb
+//! Model"). With σ1 ≤ σ2 ≤ σ3 (compression negative; σzz is one of the three in plane strain):
+//!
+//!   shear yield   fs = σ1 − σ3 Nφ + 2c√Nφ  (failure when fs < 0),  potential gs = σ1 − σ3 Nψ,
+//!   tension yield ft = σt − σ3              (failure when ft < 0),  potential gt = −σ3,
+//!
+//! Nφ = (1 + sin φ)/(1 − sin φ), Nψ likewise for the dilation angle ψ. An elastic trial stress that
+//! violates a criterion returns to it along the flow rule (α1 = K + 4G/3, α2 = K − 2G/3):
+//!
+//!   shear:   λs = fs / ((α1 − α2Nψ) − (α2 − α1Nψ)Nφ),
+//!            σ1 −= λs(α1 − α2Nψ),  σ2 −= λs α2(1 − Nψ),  σ3 −= λs(α2 − α1Nψ);
+//!   tension: λt = (σ3 − σt)/α1,  σ1 −= λt α2,  σ2 −= λt α2,  σ3 −= λt α1,
+//!
+//! the choice between them made by the diagonal h = σ3 − σt + αP(σ1 − σP) (αP = √(1 + Nφ²) + Nφ,
+//! σP = σt Nφ − 2c√Nφ): shear when h ≤ 0, tension when h > 0. The principal directions are kept.
+
+use super::{Elastic, StrainIncrement, ZoneLaw};
+use crate::model::Stress;
+
+/// Zone state bit: yielding in shear now.
+pub const SHEAR_NOW: u8 = 1;
+/// Zone state bit: yielding in tension now.
+pub const TENSION_NOW: u8 = 2;
+/// Zone state bit: has yielded in shear at some time.
+pub const SHEAR_PAST: u8 = 4;
+/// Zone state bit: has yielded in tension at some time.
+pub const TENSION_PAST: u8 = 8;
+
+/// Mohr–Coulomb material.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MohrCoulomb {
+    pub elastic: Elastic,
+    /// Cohesion c, Pa.
+    pub cohesion: f64,
+    /// Friction angle φ, rad.
+    pub friction: f64,
+    /// Dilation angle ψ ≤ φ, rad.
+    pub dilation: f64,
+    /// Tensile strength σt, Pa (at most c / tan φ, the apex of the shear criterion).
+    pub tension: f64,
+}
+
+impl MohrCoulomb {
+    /// From c (Pa), φ and ψ (degrees) and σt (Pa, capped at c / tan φ).
+    pub fn new(
+        elastic: Elastic,
+        cohesion: f64,
+        friction_deg: f64,
+        dilation_deg: f64,
+        tension: f64,
+    ) -> Self {
+        let friction = friction_deg.to_radians();
+        let apex = if friction > 0.0 {
+            cohesion / friction.tan()
+        } else {
+            f64::INFINITY
+        };
+        MohrCoulomb {
+            elastic,
+            cohesion,
+            friction,
+            dilation: dilation_deg.to_radians(),
+            tension: tension.min(apex),
+        }
+    }
+
+    /// Return principal stresses `p` (ascending, Pa) to the yield surface; the state bits set now.
+    fn correct(&self, p: &mut [f64; 3]) -> u8 {
+        let n = |a: f64| (1.0 + a.sin()) / (1.0 - a.sin());
+        let (n_phi, n_psi) = (n(self.friction), n(self.dilation));
+        let (k, g) = (self.elastic.bulk, self.elastic.shear);
+        let (a1, a2) = (k + 4.0 / 3.0 * g, k - 2.0 / 3.0 * g);
+        let (c, st) = (self.cohesion, self.tension);
+        let fs = p[0] - p[2] * n_phi + 2.0 * c * n_phi.sqrt();
+        let ft = st - p[2];
+        if fs >= 0.0 && ft >= 0.0 {
+            return 0;
+        }
+        let alpha_p = (1.0 + n_phi * n_phi).sqrt() + n_phi;
+        let sigma_p = st * n_phi - 2.0 * c * n_phi.sqrt();
+        let h = p[2] - st + alpha_p * (p[0] - sigma_p);
+        if fs < 0.0 && h <= 0.0 {
+            let ls = fs / ((a1 - a2 * n_psi) - (a2 - a1 * n_psi) * n_phi);
+            p[0] -= ls * (a1 - a2 * n_psi);
+            p[1] -= ls * a2 * (1.0 - n_psi);
+            p[2] -= ls * (a2 - a1 * n_psi);
+            SHEAR_NOW
+        } else if ft < 0.0 {
+            let lt = (p[2] - st) / a1;
+            p[0] -= lt * a2;
+            p[1] -= lt * a2;
+            p[2] -= lt * a1;
+            TENSION_NOW
+        } else {
+            0
+        }
+    }
+}
+
+impl ZoneLaw for MohrCoulomb {
+    /// Elastic trial (plane strain), then the return in principal stresses; the in-plane principal
+    /// directions are kept: σ = c' I + (r'/r)(σ − c I) in the plane, with c, r the centre and
+    /// radius of the in-plane Mohr circle before and c', r' after.
+    fn update(&self, s: &mut Stress, state: &mut u8, de: &StrainIncrement) {
+        self.elastic.update(s, state, de);
+        let (c, d, t) = (0.5 * (s[0] + s[1]), 0.5 * (s[0] - s[1]), s[3]);
+        let r = (d * d + t * t).sqrt();
+        // Principal values with their origin: 0 in-plane minor, 1 in-plane major, 2 out-of-plane.
+        let mut v = [(c - r, 0u8), (c + r, 1), (s[2], 2)];
+        v.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let mut p = [v[0].0, v[1].0, v[2].0];
+        let now = self.correct(&mut p);
+        *state = (*state & (SHEAR_PAST | TENSION_PAST))
+            | now
+            | if now & SHEAR_NOW != 0 { SHEAR_PAST } else { 0 }
+            | if now & TENSION_NOW != 0 {
+                TENSION_PAST
+            } else {
+                0
+            };
+        if now == 0 {
+            return;
+        }
+        let mut by_origin = [0.0; 3];
+        for (k, &(_, origin)) in v.iter().enumerate() {
+            by_origin[origin as usize] = p[k];
+        }
+        let (minor, major) = (by_origin[0], by_origin[1]);
+        let c_new = 0.5 * (minor + major);
+        let scale = if r > 0.0 {
+            0.5 * (major - minor) / r
+        } else {
+            0.0
+        };
+        s[0] = c_new + d * scale;
+        s[1] = c_new - d * scale;
+        s[3] = t * scale;
+        s[2] = by_origin[2];
+    }
+
+    fn moduli(&self) -> (f64, f64) {
+        (self.elastic.bulk, self.elastic.shear)
+    }
+
+    fn density(&self) -> f64 {
+        self.elastic.density
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn rock() -> MohrCoulomb {
+        MohrCoulomb::new(
+            Elastic::from_young(10e9, 0.25, 2500.0),
+            1e6,
+            30.0,
+            0.0,
+            0.5e6,
+        )
+    }
+
+    /// Principal stresses, ascending.
+    fn principal(s: &Stress) -> [f64; 3] {
+        let (c, r) = (
+            0.5 * (s[0] + s[1]),
+            (0.25 * (s[0] - s[1]).powi(2) + s[3] * s[3]).sqrt(),
+        );
+        let mut p = [c - r, c + r, s[2]];
+        p.sort_by(f64::total_cmp);
+        p
+    }
+
+    /// Biaxial compression at (nearly) constant lateral stress: the axial stress stops at the
+    /// Mohr–Coulomb strength σ1 = σ3 Nφ − 2c√Nφ of the current σ3 and stays there.
+    #[test]
+    fn compression_is_capped_by_the_strength() {
+        let law = rock();
+        let mut s = [-2e6, -2e6, -1e6, 0.0];
+        let mut state = 0;
+        for _ in 0..4000 {
+            // Shorten in y while the lateral stress is held by expanding in x as needed.
+            let mut de = [0.0, -1e-6, 0.0];
+            let a1 = law.elastic.bulk + 4.0 / 3.0 * law.elastic.shear;
+            let a2 = law.elastic.bulk - 2.0 / 3.0 * law.elastic.shear;
+            de[0] = -(s[0] + 2e6 + a2 * de[1]) / a1;
+            law.update(&mut s, &mut state, &de);
+        }
+        let n_phi: f64 = 3.0; // φ = 30°
+        let p = principal(&s);
+        assert!((p[2] + 2e6).abs() < 0.01 * 2e6, "{p:?}");
+        let strength = p[2] * n_phi - 2.0 * 1e6 * n_phi.sqrt();
+        assert!(
+            (p[0] - strength).abs() < 1e-6 * strength.abs(),
+            "{p:?} vs {strength}"
+        );
+        assert_eq!(state, SHEAR_NOW | SHEAR_PAST);
+        // Unloading leaves the past flag only.
+        law.update(&mut s, &mut state, &[0.0, 1e-5, 0.0]);
+        assert_eq!(state, SHEAR_PAST);
+    }
+
+    /// Tension beyond σt returns the largest principal stress to σt (tension flags), and the
+    /// in-plane principal directions are kept.
+    #[test]
+    fn tension_is_cut_off_keeping_directions() {
+        let law = rock();
+        let mut s = [0.0, 0.0, 0.0, 0.0];
+        let mut state = 0;
+        // Pure extension along 45°: Δεxx = Δεyy = e/2, Δγxy = e.
+        law.update(&mut s, &mut state, &[0.5e-4, 0.5e-4, 1e-4]);
+        let p = principal(&s);
+        assert!((p[2] - 0.5e6).abs() < 1e-6, "{p:?}");
+        assert_eq!(state & TENSION_NOW, TENSION_NOW);
+        // The major axis is still at 45°: σxx = σyy.
+        assert!((s[0] - s[1]).abs() < 1e-6 * s[3].abs().max(1.0));
+    }
+
+    #[test]
+    fn elastic_states_are_untouched() {
+        let law = rock();
+        let mut s = [-5e6, -4e6, -3e6, 0.2e6];
+        let before = s;
+        let mut state = 0;
+        law.update(&mut s, &mut state, &[0.0; 3]);
+        assert_eq!((s, state), (before, 0));
+    }
+}
