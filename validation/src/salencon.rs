@@ -8,7 +8,14 @@
 //!   plastic zone    σr = −[(pi + q)(r/a)^{Kp−1} − q],  σθ = −[Kp (pi + q)(r/a)^{Kp−1} − q],
 //!   elastic zone    σr = −p0 + (p0 − pe)(Rp/r)²,  σθ = −p0 − (p0 − pe)(Rp/r)²,  pe = (2p0 − σc)/(Kp + 1).
 //!
-//! (tension positive in the formulas as in adit). The hole is excavated at once: the zones start at
+//! (tension positive in the formulas as in adit). The radial displacement follows from
+//! compatibility with the flow rule ε_r^p = −Nψ ε_θ^p (shear potential σ1 − σ3 Nψ, σ1 = σθ, σ3 = σr)
+//! and the elastic strains of the stress change (plane strain):
+//!
+//!   du/dr + Nψ u/r = ε_r^e(r) + Nψ ε_θ^e(r)  on a ≤ r ≤ Rp,   u(Rp) = −(p0 − pe) Rp / (2G),
+//!
+//! a linear ODE in u integrated here to round-off (RK4 on a fine grid; Salençon's solution in
+//! closed form integrates the same equation). The hole is excavated at once: the zones start at
 //! −p0 and the free wall unloads them.
 
 use std::time::Instant;
@@ -35,6 +42,12 @@ pub struct Salencon {
     pub cohesion: f64,
     /// Friction angle, rad.
     pub friction: f64,
+    /// Dilation angle, rad.
+    pub dilation: f64,
+    /// Shear modulus, Pa.
+    pub shear: f64,
+    /// Poisson's ratio.
+    pub poisson: f64,
 }
 
 impl Salencon {
@@ -72,11 +85,51 @@ impl Salencon {
             (-self.p0 + k, -self.p0 - k)
         }
     }
+
+    /// Radial displacement of the wall, m (negative: inward), from the compatibility ODE above.
+    pub fn wall_displacement(&self) -> f64 {
+        let rp = self.plastic_radius();
+        let (sr_e, _) = self.stress(rp);
+        // Elastic zone: u = −(p0 − pe) Rp²/(2G r), pe = −σr(Rp).
+        let u_rp = -(self.p0 + sr_e) * rp / (2.0 * self.shear);
+        if rp <= self.radius {
+            return u_rp;
+        }
+        let n_psi = (1.0 + self.dilation.sin()) / (1.0 - self.dilation.sin());
+        let nu = self.poisson;
+        // Plane-strain elastic strains of the stress change from −p0.
+        let elastic = |r: f64| {
+            let (sr, st) = self.stress(r);
+            let (dr, dt) = (sr + self.p0, st + self.p0);
+            let k = 1.0 / (2.0 * self.shear);
+            (
+                k * ((1.0 - nu) * dr - nu * dt),
+                k * ((1.0 - nu) * dt - nu * dr),
+            )
+        };
+        let du = |r: f64, u: f64| {
+            let (er, et) = elastic(r);
+            er + n_psi * et - n_psi * u / r
+        };
+        let steps = 20_000;
+        let h = (self.radius - rp) / steps as f64;
+        let (mut r, mut u) = (rp, u_rp);
+        for _ in 0..steps {
+            let k1 = du(r, u);
+            let k2 = du(r + 0.5 * h, u + 0.5 * h * k1);
+            let k3 = du(r + 0.5 * h, u + 0.5 * h * k2);
+            let k4 = du(r + h, u + h * k3);
+            u += h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+            r += h;
+        }
+        u
+    }
 }
 
 /// The shipped Kirsch geometry (a = 1 m in a 40 m square, graded zoning scaled by `factor`) in
-/// Mohr–Coulomb rock (E = 10 GPa, ν = 0.25, c = 5 MPa, φ = 30°, ψ = 0) under p0 = 30 MPa.
-fn scene(kirsch: &Scene, factor: f64) -> (Scene, Salencon) {
+/// Mohr–Coulomb rock (E = 10 GPa, ν = 0.25, c = 5 MPa, φ = 30°, ψ = 0) under p0 = 30 MPa, with a
+/// support pressure `pi` (Pa) on the wall.
+fn scene(kirsch: &Scene, factor: f64, pi: f64) -> (Scene, Salencon) {
     let mut s = scaled(kirsch, factor);
     s.name = "salencon".into();
     let m = s
@@ -86,12 +139,20 @@ fn scene(kirsch: &Scene, factor: f64) -> (Scene, Salencon) {
     m.law = ZoneLawKind::MohrCoulomb;
     m.cohesion = Some(5e6);
     m.friction = Some(30.0);
+    let (young, poisson) = (m.young, m.poisson);
     let p0 = 30e6;
     s.in_situ.sxx = -p0;
     s.in_situ.syy = -p0;
     s.in_situ.szz = Some(-p0);
     s.solve.ratio = 1e-6;
     s.solve.max_cycles = 400_000;
+    if pi > 0.0 {
+        let wall = s.excavations[0].name.clone();
+        s.boundary.push(
+            serde_json::from_value(serde_json::json!({ "part": wall, "normal_stress": -pi }))
+                .expect("valid boundary condition"),
+        );
+    }
     let radius = s.excavations[0]
         .circle
         .as_ref()
@@ -100,19 +161,23 @@ fn scene(kirsch: &Scene, factor: f64) -> (Scene, Salencon) {
     let closed = Salencon {
         radius,
         p0,
-        pi: 0.0,
+        pi,
         cohesion: 5e6,
         friction: 30f64.to_radians(),
+        dilation: 0.0,
+        shear: young / (2.0 * (1.0 + poisson)),
+        poisson,
     };
     (s, closed)
 }
 
 /// Solve and compare: `plastic_radius` (radius of a circle with the hole's area plus the yielded
-/// zones' area, against Rp) and `stress_l2` (area-weighted L2 of (σr, σθ) over zones with centroid
-/// r ≤ 3Rp, relative to the exact norm there).
-pub fn run(kirsch: &Scene, factor: f64) -> anyhow::Result<CaseReport> {
+/// zones' area, against Rp), `stress_l2` (area-weighted L2 of (σr, σθ) over zones with centroid
+/// r ≤ 3Rp, relative to the exact norm there) and `wall_displacement` (mean radial displacement of
+/// the wall nodes against u(a)).
+pub fn run(kirsch: &Scene, factor: f64, pi: f64) -> anyhow::Result<CaseReport> {
     let start = Instant::now();
-    let (sc, exact) = scene(kirsch, factor);
+    let (sc, exact) = scene(kirsch, factor, pi);
     let mut b = build(&sc)?;
     let mut solver = Solver::new(&mut b.model, &sc.solve, 0);
     let sol = solver.solve(&mut b.model, &mut Quiet);
@@ -146,9 +211,25 @@ pub fn run(kirsch: &Scene, factor: f64) -> anyhow::Result<CaseReport> {
         count += 1.0;
     }
     let rp_h = ((hole_area + yielded) / std::f64::consts::PI).sqrt();
+    let wall = b
+        .part_nodes
+        .get(&sc.excavations[0].name)
+        .ok_or_else(|| anyhow::anyhow!("no wall nodes"))?;
+    let u_wall = wall
+        .iter()
+        .map(|&n| {
+            let (p, u) = (m.nodes.pos[n as usize], m.nodes.disp[n as usize]);
+            (u[0] * p[0] + u[1] * p[1]) / p[0].hypot(p[1])
+        })
+        .sum::<f64>()
+        / wall.len() as f64;
+    let u_exact = exact.wall_displacement();
     let h = (h2 / count).sqrt();
     Ok(CaseReport::new(
-        format!("Salençon: hole in Mohr–Coulomb rock, p0 = 30 MPa, Rp = {rp:.3} m (×{factor})"),
+        format!(
+            "Salençon: hole in Mohr–Coulomb rock, p0 = 30 MPa, pi = {} MPa, Rp = {rp:.3} m (×{factor})",
+            pi / 1e6
+        ),
         z.len(),
         sol.cycles,
         start.elapsed().as_secs_f64(),
@@ -156,6 +237,10 @@ pub fn run(kirsch: &Scene, factor: f64) -> anyhow::Result<CaseReport> {
         &[
             ("plastic_radius", (rp_h - rp).abs() / rp),
             ("stress_l2", (num / den).sqrt()),
+            (
+                "wall_displacement",
+                (u_wall - u_exact).abs() / u_exact.abs(),
+            ),
         ],
     ))
 }
@@ -167,7 +252,7 @@ mod tests {
     /// The closed form is continuous at Rp and meets the wall condition σr(a) = −pi.
     #[test]
     fn closed_form_is_consistent() {
-        let (_, s) = scene(&crate::shipped_kirsch().unwrap(), 1.0);
+        let (_, s) = scene(&crate::shipped_kirsch().unwrap(), 1.0, 0.0);
         let rp = s.plastic_radius();
         assert!(rp > 1.4 && rp < 1.6, "{rp}");
         let (a, b) = (s.stress(rp * (1.0 - 1e-9)), s.stress(rp * (1.0 + 1e-9)));
@@ -176,14 +261,23 @@ mod tests {
             "{a:?} {b:?}"
         );
         assert!(s.stress(s.radius).0.abs() < 1e-6);
+        // Without yield (p0 below the strength) the wall moves as in elasticity: −p0 a / (2G).
+        let elastic = Salencon { p0: 5e6, ..s };
+        let u = elastic.wall_displacement();
+        assert!((u + 5e6 * s.radius / (2.0 * s.shear)).abs() < 1e-12, "{u}");
+        // Yield makes the wall move more than the elastic −p0 a/(2G).
+        assert!(s.wall_displacement() < -s.p0 * s.radius / (2.0 * s.shear));
     }
 
-    /// Coarse twin (zones twice the shipped size).
+    /// Coarse twin (zones twice the shipped size), without and with a support pressure.
     #[test]
     fn plastic_zone_matches_salencon() {
-        let r = run(&crate::shipped_kirsch().unwrap(), 2.0).unwrap();
-        eprintln!("{r:?}");
-        assert!(r.errors["plastic_radius"] < 0.05, "{r:?}");
-        assert!(r.errors["stress_l2"] < 0.05, "{r:?}");
+        for pi in [0.0, 2e6] {
+            let r = run(&crate::shipped_kirsch().unwrap(), 2.0, pi).unwrap();
+            eprintln!("{r:?}");
+            assert!(r.errors["plastic_radius"] < 0.05, "{r:?}");
+            assert!(r.errors["stress_l2"] < 0.05, "{r:?}");
+            assert!(r.errors["wall_displacement"] < 0.05, "{r:?}");
+        }
     }
 }
