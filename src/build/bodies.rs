@@ -64,6 +64,7 @@ pub fn bodies(
             BodyMode::Rigid => [0.0; 4],
         });
         out.state.push(0);
+        out.plastic.push(0.0);
         out.fixed.push(fixed);
         out.step.push((c, c, [1.0, 0.0, 0.0, 1.0]));
     }

@@ -143,7 +143,13 @@ pub fn build(scene: &Scene) -> anyhow::Result<Built> {
                     let c = m.cohesion.expect("validated");
                     let phi = m.friction.expect("validated");
                     let tension = m.tensile_strength.unwrap_or(f64::INFINITY);
-                    Box::new(MohrCoulomb::new(elastic, c, phi, m.dilation, tension))
+                    let mut law = MohrCoulomb::new(elastic, c, phi, m.dilation, tension);
+                    law.softening = m
+                        .softening
+                        .iter()
+                        .map(|p| (p.plastic_strain, p.cohesion, p.friction.to_radians()))
+                        .collect();
+                    Box::new(law)
                 }
             }
         })

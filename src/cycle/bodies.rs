@@ -54,58 +54,61 @@ impl Cycle {
             .zip(bodies.centroid.par_iter_mut())
             .zip(bodies.stress.par_iter_mut())
             .zip(bodies.state.par_iter_mut())
+            .zip(bodies.plastic.par_iter_mut())
             .zip(bodies.area.par_iter_mut())
             .zip(bodies.step.par_iter_mut())
             .enumerate()
             .with_min_len(64)
-            .for_each(|(k, ((((((v, q_out), c), s), state), area), step))| {
-                let mut q = [0.0; DOFS];
-                for n in range[k][0] as usize..range[k][1] as usize {
-                    let f = force[n];
-                    let r = [pos[n][0] + disp[n][0] - c[0], pos[n][1] + disp[n][1] - c[1]];
-                    let t = velocity_map(r);
-                    for d in 0..DOFS {
-                        q[d] += t[0][d] * f[0] + t[1][d] * f[1];
+            .for_each(
+                |(k, (((((((v, q_out), c), s), state), plastic), area), step))| {
+                    let mut q = [0.0; DOFS];
+                    for n in range[k][0] as usize..range[k][1] as usize {
+                        let f = force[n];
+                        let r = [pos[n][0] + disp[n][0] - c[0], pos[n][1] + disp[n][1] - c[1]];
+                        let t = velocity_map(r);
+                        for d in 0..DOFS {
+                            q[d] += t[0][d] * f[0] + t[1][d] * f[1];
+                        }
                     }
-                }
-                q[0] += weight[k][0];
-                q[1] += weight[k][1];
-                let simple = mode[k] == BodyMode::Simple;
-                if simple {
-                    q[3] -= *area * s[0];
-                    q[4] -= *area * s[1];
-                    q[5] -= 2.0 * *area * s[3];
-                }
-                let dofs = mode[k].dofs();
-                q[dofs..].fill(0.0);
-                for d in 0..dofs {
-                    let flag = [FIX_X, FIX_Y][..].get(d).copied().unwrap_or(FIX_SPIN);
-                    if fixed[k] & flag != 0 {
-                        q[d] = 0.0;
-                        continue;
+                    q[0] += weight[k][0];
+                    q[1] += weight[k][1];
+                    let simple = mode[k] == BodyMode::Simple;
+                    if simple {
+                        q[3] -= *area * s[0];
+                        q[4] -= *area * s[1];
+                        q[5] -= 2.0 * *area * s[3];
                     }
-                    let damped =
-                        q[d] - alpha * q[d].abs() * v[d].signum() * (v[d] != 0.0) as u8 as f64;
-                    v[d] += damped / mass[k][d] * dt;
-                }
-                *q_out = q;
-                let old = *c;
-                *c = [c[0] + v[0] * dt, c[1] + v[1] * dt];
-                let spin = v[2] * dt;
-                let map = if simple {
-                    let (exx, eyy, exy) = (v[3] * dt, v[4] * dt, v[5] * dt);
-                    let de: StrainIncrement = [exx, eyy, 2.0 * exy];
-                    laws[material[k].0 as usize].update(s, state, &de);
-                    rotate(s, spin);
-                    let a = [1.0 + exx, exy - spin, exy + spin, 1.0 + eyy];
-                    *area *= a[0] * a[3] - a[1] * a[2];
-                    a
-                } else {
-                    let (sn, cs) = spin.sin_cos();
-                    [cs, -sn, sn, cs]
-                };
-                *step = (old, *c, map);
-            });
+                    let dofs = mode[k].dofs();
+                    q[dofs..].fill(0.0);
+                    for d in 0..dofs {
+                        let flag = [FIX_X, FIX_Y][..].get(d).copied().unwrap_or(FIX_SPIN);
+                        if fixed[k] & flag != 0 {
+                            q[d] = 0.0;
+                            continue;
+                        }
+                        let damped =
+                            q[d] - alpha * q[d].abs() * v[d].signum() * (v[d] != 0.0) as u8 as f64;
+                        v[d] += damped / mass[k][d] * dt;
+                    }
+                    *q_out = q;
+                    let old = *c;
+                    *c = [c[0] + v[0] * dt, c[1] + v[1] * dt];
+                    let spin = v[2] * dt;
+                    let map = if simple {
+                        let (exx, eyy, exy) = (v[3] * dt, v[4] * dt, v[5] * dt);
+                        let de: StrainIncrement = [exx, eyy, 2.0 * exy];
+                        laws[material[k].0 as usize].update(s, state, plastic, &de);
+                        rotate(s, spin);
+                        let a = [1.0 + exx, exy - spin, exy + spin, 1.0 + eyy];
+                        *area *= a[0] * a[3] - a[1] * a[2];
+                        a
+                    } else {
+                        let (sn, cs) = spin.sin_cos();
+                        [cs, -sn, sn, cs]
+                    };
+                    *step = (old, *c, map);
+                },
+            );
         let step = &bodies.step;
         nodes
             .vel

@@ -90,13 +90,14 @@ impl Cycle {
             .stress
             .par_iter_mut()
             .zip(zones.state.par_iter_mut())
+            .zip(zones.plastic.par_iter_mut())
             .zip(self.zone_force.par_chunks_mut(3))
             .zip(zones.nodes.par_iter())
             .zip(zones.grad.par_iter())
             .zip(zones.area.par_iter())
             .zip(zones.material.par_iter())
             .with_min_len(1024)
-            .for_each(|((((((s, state), f), t), g), &area), mat)| {
+            .for_each(|(((((((s, state), plastic), f), t), g), &area), mat)| {
                 let v = t.map(|n| vel[n as usize]);
                 let de: StrainIncrement = [
                     (g[0] * v[0][0] + g[1] * v[1][0] + g[2] * v[2][0]) * dt,
@@ -109,7 +110,7 @@ impl Cycle {
                         + g[2] * v[2][1])
                         * dt,
                 ];
-                laws[mat.0 as usize].update(s, state, &de);
+                laws[mat.0 as usize].update(s, state, plastic, &de);
                 for i in 0..3 {
                     let (bx, by) = (g[i], g[3 + i]);
                     f[i] = [

@@ -30,7 +30,7 @@ impl ZoneLaw for Elastic {
     /// Δσxx = α1 Δεxx + α2 Δεyy, Δσyy = α2 Δεxx + α1 Δεyy, Δσzz = α2 (Δεxx + Δεyy), Δσxy = G Δγxy
     /// (Itasca, FLAC *Theory and Background*, §1.3.3).
     #[inline]
-    fn update(&self, s: &mut Stress, _state: &mut u8, de: &StrainIncrement) {
+    fn update(&self, s: &mut Stress, _state: &mut u8, _plastic: &mut f64, de: &StrainIncrement) {
         let a1 = self.bulk + 4.0 / 3.0 * self.shear;
         let a2 = self.bulk - 2.0 / 3.0 * self.shear;
         s[0] += a1 * de[0] + a2 * de[1];
@@ -58,7 +58,7 @@ mod tests {
         let (e, nu) = (10e9, 0.25);
         let law = Elastic::from_young(e, nu, 2500.0);
         let mut s = [0.0; 4];
-        law.update(&mut s, &mut 0, &[1e-4, 0.0, 0.0]);
+        law.update(&mut s, &mut 0, &mut 0.0, &[1e-4, 0.0, 0.0]);
         let lambda = e * nu / ((1.0 + nu) * (1.0 - 2.0 * nu));
         let mu = e / (2.0 * (1.0 + nu));
         assert_relative_eq!(s[0], (lambda + 2.0 * mu) * 1e-4, max_relative = 1e-12);

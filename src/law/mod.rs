@@ -11,10 +11,12 @@ use crate::model::Stress;
 /// Strain increment of a zone over one step: [Δεxx, Δεyy, Δγxy] (engineering shear), dimensionless.
 pub type StrainIncrement = [f64; 3];
 
-/// A zone constitutive law: updates stress (Pa) and yield state from a plane-strain strain increment.
+/// A zone constitutive law: updates stress (Pa), yield state and plastic shear strain from a
+/// plane-strain strain increment.
 pub trait ZoneLaw: Send + Sync {
-    /// Advance `stress` (Pa) and `state` (yield bit flags) by the strain increment `de`.
-    fn update(&self, stress: &mut Stress, state: &mut u8, de: &StrainIncrement);
+    /// Advance `stress` (Pa), `state` (yield bit flags) and `plastic` (the accumulated plastic
+    /// shear strain e^ps, dimensionless, for softening laws) by the strain increment `de`.
+    fn update(&self, stress: &mut Stress, state: &mut u8, plastic: &mut f64, de: &StrainIncrement);
     /// Bulk and shear moduli (Pa) that bound the law's tangent stiffness, for the time step.
     fn moduli(&self) -> (f64, f64);
     /// Mass density, kg/m³.

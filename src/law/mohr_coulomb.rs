@@ -14,6 +14,10 @@
 //!
 //! the choice between them made by the diagonal h = σ3 − σt + αP(σ1 − σP) (αP = √(1 + Nφ²) + Nφ,
 //! σP = σt Nφ − 2c√Nφ): shear when h ≤ 0, tension when h > 0. The principal directions are kept.
+//!
+//! Strain softening (FLAC's strain-softening model): cohesion and friction follow a piecewise-linear
+//! table of the plastic shear strain e^ps, accumulated from each shear correction as
+//! Δe^ps = √(½[(Δε1 − Δεm)² + Δεm² + (Δε3 − Δεm)²]), Δε1 = λs, Δε3 = −λs Nψ, Δεm = (Δε1 + Δε3)/3.
 
 use super::{Elastic, StrainIncrement, ZoneLaw};
 use crate::model::Stress;
@@ -28,7 +32,7 @@ pub const SHEAR_PAST: u8 = 4;
 pub const TENSION_PAST: u8 = 8;
 
 /// Mohr–Coulomb material.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct MohrCoulomb {
     pub elastic: Elastic,
     /// Cohesion c, Pa.
@@ -39,6 +43,9 @@ pub struct MohrCoulomb {
     pub dilation: f64,
     /// Tensile strength σt, Pa (at most c / tan φ, the apex of the shear criterion).
     pub tension: f64,
+    /// Softening table: (e^ps, c in Pa, φ in rad), e^ps ascending and above 0; the strength at
+    /// e^ps = 0 is (`cohesion`, `friction`), linear in between, constant beyond the last point.
+    pub softening: Vec<(f64, f64, f64)>,
 }
 
 impl MohrCoulomb {
@@ -62,20 +69,43 @@ impl MohrCoulomb {
             friction,
             dilation: dilation_deg.to_radians(),
             tension: tension.min(apex),
+            softening: Vec::new(),
         }
     }
 
-    /// Return principal stresses `p` (ascending, Pa) to the yield surface; the state bits set now.
-    fn correct(&self, p: &mut [f64; 3]) -> u8 {
+    /// Cohesion (Pa) and friction (rad) at plastic shear strain `eps`.
+    pub fn strength(&self, eps: f64) -> (f64, f64) {
+        let mut prev = (0.0, self.cohesion, self.friction);
+        for &next in &self.softening {
+            if eps <= next.0 {
+                let w = (eps - prev.0) / (next.0 - prev.0);
+                return (
+                    prev.1 + w * (next.1 - prev.1),
+                    prev.2 + w * (next.2 - prev.2),
+                );
+            }
+            prev = next;
+        }
+        (prev.1, prev.2)
+    }
+
+    /// Return principal stresses `p` (ascending, Pa) to the yield surface of cohesion `c` (Pa) and
+    /// friction `phi` (rad); the state bits set now and the plastic shear strain increment.
+    fn correct(&self, p: &mut [f64; 3], c: f64, phi: f64) -> (u8, f64) {
         let n = |a: f64| (1.0 + a.sin()) / (1.0 - a.sin());
-        let (n_phi, n_psi) = (n(self.friction), n(self.dilation));
+        let (n_phi, n_psi) = (n(phi), n(self.dilation.min(phi)));
         let (k, g) = (self.elastic.bulk, self.elastic.shear);
         let (a1, a2) = (k + 4.0 / 3.0 * g, k - 2.0 / 3.0 * g);
-        let (c, st) = (self.cohesion, self.tension);
+        let apex = if phi > 0.0 {
+            c / phi.tan()
+        } else {
+            f64::INFINITY
+        };
+        let st = self.tension.min(apex);
         let fs = p[0] - p[2] * n_phi + 2.0 * c * n_phi.sqrt();
         let ft = st - p[2];
         if fs >= 0.0 && ft >= 0.0 {
-            return 0;
+            return (0, 0.0);
         }
         let alpha_p = (1.0 + n_phi * n_phi).sqrt() + n_phi;
         let sigma_p = st * n_phi - 2.0 * c * n_phi.sqrt();
@@ -85,15 +115,18 @@ impl MohrCoulomb {
             p[0] -= ls * (a1 - a2 * n_psi);
             p[1] -= ls * a2 * (1.0 - n_psi);
             p[2] -= ls * (a2 - a1 * n_psi);
-            SHEAR_NOW
+            let (e1, e3) = (ls, -ls * n_psi);
+            let em = (e1 + e3) / 3.0;
+            let eps = (0.5 * ((e1 - em).powi(2) + em * em + (e3 - em).powi(2))).sqrt();
+            (SHEAR_NOW, eps)
         } else if ft < 0.0 {
             let lt = (p[2] - st) / a1;
             p[0] -= lt * a2;
             p[1] -= lt * a2;
             p[2] -= lt * a1;
-            TENSION_NOW
+            (TENSION_NOW, 0.0)
         } else {
-            0
+            (0, 0.0)
         }
     }
 }
@@ -102,15 +135,21 @@ impl ZoneLaw for MohrCoulomb {
     /// Elastic trial (plane strain), then the return in principal stresses; the in-plane principal
     /// directions are kept: σ = c' I + (r'/r)(σ − c I) in the plane, with c, r the centre and
     /// radius of the in-plane Mohr circle before and c', r' after.
-    fn update(&self, s: &mut Stress, state: &mut u8, de: &StrainIncrement) {
-        self.elastic.update(s, state, de);
+    fn update(&self, s: &mut Stress, state: &mut u8, plastic: &mut f64, de: &StrainIncrement) {
+        self.elastic.update(s, state, plastic, de);
         let (c, d, t) = (0.5 * (s[0] + s[1]), 0.5 * (s[0] - s[1]), s[3]);
         let r = (d * d + t * t).sqrt();
         // Principal values with their origin: 0 in-plane minor, 1 in-plane major, 2 out-of-plane.
         let mut v = [(c - r, 0u8), (c + r, 1), (s[2], 2)];
         v.sort_by(|a, b| a.0.total_cmp(&b.0));
         let mut p = [v[0].0, v[1].0, v[2].0];
-        let now = self.correct(&mut p);
+        let (c, phi) = if self.softening.is_empty() {
+            (self.cohesion, self.friction)
+        } else {
+            self.strength(*plastic)
+        };
+        let (now, eps) = self.correct(&mut p, c, phi);
+        *plastic += eps;
         *state = (*state & (SHEAR_PAST | TENSION_PAST))
             | now
             | if now & SHEAR_NOW != 0 { SHEAR_PAST } else { 0 }
@@ -186,7 +225,7 @@ mod tests {
             let a1 = law.elastic.bulk + 4.0 / 3.0 * law.elastic.shear;
             let a2 = law.elastic.bulk - 2.0 / 3.0 * law.elastic.shear;
             de[0] = -(s[0] + 2e6 + a2 * de[1]) / a1;
-            law.update(&mut s, &mut state, &de);
+            law.update(&mut s, &mut state, &mut 0.0, &de);
         }
         let n_phi: f64 = 3.0; // φ = 30°
         let p = principal(&s);
@@ -198,7 +237,7 @@ mod tests {
         );
         assert_eq!(state, SHEAR_NOW | SHEAR_PAST);
         // Unloading leaves the past flag only.
-        law.update(&mut s, &mut state, &[0.0, 1e-5, 0.0]);
+        law.update(&mut s, &mut state, &mut 0.0, &[0.0, 1e-5, 0.0]);
         assert_eq!(state, SHEAR_PAST);
     }
 
@@ -210,7 +249,7 @@ mod tests {
         let mut s = [0.0, 0.0, 0.0, 0.0];
         let mut state = 0;
         // Pure extension along 45°: Δεxx = Δεyy = e/2, Δγxy = e.
-        law.update(&mut s, &mut state, &[0.5e-4, 0.5e-4, 1e-4]);
+        law.update(&mut s, &mut state, &mut 0.0, &[0.5e-4, 0.5e-4, 1e-4]);
         let p = principal(&s);
         assert!((p[2] - 0.5e6).abs() < 1e-6, "{p:?}");
         assert_eq!(state & TENSION_NOW, TENSION_NOW);
@@ -224,7 +263,37 @@ mod tests {
         let mut s = [-5e6, -4e6, -3e6, 0.2e6];
         let before = s;
         let mut state = 0;
-        law.update(&mut s, &mut state, &[0.0; 3]);
+        law.update(&mut s, &mut state, &mut 0.0, &[0.0; 3]);
         assert_eq!((s, state), (before, 0));
+    }
+
+    /// With cohesion softening from 1 MPa to 0.2 MPa over e^ps = 0.01 (friction kept), biaxial
+    /// compression at a lateral 2 MPa peaks at the intact strength and falls to the residual one.
+    #[test]
+    fn softening_drops_the_strength_to_its_residual() {
+        let mut law = rock();
+        law.softening = vec![(0.01, 0.2e6, 30f64.to_radians())];
+        let (a1, a2) = (
+            law.elastic.bulk + 4.0 / 3.0 * law.elastic.shear,
+            law.elastic.bulk - 2.0 / 3.0 * law.elastic.shear,
+        );
+        let mut s = [-2e6, -2e6, -1e6, 0.0];
+        let (mut state, mut plastic, mut peak) = (0, 0.0, 0.0f64);
+        for _ in 0..40_000 {
+            let mut de = [0.0, -1e-6, 0.0];
+            de[0] = -(s[0] + 2e6 + a2 * de[1]) / a1;
+            law.update(&mut s, &mut state, &mut plastic, &de);
+            peak = peak.min(principal(&s)[0]);
+        }
+        let n_phi: f64 = 3.0;
+        let p = principal(&s);
+        let strength = |c: f64| p[2] * n_phi - 2.0 * c * n_phi.sqrt();
+        assert!(plastic > 0.01, "e^ps = {plastic}");
+        assert!((p[0] - strength(0.2e6)).abs() < 1e-3 * p[0].abs(), "{p:?}");
+        assert!(
+            (peak - strength(1e6)).abs() < 0.02 * peak.abs(),
+            "peak {peak}"
+        );
+        assert_eq!(law.strength(0.005), (0.6e6, 30f64.to_radians()));
     }
 }

@@ -72,6 +72,8 @@ pub struct Bodies {
     pub stress: Vec<Stress>,
     /// Zone-law state of a simple block.
     pub state: Vec<u8>,
+    /// Accumulated plastic shear strain of a simple block (dimensionless).
+    pub plastic: Vec<f64>,
     /// `FIX_X`, `FIX_Y`, `FIX_SPIN` bit flags.
     pub fixed: Vec<u8>,
     /// This cycle's motion: old centroid, new centroid and the map r_new = A r_old

@@ -21,6 +21,8 @@ pub struct Zones {
     pub material: Vec<MaterialId>,
     /// Yield-state bit flags (0: elastic).
     pub state: Vec<u8>,
+    /// Accumulated plastic shear strain e^ps (dimensionless; softening laws read it).
+    pub plastic: Vec<f64>,
     /// Block each zone belongs to.
     pub block: Vec<u32>,
 }
@@ -68,6 +70,7 @@ impl Zones {
             stress: vec![[0.0; 4]; n],
             material: vec![MaterialId(0); n],
             state: vec![0; n],
+            plastic: vec![0.0; n],
             block: vec![0; n],
         }
     }

@@ -78,6 +78,22 @@ pub struct Material {
     /// Mohr–Coulomb: tensile strength σt, Pa (default and cap: c / tan φ).
     #[serde(default)]
     pub tensile_strength: Option<f64>,
+    /// Mohr–Coulomb strain softening: cohesion and friction at increasing plastic shear strain
+    /// (from `cohesion`, `friction` at 0; linear between points, constant after the last).
+    #[serde(default)]
+    pub softening: Vec<SofteningPoint>,
+}
+
+/// One point of a softening table.
+#[derive(Debug, Clone, Copy, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SofteningPoint {
+    /// Plastic shear strain e^ps (dimensionless), > 0 and increasing along the table.
+    pub plastic_strain: f64,
+    /// Cohesion there, Pa.
+    pub cohesion: f64,
+    /// Friction angle there, degrees.
+    pub friction: f64,
 }
 
 /// Which zone law a material follows.
@@ -583,6 +599,25 @@ mod tests {
                 .starts_with("materials.rock.dilation: must be in [0, friction]")
         );
         assert!(Scene::from_json(&mc(r#", "cohesion": 1e6, "friction": 30"#), "t").is_ok());
+        let table = |points: &str| {
+            mc(&format!(
+                r#", "cohesion": 1e6, "friction": 30, "softening": [{points}]"#
+            ))
+        };
+        assert!(
+            Scene::from_json(
+                &table(r#"{ "plastic_strain": 0.01, "cohesion": 2e5, "friction": 28 }"#),
+                "t"
+            )
+            .is_ok()
+        );
+        assert_eq!(
+            error_of(&table(
+                r#"{ "plastic_strain": 0.01, "cohesion": 2e5, "friction": 28 },
+                   { "plastic_strain": 0.005, "cohesion": 1e5, "friction": 28 }"#
+            )),
+            "materials.rock.softening[1].plastic_strain: must be positive and increase along the table"
+        );
         assert!(
             error_of(&GOOD.replace("\"poisson\": 0.2", r#""poisson": 0.2, "cohesion": 1e6"#))
                 .contains("belong to `law: mohr_coulomb`")

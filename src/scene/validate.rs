@@ -35,11 +35,12 @@ fn validate_strength(p: &str, m: &Material) -> Result<(), SceneError> {
     let given = m.cohesion.is_some()
         || m.friction.is_some()
         || m.tensile_strength.is_some()
-        || m.dilation != 0.0;
+        || m.dilation != 0.0
+        || !m.softening.is_empty();
     match m.law {
         ZoneLawKind::Elastic if given => Err(invalid(
             p,
-            "cohesion, friction, dilation and tensile_strength belong to `law: mohr_coulomb`",
+            "cohesion, friction, dilation, tensile_strength and softening belong to `law: mohr_coulomb`",
         )),
         ZoneLawKind::Elastic => Ok(()),
         ZoneLawKind::MohrCoulomb => {
@@ -74,6 +75,26 @@ fn validate_strength(p: &str, m: &Material) -> Result<(), SceneError> {
                     format!("{p}.tensile_strength"),
                     format!("must be zero or positive, got {t}"),
                 ));
+            }
+            let mut last = 0.0;
+            for (i, pt) in m.softening.iter().enumerate() {
+                let q = format!("{p}.softening[{i}]");
+                if !(pt.plastic_strain > last && pt.plastic_strain.is_finite()) {
+                    return Err(invalid(
+                        format!("{q}.plastic_strain"),
+                        "must be positive and increase along the table",
+                    ));
+                }
+                if !(pt.cohesion >= 0.0 && pt.cohesion.is_finite()) {
+                    return Err(invalid(format!("{q}.cohesion"), "must be zero or positive"));
+                }
+                if !(0.0..90.0).contains(&pt.friction) {
+                    return Err(invalid(
+                        format!("{q}.friction"),
+                        "must be in [0, 90) degrees",
+                    ));
+                }
+                last = pt.plastic_strain;
             }
             Ok(())
         }
