@@ -21,10 +21,11 @@
 use std::time::Instant;
 
 use adit::Scene;
-use adit::build::build;
+use adit::build::{add_tractions, build};
 use adit::law::{SHEAR_NOW, SHEAR_PAST};
 use adit::scene::ZoneLawKind;
 use adit::solve::{Quiet, Solver, Status};
+use adit_meshing::EdgeKind;
 
 use crate::kirsch_case::scaled;
 use crate::report::CaseReport;
@@ -245,6 +246,85 @@ pub fn run(kirsch: &Scene, factor: f64, pi: f64) -> anyhow::Result<CaseReport> {
     ))
 }
 
+/// One point of a ground reaction curve: support pressure (Pa), wall displacement computed and
+/// closed-form (m, negative inward).
+#[derive(Debug, Clone, Copy, serde::Serialize)]
+pub struct GrcPoint {
+    pub pressure: f64,
+    pub computed: f64,
+    pub exact: f64,
+}
+
+/// The ground reaction curve (convergence–confinement): the wall first carries p0 (the model is in
+/// equilibrium with its in-situ stress), then the support pressure is lowered through `fractions`
+/// of p0 (descending to 0), each step solved to equilibrium; the mean radial wall displacement
+/// against Salençon's u(pi). Returns the curve and a report whose `grc` error is the largest
+/// |u_h − u| over the curve relative to |u(0)|.
+pub fn ground_reaction(
+    kirsch: &Scene,
+    factor: f64,
+    fractions: &[f64],
+) -> anyhow::Result<(Vec<GrcPoint>, CaseReport)> {
+    let start = Instant::now();
+    let (sc, exact) = scene(kirsch, factor, 0.0);
+    let mut b = build(&sc)?;
+    let p0 = exact.p0;
+    let on_wall = |e: &&adit_meshing::BoundaryEdge| matches!(e.kind, EdgeKind::Excavation(0));
+    let push =
+        |nodes: &mut adit::model::Nodes, boundary: &[adit_meshing::BoundaryEdge], dp: f64| {
+            add_tractions(nodes, boundary.iter().filter(on_wall), |_, n| {
+                [-dp * n[0], -dp * n[1]]
+            })
+        };
+    push(&mut b.model.nodes, &b.boundary, p0);
+    let wall = b.part_nodes[&sc.excavations[0].name].clone();
+    let mean_u = |m: &adit::model::Model| {
+        wall.iter()
+            .map(|&n| {
+                let (p, u) = (m.nodes.pos[n as usize], m.nodes.disp[n as usize]);
+                (u[0] * p[0] + u[1] * p[1]) / p[0].hypot(p[1])
+            })
+            .sum::<f64>()
+            / wall.len() as f64
+    };
+    let mut solver = Solver::new(&mut b.model, &sc.solve, 0);
+    let (mut curve, mut cycles, mut pressure) = (Vec::new(), 0, p0);
+    for &f in fractions {
+        let pi = f * p0;
+        push(&mut b.model.nodes, &b.boundary, pi - pressure);
+        pressure = pi;
+        let sol = solver.solve(&mut b.model, &mut Quiet);
+        anyhow::ensure!(
+            sol.status == Status::Converged,
+            "ground reaction at pi = {pi}: {:?}",
+            sol.status
+        );
+        cycles += sol.cycles;
+        curve.push(GrcPoint {
+            pressure: pi,
+            computed: mean_u(&b.model),
+            exact: Salencon { pi, ..exact }.wall_displacement(),
+        });
+    }
+    let scale = curve.iter().map(|p| p.exact.abs()).fold(0.0, f64::max);
+    let worst = curve
+        .iter()
+        .map(|p| (p.computed - p.exact).abs() / scale)
+        .fold(0.0, f64::max);
+    let report = CaseReport::new(
+        format!(
+            "Salençon ground reaction curve, {} support pressures (×{factor})",
+            fractions.len()
+        ),
+        b.model.zones.len(),
+        cycles,
+        start.elapsed().as_secs_f64(),
+        None,
+        &[("grc", worst)],
+    );
+    Ok((curve, report))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -267,6 +347,21 @@ mod tests {
         assert!((u + 5e6 * s.radius / (2.0 * s.shear)).abs() < 1e-12, "{u}");
         // Yield makes the wall move more than the elastic −p0 a/(2G).
         assert!(s.wall_displacement() < -s.p0 * s.radius / (2.0 * s.shear));
+    }
+
+    /// Coarse twin of the ground reaction curve: elastic down to the critical pressure, plastic below.
+    #[test]
+    fn ground_reaction_curve_follows_salencon() {
+        let (curve, r) = ground_reaction(
+            &crate::shipped_kirsch().unwrap(),
+            2.0,
+            &[0.6, 0.3, 0.1, 0.0],
+        )
+        .unwrap();
+        for p in &curve {
+            eprintln!("{p:?}");
+        }
+        assert!(r.errors["grc"] < 0.05, "{r:?}");
     }
 
     /// Coarse twin (zones twice the shipped size), without and with a support pressure.
