@@ -2,7 +2,8 @@
 //!
 //! A scene (`scene`) is built (`build`) into a model of structure-of-arrays state (`model`) whose
 //! zones follow constitutive laws (`law`); a solver (`solve`) repeats the cycle's named stages
-//! (`cycle`) to equilibrium or through time, and `output` writes the results. Units are SI
+//! (`cycle`) to equilibrium or through time, stage after stage (`stage`), and `output` writes the
+//! results. Units are SI
 //! (m, Pa, kg, s), tension positive.
 
 pub mod build;
@@ -15,6 +16,7 @@ pub mod output;
 pub mod run;
 pub mod scene;
 pub mod solve;
+pub mod stage;
 
 pub use run::{RunResult, run_scene};
 pub use scene::Scene;

@@ -7,9 +7,10 @@ use crate::build::{Built, build};
 use crate::cycle::Cycle;
 use crate::model::Model;
 use crate::model::bodies::BodyMode;
-use crate::output::{OutputWriter, Summary};
-use crate::scene::Scene;
+use crate::output::{OutputWriter, StageSummary, Summary};
+use crate::scene::{Scene, Stage};
 use crate::solve::{HistoryRow, Observer, Solution, Solver, Status};
+use crate::stage::Staging;
 
 /// The result of a run, with the model in its final state.
 pub struct RunResult {
@@ -29,21 +30,26 @@ pub fn default_out_dir(scene: &Scene) -> PathBuf {
         .unwrap_or_else(|| Path::new("out").join(&scene.name))
 }
 
-/// Forwards monitor rows to the caller and writes intermediate output steps.
+/// Forwards monitor rows to the caller and writes intermediate output steps; cycles count from
+/// the start of the run (`offset`: cycles of the stages before this one).
 struct Writing<'a> {
     writer: &'a mut OutputWriter,
     inner: &'a mut dyn Observer,
     output_seconds: f64,
     error: Option<anyhow::Error>,
+    offset: u64,
 }
 
 impl Observer for Writing<'_> {
     fn monitored(&mut self, row: &HistoryRow) {
-        self.inner.monitored(row);
+        self.inner.monitored(&HistoryRow {
+            cycle: row.cycle + self.offset,
+            ..*row
+        });
     }
     fn output_step(&mut self, cycle: u64, _time: f64, model: &Model, _c: &mut Cycle) {
         let t = Instant::now();
-        if let Err(e) = self.writer.write_step(model, cycle as f64) {
+        if let Err(e) = self.writer.write_step(model, (cycle + self.offset) as f64) {
             self.error.get_or_insert(e);
         }
         self.output_seconds += t.elapsed().as_secs_f64();
@@ -59,31 +65,83 @@ pub fn run_scene(
 ) -> anyhow::Result<RunResult> {
     let start = Instant::now();
     let mut built = build(scene)?;
-    let mut solver = Solver::new(&mut built.model, &scene.solve, scene.output.every);
-    anyhow::ensure!(
-        solver.params.dt.is_finite(),
-        "solve: no zone or contact stiffness to derive the time step from (a lone rigid or simple \
-         block without joints); make the block deformable or add joints"
-    );
     let mut writer = OutputWriter::new(out_dir, &scene.name)?;
-    let mut writing = Writing {
-        writer: &mut writer,
-        inner: observer,
-        output_seconds: 0.0,
-        error: None,
+    let single = [Stage {
+        name: "solve".into(),
+        excavate: vec![],
+        support_fraction: 0.0,
+        reset_displacements: false,
+        solve: None,
+    }];
+    let stages = if scene.stages.is_empty() {
+        &single[..]
+    } else {
+        &scene.stages[..]
     };
-    let solution = solver.solve(&mut built.model, &mut writing);
-    let mut output_seconds = writing.output_seconds;
-    if let Some(e) = writing.error {
-        return Err(e);
+    let mut staging = Staging::new(scene);
+    let (mut history, mut cycles, mut output_seconds) = (Vec::new(), 0u64, 0.0);
+    let mut seconds = crate::cycle::StageSeconds::default();
+    let mut stage_summaries = Vec::new();
+    let mut last: Option<(Solver, Solution)> = None;
+    for stage in stages {
+        staging.apply(stage, scene, &mut built);
+        let spec = stage.solve.as_ref().unwrap_or(&scene.solve);
+        let mut solver = Solver::new(&mut built.model, spec, scene.output.every);
+        anyhow::ensure!(
+            solver.params.dt.is_finite(),
+            "solve: no zone or contact stiffness to derive the time step from (a lone rigid or simple \
+             block without joints); make the block deformable or add joints"
+        );
+        let mut writing = Writing {
+            writer: &mut writer,
+            inner: observer,
+            output_seconds: 0.0,
+            error: None,
+            offset: cycles,
+        };
+        let solution = solver.solve(&mut built.model, &mut writing);
+        output_seconds += writing.output_seconds;
+        if let Some(e) = writing.error {
+            return Err(e);
+        }
+        history.extend(solution.history.iter().map(|r| HistoryRow {
+            cycle: r.cycle + cycles,
+            ..*r
+        }));
+        cycles += solution.cycles;
+        let s = solver.cycle.seconds;
+        seconds.detect += s.detect;
+        seconds.contacts += s.contacts;
+        seconds.zones += s.zones;
+        seconds.supports += s.supports;
+        seconds.motion += s.motion;
+        stage_summaries.push(StageSummary {
+            name: stage.name.clone(),
+            cycles: solution.cycles,
+            status: solution.status.label().to_string(),
+            final_ratio: solution.final_ratio,
+        });
+        let t = Instant::now();
+        let failed = matches!(solution.status, Status::Failed(_));
+        if !failed {
+            writer.write_step(&built.model, cycles as f64)?;
+        }
+        output_seconds += t.elapsed().as_secs_f64();
+        last = Some((solver, solution));
+        if failed {
+            break;
+        }
     }
+    let (solver, last_solution) = last.expect("at least one stage");
+    let solution = Solution {
+        status: last_solution.status,
+        cycles,
+        history,
+        final_ratio: last_solution.final_ratio,
+    };
     let t = Instant::now();
-    if !matches!(solution.status, Status::Failed(_)) {
-        writer.write_step(&built.model, solution.cycles as f64)?;
-    }
     writer.write_history(&solution.history)?;
     output_seconds += t.elapsed().as_secs_f64();
-    let mut seconds = solver.cycle.seconds;
     seconds.output = output_seconds;
     let wall = start.elapsed().as_secs_f64();
     let cycling = seconds.detect + seconds.contacts + seconds.zones + seconds.motion;
@@ -129,6 +187,11 @@ pub fn run_scene(
         critical_block: solver.step.limiting_block,
         min_zone_angle: built.mesh.min_angle_deg,
         warnings: built.warnings.clone(),
+        stages: if scene.stages.is_empty() {
+            vec![]
+        } else {
+            stage_summaries
+        },
     };
     writer.write_summary(&summary)?;
     Ok(RunResult {

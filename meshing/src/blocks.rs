@@ -38,6 +38,15 @@ impl Block {
     }
 
     /// Net area, m².
+    /// Whether every vertex of the block lies inside `polygon` or within `tol` of its boundary
+    /// (the rock of a filled excavation).
+    pub fn within(&self, polygon: &Polygon, tol: f64) -> bool {
+        self.outer
+            .vertices
+            .iter()
+            .all(|&v| polygon.contains(v) || polygon.boundary_distance(v) <= tol)
+    }
+
     pub fn area(&self) -> f64 {
         self.outer.signed_area() + self.holes.iter().map(|h| h.signed_area()).sum::<f64>()
     }
@@ -126,6 +135,25 @@ fn bbox_overlap(s: &Segment, o: &Segment, tol: f64) -> bool {
 /// (≈ 0.3) of the smallest zone size keeps joints from cutting sliver edges that no mesh refinement
 /// can grade well (a joint meeting an excavation's polygon just beside one of its vertices).
 pub fn cut_blocks(domain: &Domain, joints: &[Segment], tol: f64) -> Result<Blocking, MeshError> {
+    cut_blocks_filled(domain, &vec![false; domain.holes.len()], joints, tol)
+}
+
+/// `cut_blocks` with some excavations still filled (`filled[j]`, staged excavations): their walls
+/// cut blocks like joints (edges of kind `Excavation(j)`) and the rock inside them is kept as
+/// blocks, to be removed when the excavation happens.
+pub fn cut_blocks_filled(
+    domain: &Domain,
+    filled: &[bool],
+    joints: &[Segment],
+    tol: f64,
+) -> Result<Blocking, MeshError> {
+    let open = |p: Point| {
+        domain
+            .holes
+            .iter()
+            .zip(filled)
+            .any(|(h, &f)| !f && h.polygon.contains(p))
+    };
     let mut segs: Vec<Segment> = Vec::new();
     for i in 0..domain.outer.len() {
         let (a, b) = domain.outer.edge(i);
@@ -225,9 +253,7 @@ pub fn cut_blocks(domain: &Domain, joints: &[Segment], tol: f64) -> Result<Block
                 // Only pieces inside the rock count: traces beyond the region are just cut off.
                 let (a, b) = (pts[key.0 as usize], pts[key.1 as usize]);
                 let mid = [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])];
-                if domain.outer.contains(mid)
-                    && !domain.holes.iter().any(|h| h.polygon.contains(mid))
-                {
+                if domain.outer.contains(mid) && !open(mid) {
                     absorbed += distance(a, b);
                 }
                 degree[key.0 as usize] -= 1;
@@ -237,7 +263,7 @@ pub fn cut_blocks(domain: &Domain, joints: &[Segment], tol: f64) -> Result<Block
     }
 
     let faces = trace_faces(&pts, &edges);
-    assemble_blocks(domain, &pts, faces, tol, absorbed)
+    assemble_blocks(domain, &open, &pts, faces, tol, absorbed)
 }
 
 /// A closed cycle of the arrangement: its vertices and edge kinds, face on the left.
@@ -334,14 +360,14 @@ fn split_pinches(verts: Vec<u32>, kinds: Vec<EdgeKind>) -> Vec<(Vec<u32>, Vec<Ed
 /// Keep the faces inside the region and outside the excavations; attach floating components as holes.
 fn assemble_blocks(
     domain: &Domain,
+    open: &dyn Fn(Point) -> bool,
     pts: &[Point],
     cycles: Vec<Cycle>,
     tol: f64,
     absorbed_joint_length: f64,
 ) -> Result<Blocking, MeshError> {
     let polygon = |c: &Cycle| Polygon::new(c.verts.iter().map(|&v| pts[v as usize]).collect());
-    let inside_material =
-        |p: Point| domain.outer.contains(p) && !domain.holes.iter().any(|h| h.polygon.contains(p));
+    let inside_material = |p: Point| domain.outer.contains(p) && !open(p);
     let mut blocks: Vec<Block> = Vec::new();
     let mut floating = Vec::new();
     for c in &cycles {
@@ -505,6 +531,31 @@ mod tests {
                 .any(|k| k.outer_kinds.contains(&EdgeKind::Excavation(0)))
         );
         assert!(b.blocks.iter().all(|k| k.holes.is_empty()));
+    }
+
+    /// A filled (staged) tunnel keeps its rock as blocks of its own, bounded by its wall: the
+    /// blocks tile the whole square.
+    #[test]
+    fn filled_tunnel_keeps_its_rock_as_blocks() {
+        let outer = Polygon::new(vec![[-5.0, -5.0], [5.0, -5.0], [5.0, 5.0], [-5.0, 5.0]]);
+        let hole = Hole {
+            name: "t".into(),
+            polygon: Polygon::circle([0.0, 0.0], 2.0, 48),
+        };
+        let d = Domain::new(outer, (0..4).map(|i| format!("e{i}")).collect(), vec![hole]).unwrap();
+        let joints =
+            set(10.0, 3.0, [0.0, 0.5]).segments([-5.0, -5.0], [5.0, 5.0], EdgeKind::Joint(0));
+        let b = cut_blocks_filled(&d, &[true], &joints, 1e-9).unwrap();
+        assert_relative_eq!(total_area(&b), 100.0, max_relative = 1e-10);
+        let inside = |k: &Block| k.within(&d.holes[0].polygon, 1e-9);
+        let fill: Vec<&Block> = b.blocks.iter().filter(|k| inside(k)).collect();
+        assert!(fill.len() >= 2, "the joint cuts the fill");
+        let fill_area: f64 = fill.iter().map(|k| k.area()).sum();
+        assert_relative_eq!(
+            fill_area,
+            d.holes[0].polygon.signed_area().abs(),
+            max_relative = 1e-10
+        );
     }
 
     #[test]

@@ -9,7 +9,7 @@ pub mod joints;
 pub mod triangulate;
 pub mod voronoi;
 
-pub use blocks::{Block, Blocking, cut_blocks};
+pub use blocks::{Block, Blocking, cut_blocks, cut_blocks_filled};
 pub use domain::{Domain, Hole};
 pub use error::MeshError;
 pub use geometry::{Point, Polygon};

@@ -3,7 +3,8 @@
 
 use adit_meshing::{
     Block, Blocking, Domain, EdgeKind, Hole, JointSet, MeshError, MeshStats, Polygon, Segment,
-    TriMesh, Zoning, cut_blocks, triangulate_block, triangulate_outline, voronoi::voronoi_segments,
+    TriMesh, Zoning, cut_blocks_filled, triangulate_block, triangulate_outline,
+    voronoi::voronoi_segments,
 };
 use rayon::prelude::*;
 
@@ -84,7 +85,13 @@ pub struct Meshed {
     pub meshes: Vec<TriMesh>,
     /// Mode of each block.
     pub modes: Vec<BlockMode>,
+    /// For each block, the staged excavation whose rock it is (index into the excavations), or
+    /// `NOT_FILL` for the rock that stays.
+    pub fill: Vec<u32>,
 }
+
+/// Marks a block that is no excavation's fill.
+pub const NOT_FILL: u32 = u32::MAX;
 
 impl Meshed {
     /// Mesh statistics over the zones of the deformable blocks (rigid and simple blocks have none).
@@ -140,23 +147,34 @@ fn mesh_blocks(scene: &Scene) -> Result<Meshed, MeshError> {
     let domain = domain(scene)?;
     let zoning = zoning(scene);
     let joints = joint_segments(scene, &domain)?;
-    let blocking = if joints.is_empty() {
+    let filled: Vec<bool> = scene
+        .excavations
+        .iter()
+        .map(|e| scene.is_staged(&e.name))
+        .collect();
+    // Vertices closer than 0.3 of the finest zone merge, so joints cut no sliver edges; with
+    // Voronoi grains, never more than 2 % of the grain size, whose many short edges would
+    // otherwise collapse (merging can move the region's boundary: see the session notes).
+    let grain = scene.voronoi.as_ref().map_or(f64::INFINITY, |v| v.size);
+    let tol = (0.3 * zoning.h_excavation).min(0.02 * grain);
+    let blocking = if joints.is_empty() && !filled.contains(&true) {
         Blocking {
             blocks: vec![Block::from_domain(&domain)],
             absorbed_joint_length: 0.0,
             slivers: vec![],
         }
     } else {
-        // Vertices closer than 0.3 of the finest zone merge, so joints cut no sliver edges; with
-        // Voronoi grains, never more than 2 % of the grain size, whose many short edges would
-        // otherwise collapse (merging can move the region's boundary: see the session notes).
-        let grain = scene.voronoi.as_ref().map_or(f64::INFINITY, |v| v.size);
-        cut_blocks(
-            &domain,
-            &joints,
-            (0.3 * zoning.h_excavation).min(0.02 * grain),
-        )?
+        cut_blocks_filled(&domain, &filled, &joints, tol)?
     };
+    let fill = blocking
+        .blocks
+        .iter()
+        .map(|b| {
+            (0..domain.holes.len())
+                .find(|&j| filled[j] && b.within(&domain.holes[j].polygon, tol))
+                .map_or(NOT_FILL, |j| j as u32)
+        })
+        .collect();
     let excavations: Vec<Polygon> = domain.holes.iter().map(|h| h.polygon.clone()).collect();
     let modes = block_modes(scene, &blocking.blocks);
     let meshes = blocking
@@ -173,6 +191,7 @@ fn mesh_blocks(scene: &Scene) -> Result<Meshed, MeshError> {
         blocking,
         meshes,
         modes,
+        fill,
     })
 }
 

@@ -13,14 +13,14 @@ use std::collections::BTreeMap;
 use adit_meshing::{BoundaryEdge, Domain, EdgeKind, MeshStats};
 
 pub use boundary::add_tractions;
-pub use geometry::{Meshed, domain, joint_segments, mesh, zoning};
+pub use geometry::{Meshed, NOT_FILL, domain, joint_segments, mesh, zoning};
 
 use crate::contact::Contacts;
 use crate::contact::detect::{Detection, Touch, detect};
 use crate::joint::{
     ContinuouslyYielding, CoulombSlip, FAILED, Glued, JointLaw, JointState, tan_deg,
 };
-use crate::law::{Elastic, MohrCoulomb, ZoneLaw};
+use crate::law::{Elastic, MohrCoulomb, Null, ZoneLaw};
 use crate::model::blocks::{Blocks, NO_EDGE};
 use crate::model::{Gather, MaterialId, Model, Nodes, Zones, traction};
 use crate::scene::{BlockMode, InSitu, JointLawKind, Scene, ZoneLawKind};
@@ -131,8 +131,8 @@ pub fn build(scene: &Scene) -> anyhow::Result<Built> {
     let mut zones = Zones::from_triangles(&tris, &nodes.pos);
     zones.block = zone_block;
 
-    let material_names: Vec<String> = scene.materials.keys().cloned().collect();
-    let laws: Vec<Box<dyn ZoneLaw>> = scene
+    let mut material_names: Vec<String> = scene.materials.keys().cloned().collect();
+    let mut laws: Vec<Box<dyn ZoneLaw>> = scene
         .materials
         .values()
         .map(|m| -> Box<dyn ZoneLaw> {
@@ -158,6 +158,12 @@ pub fn build(scene: &Scene) -> anyhow::Result<Built> {
         .iter()
         .position(|n| *n == scene.region.material)
         .expect("validated");
+    // Excavated zones take the null law (the last material).
+    let null_material = (!scene.stages.is_empty()).then(|| {
+        material_names.push("excavated".into());
+        laws.push(Box::new(Null));
+        MaterialId((laws.len() - 1) as u32)
+    });
     let poisson = scene.materials[&scene.region.material].poisson;
     for z in 0..zones.len() {
         zones.material[z] = MaterialId(region_mat as u32);
@@ -222,8 +228,8 @@ pub fn build(scene: &Scene) -> anyhow::Result<Built> {
     bodies.outline_body = outline_block.iter().map(|b| body_of_block[b]).collect();
 
     // Joint laws, and the material of each joint feature (sets first, then explicit joints).
-    let joint_material_names: Vec<String> = scene.joint_materials.keys().cloned().collect();
-    let joint_laws: Vec<Box<dyn JointLaw>> = scene
+    let mut joint_material_names: Vec<String> = scene.joint_materials.keys().cloned().collect();
+    let mut joint_laws: Vec<Box<dyn JointLaw>> = scene
         .joint_materials
         .values()
         .map(|j| -> Box<dyn JointLaw> {
@@ -268,6 +274,28 @@ pub fn build(scene: &Scene) -> anyhow::Result<Built> {
         .contacts
         .tolerance
         .unwrap_or(0.05 * scene.zoning.edge_at_excavation);
+    // The rock filling a staged excavation is glued to its surroundings until it is removed, with
+    // the stiffness of the stiffest joint material, or of the rock over a wall zone (E/h) if there
+    // is none (so that filling adds nothing stiffer than the model already has).
+    let fill_material = meshed.fill.iter().any(|&f| f != NOT_FILL).then(|| {
+        let (kn, ks) = joint_laws
+            .iter()
+            .map(|l| l.stiffness())
+            .fold(None, |m: Option<(f64, f64)>, k| {
+                Some(m.map_or(k, |m| (m.0.max(k.0), m.1.max(k.1))))
+            })
+            .unwrap_or_else(|| {
+                let e = scene.materials[&scene.region.material].young;
+                let k = e / scene.zoning.edge_at_excavation;
+                (k, 0.5 * k)
+            });
+        joint_material_names.push("excavation fill".into());
+        joint_laws.push(Box::new(Glued {
+            normal_stiffness: kn,
+            shear_stiffness: ks,
+        }));
+        (joint_laws.len() - 1) as u32
+    });
     anyhow::ensure!(
         blocks.len() == 1 || !joint_laws.is_empty(),
         "joint_materials: {} blocks need at least one joint material for their contacts",
@@ -304,6 +332,7 @@ pub fn build(scene: &Scene) -> anyhow::Result<Built> {
             x: &nodes.pos,
             tolerance: contact_tolerance,
             joint_material: &joint_material,
+            fill_material,
         };
         detect(&d, &Contacts::default(), &in_situ_joint)
     } else {
@@ -343,6 +372,9 @@ pub fn build(scene: &Scene) -> anyhow::Result<Built> {
         joint_material_names,
         joint_material,
         contact_tolerance,
+        fill_material,
+        fill: meshed.fill.clone(),
+        null_material,
     };
     Ok(Built {
         model,

@@ -19,6 +19,9 @@ pub struct Detection<'a> {
     pub tolerance: f64,
     /// Joint material of each joint feature (`EdgeKind::Joint(k)` → `joint_material[k]`).
     pub joint_material: &'a [u32],
+    /// Joint material of the walls of filled excavations (`EdgeKind::Excavation(_)` edges between
+    /// blocks), if there are any.
+    pub fill_material: Option<u32>,
 }
 
 /// Geometry of a new contact, handed to the caller to choose its initial joint state.
@@ -67,6 +70,7 @@ pub fn candidate_pairs(blocks: &Blocks, x: &[[f64; 2]], tol: f64) -> Vec<(u32, u
         return Vec::new();
     }
     let boxes: Vec<_> = (0..n).map(|b| bounds(blocks, x, b)).collect();
+    let live = |b: usize| !blocks.is_removed(b);
     let (mut lo, mut extent) = ([f64::INFINITY; 2], 0.0);
     for (blo, bhi) in &boxes {
         lo = [lo[0].min(blo[0]), lo[1].min(blo[1])];
@@ -78,7 +82,7 @@ pub fn candidate_pairs(blocks: &Blocks, x: &[[f64; 2]], tol: f64) -> Vec<(u32, u
     let index = |v: f64, d: usize| ((v - lo[d]) / cell).floor() as i64;
     // (cell, block) entries, sorted so that each cell's blocks are contiguous.
     let mut entries: Vec<((i64, i64), u32)> = Vec::new();
-    for (b, (blo, bhi)) in boxes.iter().enumerate() {
+    for (b, (blo, bhi)) in boxes.iter().enumerate().filter(|(b, _)| live(*b)) {
         for cx in index(blo[0] - tol, 0)..=index(bhi[0] + tol, 0) {
             for cy in index(blo[1] - tol, 1)..=index(bhi[1] + tol, 1) {
                 entries.push(((cx, cy), b as u32));
@@ -276,7 +280,8 @@ fn edge_normals_at(d: &Detection, n: u32) -> Vec<[f64; 2]> {
 fn material_of(d: &Detection, node: u32, edge: u32) -> u32 {
     let of = |e: u32| match d.blocks.edge_kind[e as usize] {
         EdgeKind::Joint(k) => d.joint_material.get(k as usize).copied(),
-        _ => None,
+        EdgeKind::Excavation(_) => d.fill_material,
+        EdgeKind::Region(_) => None,
     };
     of(edge)
         .or_else(|| {
@@ -397,6 +402,7 @@ mod tests {
             edge_kind,
             node_edges,
             round: vec![],
+            removed: vec![],
         };
         (blocks, x)
     }
@@ -408,6 +414,7 @@ mod tests {
             x,
             tolerance: 1e-3,
             joint_material: &[0],
+            fill_material: None,
         }
     }
 

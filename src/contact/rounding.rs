@@ -86,6 +86,7 @@ mod tests {
             edge_kind: vec![adit_meshing::EdgeKind::Region(0); 4],
             node_edges: vec![[3, 0], [0, 1], [1, 2], [2, 3]],
             round: vec![],
+            removed: vec![],
         };
         (blocks, x)
     }

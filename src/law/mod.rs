@@ -2,9 +2,11 @@
 
 mod elastic;
 mod mohr_coulomb;
+mod null;
 
 pub use elastic::Elastic;
 pub use mohr_coulomb::{MohrCoulomb, SHEAR_NOW, SHEAR_PAST, TENSION_NOW, TENSION_PAST};
+pub use null::Null;
 
 use crate::model::Stress;
 

@@ -22,6 +22,8 @@ pub struct Blocks {
     /// Corner rounding radius of each node, m (`contact::rounding`; 0 but at the convex corners of
     /// rigid and simple blocks; empty: no rounding).
     pub round: Vec<f64>,
+    /// Blocks removed by an excavation stage (empty: none).
+    pub removed: Vec<bool>,
 }
 
 impl Blocks {
@@ -37,6 +39,11 @@ impl Blocks {
     /// Boundary edge ids of block `b`.
     pub fn edge_range(&self, b: usize) -> std::ops::Range<usize> {
         self.edge_start[b] as usize..self.edge_start[b + 1] as usize
+    }
+
+    /// Whether block `b` has been excavated.
+    pub fn is_removed(&self, b: usize) -> bool {
+        self.removed.get(b).copied().unwrap_or(false)
     }
 
     /// Rounding radius of node `n`, m.

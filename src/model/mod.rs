@@ -87,4 +87,10 @@ pub struct Model {
     pub joint_material: Vec<u32>,
     /// Contact detection tolerance, m.
     pub contact_tolerance: f64,
+    /// Joint material of the contacts on the walls of filled (staged) excavations.
+    pub fill_material: Option<u32>,
+    /// For each block, the staged excavation whose rock it is, or `NOT_FILL`.
+    pub fill: Vec<u32>,
+    /// The null law excavated zones take (staged scenes only).
+    pub null_material: Option<MaterialId>,
 }

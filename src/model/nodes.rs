@@ -15,6 +15,9 @@ pub struct Nodes {
     pub pos: Vec<[f64; 2]>,
     /// Displacement since the start of the run, m.
     pub disp: Vec<[f64; 2]>,
+    /// Displacement at the last reset (a stage's `reset_displacements`), m: output shows
+    /// `disp − origin`.
+    pub origin: Vec<[f64; 2]>,
     /// Velocity, m/s.
     pub vel: Vec<[f64; 2]>,
     /// Unbalanced force of the last cycle (fixed components zeroed), N per metre of thickness.
@@ -34,6 +37,7 @@ impl Nodes {
         Nodes {
             pos,
             disp: vec![[0.0; 2]; n],
+            origin: vec![[0.0; 2]; n],
             vel: vec![[0.0; 2]; n],
             force: vec![[0.0; 2]; n],
             mass: vec![0.0; n],

@@ -92,6 +92,16 @@ impl OutputWriter {
     }
 }
 
+/// One stage in `summary.json`.
+#[derive(Debug, Clone, Serialize)]
+pub struct StageSummary {
+    pub name: String,
+    pub cycles: u64,
+    /// `converged`, `cycle_limit` or `failed`.
+    pub status: String,
+    pub final_ratio: f64,
+}
+
 /// Contents of `summary.json`.
 #[derive(Debug, Clone, Serialize)]
 pub struct Summary {
@@ -126,4 +136,7 @@ pub struct Summary {
     pub min_zone_angle: f64,
     /// What building the model found worth a warning (sliver blocks, absorbed joints).
     pub warnings: Vec<String>,
+    /// Each stage of a staged scene, in order (empty without stages).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub stages: Vec<StageSummary>,
 }

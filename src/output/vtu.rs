@@ -84,7 +84,14 @@ pub fn zones_vtu(model: &Model) -> Result<Vec<u8>, vtkio::Error> {
         },
         data: Attributes {
             point: vec![
-                Attribute::generic("displacement", 3).with_data(vec3(&nodes.disp)),
+                Attribute::generic("displacement", 3).with_data(
+                    nodes
+                        .disp
+                        .iter()
+                        .zip(&nodes.origin)
+                        .flat_map(|(u, o)| [u[0] - o[0], u[1] - o[1], 0.0])
+                        .collect::<Vec<f64>>(),
+                ),
                 Attribute::generic("velocity", 3).with_data(vec3(&nodes.vel)),
             ],
             cell: vec![

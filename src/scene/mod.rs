@@ -49,8 +49,33 @@ pub struct Scene {
     pub boundary: Vec<BoundaryCondition>,
     #[serde(default)]
     pub solve: SolveSpec,
+    /// Stages solved in order (default: one stage, solved with `solve`). Excavations named in a
+    /// stage's `excavate` are filled with rock until that stage.
+    #[serde(default)]
+    pub stages: Vec<Stage>,
     #[serde(default)]
     pub output: OutputSpec,
+}
+
+/// One stage: what changes, then a solve; each stage ends with an output step.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Stage {
+    /// Name, reported in the summary.
+    pub name: String,
+    /// Excavations removed at the start of this stage (by name).
+    #[serde(default)]
+    pub excavate: Vec<String>,
+    /// Fraction of the in-situ traction left on the walls of every excavation made so far
+    /// (fictitious support pressure of the convergence–confinement method), in [0, 1]; default 0.
+    #[serde(default)]
+    pub support_fraction: f64,
+    /// Measure displacements from the start of this stage on (default false).
+    #[serde(default)]
+    pub reset_displacements: bool,
+    /// How to solve this stage (default: the scene's `solve`).
+    #[serde(default)]
+    pub solve: Option<SolveSpec>,
 }
 
 /// A zone material: isotropic elasticity, and the strength of the Mohr–Coulomb law.
@@ -469,6 +494,13 @@ pub struct OutputSpec {
 }
 
 impl Scene {
+    /// Whether excavation `name` waits for a stage (filled with rock until then).
+    pub fn is_staged(&self, name: &str) -> bool {
+        self.stages
+            .iter()
+            .any(|st| st.excavate.iter().any(|e| e == name))
+    }
+
     /// Parse and validate a scene from JSON text; `source` names it in messages.
     pub fn from_json(text: &str, source: &str) -> Result<Scene, SceneError> {
         let scene: Scene = serde_json::from_str(text).map_err(|e| SceneError::Parse {

@@ -2,7 +2,7 @@
 
 use thiserror::Error;
 
-use super::{BoundaryCondition, JointLawKind, Material, Scene, ZoneLawKind};
+use super::{BoundaryCondition, JointLawKind, Material, Scene, SolveSpec, ZoneLawKind};
 
 /// Why a scene cannot be used.
 #[derive(Debug, Error)]
@@ -99,6 +99,30 @@ fn validate_strength(p: &str, m: &Material) -> Result<(), SceneError> {
             Ok(())
         }
     }
+}
+
+/// A solve specification at `p`.
+fn validate_solve(p: &str, v: &SolveSpec) -> Result<(), SceneError> {
+    positive(&format!("{p}.ratio"), v.ratio)?;
+    if v.max_cycles == 0 {
+        return Err(invalid(format!("{p}.max_cycles"), "must be at least 1"));
+    }
+    if !(0.0..1.0).contains(&v.damping) {
+        return Err(invalid(
+            format!("{p}.damping"),
+            format!("must be in [0, 1), got {}", v.damping),
+        ));
+    }
+    if !(v.safety_factor > 0.0 && v.safety_factor <= 1.0) {
+        return Err(invalid(
+            format!("{p}.safety_factor"),
+            format!("must be in (0, 1], got {}", v.safety_factor),
+        ));
+    }
+    if v.monitor_every == 0 {
+        return Err(invalid(format!("{p}.monitor_every"), "must be at least 1"));
+    }
+    Ok(())
 }
 
 fn positive(path: &str, v: f64) -> Result<(), SceneError> {
@@ -314,25 +338,33 @@ impl Scene {
         for (i, bc) in self.boundary.iter().enumerate() {
             self.validate_boundary(i, bc)?;
         }
-        let v = &self.solve;
-        positive("solve.ratio", v.ratio)?;
-        if v.max_cycles == 0 {
-            return Err(invalid("solve.max_cycles", "must be at least 1"));
-        }
-        if !(0.0..1.0).contains(&v.damping) {
-            return Err(invalid(
-                "solve.damping",
-                format!("must be in [0, 1), got {}", v.damping),
-            ));
-        }
-        if !(v.safety_factor > 0.0 && v.safety_factor <= 1.0) {
-            return Err(invalid(
-                "solve.safety_factor",
-                format!("must be in (0, 1], got {}", v.safety_factor),
-            ));
-        }
-        if v.monitor_every == 0 {
-            return Err(invalid("solve.monitor_every", "must be at least 1"));
+        validate_solve("solve", &self.solve)?;
+        self.validate_stages()
+    }
+
+    fn validate_stages(&self) -> Result<(), SceneError> {
+        let mut done: Vec<&str> = Vec::new();
+        for (i, st) in self.stages.iter().enumerate() {
+            let p = format!("stages[{i}]");
+            for (k, name) in st.excavate.iter().enumerate() {
+                let q = format!("{p}.excavate[{k}]");
+                if !self.excavations.iter().any(|e| e.name == *name) {
+                    return Err(invalid(q, format!("no excavation named '{name}'")));
+                }
+                if done.contains(&name.as_str()) {
+                    return Err(invalid(q, format!("'{name}' is excavated twice")));
+                }
+                done.push(name);
+            }
+            if let Some(spec) = &st.solve {
+                validate_solve(&format!("{p}.solve"), spec)?;
+            }
+            if !(0.0..=1.0).contains(&st.support_fraction) {
+                return Err(invalid(
+                    format!("{p}.support_fraction"),
+                    format!("must be in [0, 1], got {}", st.support_fraction),
+                ));
+            }
         }
         Ok(())
     }

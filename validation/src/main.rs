@@ -361,8 +361,9 @@ fn main() -> anyhow::Result<()> {
     table(&mut md, &salencon_cases);
     let _ = writeln!(
         md,
-        "\nGround reaction curve (convergence–confinement) on the shipped mesh: the wall first carries p0, then the \
-         support pressure is lowered step by step, each step solved to equilibrium; mean radial wall displacement \
+        "\nGround reaction curve (convergence–confinement) on the shipped mesh, through scene stages: the hole \
+         starts filled with rock, the first stage excavates it leaving the full in-situ traction on the wall \
+         (`support_fraction` 1), the next ones lower the support step by step, each solved to equilibrium; mean radial wall displacement \
          against Salençon's u(pi) (elastic above the critical pressure (2p0 − σc)/(Kp + 1) = {:.1} MPa). `grc`: largest \
          deviation over the curve relative to the unsupported wall displacement.\n",
         (2.0 * 30.0 - 2.0 * 5.0 * 30f64.to_radians().cos() / (1.0 - 30f64.to_radians().sin()))

@@ -21,11 +21,11 @@
 use std::time::Instant;
 
 use adit::Scene;
-use adit::build::{add_tractions, build};
+use adit::build::build;
 use adit::law::{SHEAR_NOW, SHEAR_PAST};
-use adit::scene::ZoneLawKind;
+use adit::scene::{Stage, ZoneLawKind};
 use adit::solve::{Quiet, Solver, Status};
-use adit_meshing::EdgeKind;
+use adit::stage::Staging;
 
 use crate::kirsch_case::scaled;
 use crate::report::CaseReport;
@@ -255,29 +255,43 @@ pub struct GrcPoint {
     pub exact: f64,
 }
 
-/// The ground reaction curve (convergence–confinement): the wall first carries p0 (the model is in
-/// equilibrium with its in-situ stress), then the support pressure is lowered through `fractions`
-/// of p0 (descending to 0), each step solved to equilibrium; the mean radial wall displacement
-/// against Salençon's u(pi). Returns the curve and a report whose `grc` error is the largest
-/// |u_h − u| over the curve relative to |u(0)|.
+/// The ground reaction curve (convergence–confinement) through scene stages: the hole starts
+/// filled with rock; the first stage excavates it leaving the full in-situ traction on the wall
+/// (`support_fraction` 1: nothing moves), the next ones lower the support to `fractions` of it
+/// (descending to 0), each solved to equilibrium; the mean radial wall displacement against
+/// Salençon's u(pi). Returns the curve and a report whose `grc` error is the largest |u_h − u|
+/// over the curve relative to |u(0)|.
 pub fn ground_reaction(
     kirsch: &Scene,
     factor: f64,
     fractions: &[f64],
 ) -> anyhow::Result<(Vec<GrcPoint>, CaseReport)> {
     let start = Instant::now();
-    let (sc, exact) = scene(kirsch, factor, 0.0);
+    let (mut sc, exact) = scene(kirsch, factor, 0.0);
+    let hole = sc.excavations[0].name.clone();
+    let stage = |name: String, excavate: Vec<String>, support_fraction: f64| Stage {
+        name,
+        excavate,
+        support_fraction,
+        reset_displacements: false,
+        solve: None,
+    };
+    sc.stages = std::iter::once(stage("excavate, supported".into(), vec![hole.clone()], 1.0))
+        .chain(
+            fractions
+                .iter()
+                .map(|&f| stage(format!("support {f}"), vec![], f)),
+        )
+        .collect();
     let mut b = build(&sc)?;
     let p0 = exact.p0;
-    let on_wall = |e: &&adit_meshing::BoundaryEdge| matches!(e.kind, EdgeKind::Excavation(0));
-    let push =
-        |nodes: &mut adit::model::Nodes, boundary: &[adit_meshing::BoundaryEdge], dp: f64| {
-            add_tractions(nodes, boundary.iter().filter(on_wall), |_, n| {
-                [-dp * n[0], -dp * n[1]]
-            })
-        };
-    push(&mut b.model.nodes, &b.boundary, p0);
-    let wall = b.part_nodes[&sc.excavations[0].name].clone();
+    // The wall nodes of the rock that stays (the fill's own wall nodes go with it).
+    let fill = |n: u32| b.model.fill[b.model.blocks.block_of_node(n)] != adit::build::NOT_FILL;
+    let wall: Vec<u32> = b.part_nodes[&hole]
+        .iter()
+        .copied()
+        .filter(|&n| !fill(n))
+        .collect();
     let mean_u = |m: &adit::model::Model| {
         wall.iter()
             .map(|&n| {
@@ -287,19 +301,20 @@ pub fn ground_reaction(
             .sum::<f64>()
             / wall.len() as f64
     };
-    let mut solver = Solver::new(&mut b.model, &sc.solve, 0);
-    let (mut curve, mut cycles, mut pressure) = (Vec::new(), 0, p0);
-    for &f in fractions {
-        let pi = f * p0;
-        push(&mut b.model.nodes, &b.boundary, pi - pressure);
-        pressure = pi;
+    let mut staging = Staging::new(&sc);
+    let (mut curve, mut cycles) = (Vec::new(), 0);
+    for st in &sc.stages {
+        staging.apply(st, &sc, &mut b);
+        let mut solver = Solver::new(&mut b.model, &sc.solve, 0);
         let sol = solver.solve(&mut b.model, &mut Quiet);
         anyhow::ensure!(
             sol.status == Status::Converged,
-            "ground reaction at pi = {pi}: {:?}",
+            "ground reaction, stage {}: {:?}",
+            st.name,
             sol.status
         );
         cycles += sol.cycles;
+        let pi = st.support_fraction * p0;
         curve.push(GrcPoint {
             pressure: pi,
             computed: mean_u(&b.model),

@@ -1,0 +1,127 @@
+//! Stages: what changes between the solves of a staged run — excavations removed, the support
+//! pressure left on their walls (convergence–confinement), displacements reset.
+
+use adit_meshing::{BoundaryEdge, EdgeKind};
+
+use crate::build::{Built, NOT_FILL, add_tractions, in_situ_stress};
+use crate::contact::Contacts;
+use crate::model::bodies::FIX_SPIN;
+use crate::model::{FIX_X, FIX_Y, Gather, Model, traction};
+use crate::scene::{Scene, Stage};
+
+/// What the stages so far have done.
+#[derive(Debug, Clone, Default)]
+pub struct Staging {
+    /// Support fraction now applied on the walls of each excavation (index as in the scene), or
+    /// `None` while it is filled.
+    support: Vec<Option<f64>>,
+}
+
+impl Staging {
+    pub fn new(scene: &Scene) -> Staging {
+        Staging {
+            support: vec![None; scene.excavations.len()],
+        }
+    }
+
+    /// Apply `stage` to the model before its solve: remove the rock of the excavations it names,
+    /// set the support pressure of every excavation made so far to `support_fraction` × the
+    /// in-situ traction on its walls, and reset displacements if asked.
+    pub fn apply(&mut self, stage: &Stage, scene: &Scene, built: &mut Built) {
+        for name in &stage.excavate {
+            let j = scene
+                .excavations
+                .iter()
+                .position(|e| e.name == *name)
+                .expect("validated");
+            // The rock's contacts go with it: the wall is unsupported until a pressure is set.
+            remove_fill(&mut built.model, j as u32);
+            self.support[j] = Some(0.0);
+        }
+        let poisson = scene.materials[&scene.region.material].poisson;
+        for (j, support) in self.support.iter_mut().enumerate() {
+            let Some(now) = support else { continue };
+            let change = stage.support_fraction - *now;
+            if change != 0.0 {
+                let model = &mut built.model;
+                let walls: Vec<BoundaryEdge> = built
+                    .boundary
+                    .iter()
+                    .filter(|e| e.kind == EdgeKind::Excavation(j as u32))
+                    .filter(|e| {
+                        let b = model.blocks.block_of_node(e.nodes[0]);
+                        !model.blocks.is_removed(b)
+                    })
+                    .copied()
+                    .collect();
+                add_tractions(&mut model.nodes, walls.iter(), |p, n| {
+                    let t = traction(&in_situ_stress(&scene.in_situ, p[1], poisson), n);
+                    [change * t[0], change * t[1]]
+                });
+                *now = stage.support_fraction;
+            }
+        }
+        if stage.reset_displacements {
+            built.model.nodes.origin.clone_from(&built.model.nodes.disp);
+        }
+    }
+}
+
+/// Remove the rock filling excavation `j`: its blocks are marked removed (detection skips them),
+/// their zones take the null law, their nodes and bodies are held still and unloaded, and the
+/// contacts they made are dropped, so the walls lose the traction the rock gave them.
+pub fn remove_fill(model: &mut Model, j: u32) {
+    let null = model
+        .null_material
+        .expect("a staged scene has the null law");
+    let n_blocks = model.blocks.len();
+    model.blocks.removed.resize(n_blocks, false);
+    for b in 0..n_blocks {
+        if model.fill.get(b).copied().unwrap_or(NOT_FILL) != j {
+            continue;
+        }
+        model.blocks.removed[b] = true;
+        let (z0, z1) = (model.blocks.zone_start[b], model.blocks.zone_start[b + 1]);
+        for z in z0 as usize..z1 as usize {
+            model.zones.material[z] = null;
+            model.zones.stress[z] = [0.0; 4];
+            model.zones.state[z] = 0;
+        }
+        let (n0, n1) = (model.blocks.node_start[b], model.blocks.node_start[b + 1]);
+        for n in n0 as usize..n1 as usize {
+            model.nodes.fixed[n] |= FIX_X | FIX_Y;
+            model.nodes.vel[n] = [0.0; 2];
+            model.nodes.applied[n] = [0.0; 2];
+        }
+        if let Some(k) = model.bodies.block.iter().position(|&bb| bb as usize == b) {
+            model.bodies.fixed[k] = FIX_X | FIX_Y | FIX_SPIN;
+            model.bodies.velocity[k] = [0.0; 6];
+            model.bodies.weight[k] = [0.0; 2];
+            model.bodies.stress[k] = [0.0; 4];
+        }
+    }
+    let blocks = &model.blocks;
+    let keep: Vec<bool> = (0..model.contacts.len())
+        .map(|c| {
+            let node_block = blocks.block_of_node(model.contacts.node[c]);
+            !blocks.is_removed(node_block) && !blocks.is_removed(model.contacts.block[c] as usize)
+        })
+        .collect();
+    let old = std::mem::take(&mut model.contacts);
+    let mut kept = Contacts::default();
+    for (c, _) in keep.iter().enumerate().filter(|(_, k)| **k) {
+        kept.node.push(old.node[c]);
+        kept.edge.push(old.edge[c]);
+        kept.block.push(old.block[c]);
+        kept.xi.push(old.xi[c]);
+        kept.length.push(old.length[c]);
+        kept.material.push(old.material[c]);
+        kept.corner.push(old.corner[c]);
+        kept.state.push(old.state[c]);
+    }
+    model.contacts = kept;
+    model.contact_gather = Gather::new(
+        model.nodes.len(),
+        &model.contacts.triples(&model.blocks.edges),
+    );
+}
