@@ -17,10 +17,11 @@ pub fn domain(scene: &Scene) -> Result<Domain, MeshError> {
         .excavations
         .iter()
         .map(|e| {
-            let polygon = match (&e.circle, &e.polygon) {
-                (Some(c), _) => Polygon::circle(c.center, c.radius, c.segments),
-                (None, Some(p)) => Polygon::new(p.clone()),
-                (None, None) => unreachable!("validated: one shape per excavation"),
+            let polygon = match (&e.circle, &e.polygon, &e.horseshoe) {
+                (Some(c), _, _) => Polygon::circle(c.center, c.radius, c.segments),
+                (None, Some(p), _) => Polygon::new(p.clone()),
+                (None, None, Some(h)) => Polygon::new(h.polygon()),
+                (None, None, None) => unreachable!("validated: one shape per excavation"),
             };
             Hole {
                 name: e.name.clone(),

@@ -66,3 +66,16 @@ fn tractions_of_a_uniform_stress_balance_on_a_closed_boundary() {
         "{top}"
     );
 }
+
+#[test]
+fn horseshoe_excavation_has_its_area() {
+    let s = scene_with(
+        "[[-10, -10], [10, -10], [10, 10], [-10, 10]]",
+        r#"{ "name": "drive", "horseshoe": { "center": [0, 0], "radius": 3, "wall_height": 2, "segments": 256 } }"#,
+    );
+    let b = build(&s).unwrap();
+    let hole = b.domain.holes[0].polygon.signed_area().abs();
+    let exact = 0.5 * std::f64::consts::PI * 9.0 + 6.0 * 2.0;
+    assert!((hole - exact).abs() < 1e-3 * exact, "{hole} vs {exact}");
+    assert!((b.mesh.area - (400.0 - hole)).abs() < 1e-6 * 400.0);
+}

@@ -154,6 +154,46 @@ pub struct Excavation {
     /// Vertices (m) of a polygonal excavation.
     #[serde(default)]
     pub polygon: Option<Vec<[f64; 2]>>,
+    /// A horseshoe: semicircular crown on vertical walls and a flat invert.
+    #[serde(default)]
+    pub horseshoe: Option<Horseshoe>,
+}
+
+/// A horseshoe excavation: a semicircular crown of radius r centred on the springline at
+/// `center`, vertical walls of height `wall_height` below it, and a flat invert; width 2r.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Horseshoe {
+    /// Centre of the crown on the springline, m.
+    pub center: [f64; 2],
+    /// Crown radius (half the width), m.
+    pub radius: f64,
+    /// Height of the vertical walls from the invert to the springline, m.
+    pub wall_height: f64,
+    /// Segments of the crown arc (default 64).
+    #[serde(default = "default_arc_segments")]
+    pub segments: usize,
+}
+
+fn default_arc_segments() -> usize {
+    64
+}
+
+impl Horseshoe {
+    /// The outline, counter-clockwise from the right springline: crown, left wall, invert.
+    pub fn polygon(&self) -> Vec<[f64; 2]> {
+        let [cx, cy] = self.center;
+        let n = self.segments;
+        let mut v: Vec<[f64; 2]> = (0..=n)
+            .map(|k| {
+                let t = std::f64::consts::PI * k as f64 / n as f64;
+                [cx + self.radius * t.cos(), cy + self.radius * t.sin()]
+            })
+            .collect();
+        v.push([cx - self.radius, cy - self.wall_height]);
+        v.push([cx + self.radius, cy - self.wall_height]);
+        v
+    }
 }
 
 /// A circle approximated by a regular polygon.

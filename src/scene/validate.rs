@@ -183,8 +183,8 @@ impl Scene {
         }
         for (i, e) in self.excavations.iter().enumerate() {
             let p = format!("excavations[{i}]");
-            match (&e.circle, &e.polygon) {
-                (Some(c), None) => {
+            match (&e.circle, &e.polygon, &e.horseshoe) {
+                (Some(c), None, None) => {
                     positive(&format!("{p}.circle.radius"), c.radius)?;
                     if c.segments < 8 {
                         return Err(invalid(
@@ -193,8 +193,23 @@ impl Scene {
                         ));
                     }
                 }
-                (None, Some(_)) => {}
-                _ => return Err(invalid(&p, "give exactly one of `circle` and `polygon`")),
+                (None, Some(_), None) => {}
+                (None, None, Some(h)) => {
+                    positive(&format!("{p}.horseshoe.radius"), h.radius)?;
+                    positive(&format!("{p}.horseshoe.wall_height"), h.wall_height)?;
+                    if h.segments < 4 {
+                        return Err(invalid(
+                            format!("{p}.horseshoe.segments"),
+                            "at least 4 segments",
+                        ));
+                    }
+                }
+                _ => {
+                    return Err(invalid(
+                        &p,
+                        "give exactly one of `circle`, `polygon` and `horseshoe`",
+                    ));
+                }
             }
             if self.excavations[..i].iter().any(|o| o.name == e.name) {
                 return Err(invalid(
