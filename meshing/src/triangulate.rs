@@ -164,12 +164,14 @@ pub fn triangulate_block(
     );
 
     let budget = zoning.max_zones.max(16 * boundary_vertices);
-    let params = RefinementParameters::<f64>::new()
-        .exclude_outer_faces(true)
-        .with_angle_limit(AngleLimit::from_deg(zoning.min_angle_deg))
-        .with_max_allowed_area(0.5 * zoning.h_far * zoning.h_far)
-        .with_max_additional_vertices(budget);
-    let mesh = constrained_mesh(block, vertices, edges, params, Some(budget))?;
+    let params = |exclude: bool| {
+        RefinementParameters::<f64>::new()
+            .exclude_outer_faces(exclude)
+            .with_angle_limit(AngleLimit::from_deg(zoning.min_angle_deg))
+            .with_max_allowed_area(0.5 * zoning.h_far * zoning.h_far)
+            .with_max_additional_vertices(budget)
+    };
+    let mesh = constrained_mesh(block, vertices, edges, &params, Some(budget))?;
     if mesh.triangles.len() > zoning.max_zones {
         return Err(MeshError::Zoning(format!(
             "{} zones exceed the limit of {}; coarsen the zoning",
@@ -191,21 +193,52 @@ pub fn triangulate_outline(block: &Block) -> Result<TriMesh, MeshError> {
         let last = vertices.len();
         edges.extend((first..last).map(|k| [k, if k + 1 == last { first } else { k + 1 }]));
     }
-    let params = RefinementParameters::<f64>::new()
-        .exclude_outer_faces(true)
-        .with_angle_limit(AngleLimit::from_deg(0.0))
-        .with_max_additional_vertices(0);
-    constrained_mesh(block, vertices, edges, params, None)
+    let params = |exclude: bool| {
+        RefinementParameters::<f64>::new()
+            .exclude_outer_faces(exclude)
+            .with_angle_limit(AngleLimit::from_deg(0.0))
+            .with_max_additional_vertices(0)
+    };
+    constrained_mesh(block, vertices, edges, &params, None)
 }
 
 /// Constrained Delaunay triangulation of the block rings `edges` over `vertices`, refined by
-/// `params`; `budget` (when given) is the vertex budget whose exhaustion is an error.
+/// `params(exclude_outer_faces)`; `budget` (when given) is the vertex budget whose exhaustion is an
+/// error. spade's outer-face exclusion decides inside and outside by crossing constraint edges,
+/// which can fail for a block with many holes touching each other or its outer ring at a vertex;
+/// when the kept triangles do not cover the block's area, the triangulation is redone refining the
+/// whole hull and the triangles are kept by where their centroids lie.
 fn constrained_mesh(
+    block: &Block,
+    vertices: Vec<Point2<f64>>,
+    edges: Vec<[usize; 2]>,
+    params: &dyn Fn(bool) -> RefinementParameters<f64>,
+    budget: Option<usize>,
+) -> Result<TriMesh, MeshError> {
+    let mesh = constrained_mesh_with(
+        block,
+        vertices.clone(),
+        edges.clone(),
+        params(true),
+        budget,
+        false,
+    )?;
+    let area = block.area();
+    if (mesh.stats().area - area).abs() <= 1e-9 * area.abs().max(f64::MIN_POSITIVE) {
+        return Ok(mesh);
+    }
+    constrained_mesh_with(block, vertices, edges, params(false), budget, true)
+}
+
+/// One triangulation of `constrained_mesh`: faces excluded by spade, or (`by_centroid`) faces whose
+/// centroid is outside the block's outer ring or inside one of its holes.
+fn constrained_mesh_with(
     block: &Block,
     vertices: Vec<Point2<f64>>,
     edges: Vec<[usize; 2]>,
     params: RefinementParameters<f64>,
     budget: Option<usize>,
+    by_centroid: bool,
 ) -> Result<TriMesh, MeshError> {
     // Crossing constraint edges (a degenerate block ring) are reported, not a panic in spade.
     let mut conflict = None;
@@ -234,9 +267,17 @@ fn constrained_mesh(
         )));
     }
     let excluded: HashSet<_> = result.excluded_faces.iter().copied().collect();
+    let in_block = |p: Point| block.outer.contains(p) && !block.holes.iter().any(|h| h.contains(p));
     let mut tris: Vec<[usize; 3]> = cdt
         .inner_faces()
-        .filter(|f| !excluded.contains(&f.fix()))
+        .filter(|f| {
+            if by_centroid {
+                let c = f.center();
+                in_block([c.x, c.y])
+            } else {
+                !excluded.contains(&f.fix())
+            }
+        })
         .map(|f| f.vertices().map(|v| v.fix().index()))
         .collect();
     let pos: Vec<Point> = cdt

@@ -79,3 +79,21 @@ fn horseshoe_excavation_has_its_area() {
     assert!((hole - exact).abs() < 1e-3 * exact, "{hole} vs {exact}");
     assert!((b.mesh.area - (400.0 - hole)).abs() < 1e-6 * 400.0);
 }
+
+/// Non-persistent joints leave clusters of blocks floating inside a large block, as holes some
+/// of which touch each other or its outer ring at a vertex; the zones must still cover the region.
+#[test]
+fn non_persistent_joints_leave_no_area_unzoned() {
+    let text = r#"{ "name": "t", "materials": { "rock": { "density": 2500, "young": 1e9, "poisson": 0.2 } },
+        "region": { "polygon": [[-40, -40], [40, -40], [40, 40], [-40, 40]], "material": "rock" },
+        "zoning": { "edge_at_excavation": 0.25, "edge_far": 4.0, "grading": 0.25, "min_angle": 28 },
+        "joint_materials": { "j": { "normal_stiffness": 1e10, "shear_stiffness": 1e10 } },
+        "joint_sets": [
+            { "dip": 30, "spacing": 2.5, "origin": [0.4, 0.3], "trace": 12, "gap": 3, "material": "j" },
+            { "dip": 105, "spacing": 3.0, "origin": [-0.2, 0.5], "trace": 10, "gap": 4, "material": "j" } ] }"#;
+    let s = Scene::from_json(text, "test").unwrap();
+    let m = mesh(&s).unwrap();
+    assert!(m.blocking.blocks.iter().any(|b| b.holes.len() > 5));
+    let zoned = m.stats().area;
+    assert!((zoned - 6400.0).abs() < 1e-6 * 6400.0, "{zoned}");
+}
