@@ -333,15 +333,19 @@ pub fn detect(
                         .into_iter()
                         .map(|f| (f, a)),
                 );
-            both.map(|((node, edge, xi, mut touch, corner), block_b)| {
+            both.filter_map(|((node, edge, xi, mut touch, corner), block_b)| {
                 let (length, face) = contact_length(d, node, edge, block_b as usize);
                 touch.face = face;
                 let state = match persisting(node, block_b) {
                     Some(c) => previous.state[c],
+                    // Blocks are detected before they touch (detection reruns whenever anything
+                    // may have moved half the tolerance), so a new contact deeper than the
+                    // tolerance is a node behind an edge it never crossed: no contact.
+                    None if !previous.is_empty() && touch.gap < -d.tolerance => return None,
                     None => fresh(&touch),
                 };
                 let material = material_of(d, node, edge);
-                (node, edge, block_b, xi, length, material, corner, state)
+                Some((node, edge, block_b, xi, length, material, corner, state))
             })
             .collect()
         })
