@@ -87,3 +87,27 @@ fn a_stage_naming_an_unknown_excavation_is_an_error() {
     let err = Scene::from_json(bad, "s").unwrap_err().to_string();
     assert_eq!(err, "stages[0].excavate[0]: no excavation named 'adit'");
 }
+
+/// The draft tunnel model runs through its stages to equilibrium, and its rock yields around the
+/// opening.
+#[test]
+fn tunnel_model_converges_through_its_stages() {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("models/tunnel.json");
+    let sc = Scene::load(&path).unwrap();
+    let out = std::env::temp_dir().join("adit_tunnel_model_test");
+    let r = adit::run_scene(&sc, &out, &mut Quiet).unwrap();
+    assert!(
+        r.summary.stages.iter().all(|s| s.status == "converged"),
+        "{:?}",
+        r.summary.stages
+    );
+    let yielded = r
+        .built
+        .model
+        .zones
+        .state
+        .iter()
+        .filter(|&&s| s & 4 != 0)
+        .count();
+    assert!(yielded > 100, "{yielded} zones yielded in shear");
+}
