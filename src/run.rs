@@ -120,6 +120,8 @@ pub fn run_scene(
             cycles: solution.cycles,
             status: solution.status.label().to_string(),
             final_ratio: solution.final_ratio,
+            support_fraction: staging.support_fraction(),
+            closure: staging.closures(scene, &built),
         });
         let t = Instant::now();
         let failed = matches!(solution.status, Status::Failed(_));
@@ -141,6 +143,10 @@ pub fn run_scene(
     };
     let t = Instant::now();
     writer.write_history(&solution.history)?;
+    if !scene.stages.is_empty() {
+        let names: Vec<String> = scene.excavations.iter().map(|e| e.name.clone()).collect();
+        writer.write_ground_reaction(&stage_summaries, &names)?;
+    }
     output_seconds += t.elapsed().as_secs_f64();
     seconds.output = output_seconds;
     let wall = start.elapsed().as_secs_f64();

@@ -67,6 +67,51 @@ impl Staging {
     }
 }
 
+impl Staging {
+    /// Mean closure (m, inward positive) of the wall of each excavation made so far: the
+    /// displacement of the rock's wall nodes along the inward normal of their wall edges.
+    pub fn closures(
+        &self,
+        scene: &Scene,
+        built: &Built,
+    ) -> std::collections::BTreeMap<String, f64> {
+        let m = &built.model;
+        let mut out = std::collections::BTreeMap::new();
+        for (j, support) in self.support.iter().enumerate() {
+            if support.is_none() {
+                continue;
+            }
+            let (mut sum, mut count) = (0.0, 0usize);
+            for e in built
+                .boundary
+                .iter()
+                .filter(|e| e.kind == EdgeKind::Excavation(j as u32))
+            {
+                if m.blocks.is_removed(m.blocks.block_of_node(e.nodes[0])) {
+                    continue;
+                }
+                let [a, b] = e.nodes.map(|n| n as usize);
+                let (pa, pb) = (m.nodes.pos[a], m.nodes.pos[b]);
+                let len = (pb[0] - pa[0]).hypot(pb[1] - pa[1]);
+                // Outward normal of the rock (material on the left) points into the excavation.
+                let n = [(pb[1] - pa[1]) / len, -(pb[0] - pa[0]) / len];
+                for k in [a, b] {
+                    let u = m.nodes.disp[k];
+                    sum += u[0] * n[0] + u[1] * n[1];
+                    count += 1;
+                }
+            }
+            out.insert(scene.excavations[j].name.clone(), sum / count.max(1) as f64);
+        }
+        out
+    }
+
+    /// The support fraction now applied (that of the last stage).
+    pub fn support_fraction(&self) -> f64 {
+        self.support.iter().flatten().copied().next().unwrap_or(0.0)
+    }
+}
+
 /// Remove the rock filling excavation `j`: its blocks are marked removed (detection skips them),
 /// their zones take the null law, their nodes and bodies are held still and unloaded, and the
 /// contacts they made are dropped, so the walls lose the traction the rock gave them.

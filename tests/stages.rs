@@ -38,6 +38,16 @@ fn staged_excavation_releases_the_wall_stage_by_stage() {
     assert!(stages.iter().all(|s| s.status == "converged"), "{stages:?}");
     let pvd = std::fs::read_to_string(out.join("staged.pvd")).unwrap();
     assert_eq!(pvd.matches("_zones_").count(), 3, "{pvd}");
+    // The ground reaction curve: closure grows as the support is lowered (elastic: linear).
+    let grc = std::fs::read_to_string(out.join("ground_reaction.csv")).unwrap();
+    let rows: Vec<&str> = grc.lines().collect();
+    assert_eq!(rows[0], "stage,support_fraction,closure_tunnel_m");
+    assert_eq!(rows.len(), 4, "{grc}");
+    let (half, none) = (stages[1].closure["tunnel"], stages[2].closure["tunnel"]);
+    assert!(
+        half > 0.0 && (none / half - 2.0).abs() < 0.05,
+        "{half} {none}"
+    );
     // Elastic wall displacement: −Δp a/(2G) for the pressure released, Δp = 10 MPa in all.
     let m = &r.built.model;
     let g = 10e9 / 2.5;

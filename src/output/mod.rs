@@ -83,6 +83,33 @@ impl OutputWriter {
         })
     }
 
+    /// Write `ground_reaction.csv`: one row per stage, support fraction and the wall closure (m) of
+    /// each excavation (empty where not yet excavated).
+    pub fn write_ground_reaction(
+        &self,
+        stages: &[StageSummary],
+        names: &[String],
+    ) -> std::io::Result<()> {
+        write_atomic(&self.dir.join("ground_reaction.csv"), |w| {
+            write!(w, "stage,support_fraction")?;
+            for n in names {
+                write!(w, ",closure_{n}_m")?;
+            }
+            writeln!(w)?;
+            for s in stages {
+                write!(w, "{},{}", s.name.replace(',', ";"), s.support_fraction)?;
+                for n in names {
+                    match s.closure.get(n) {
+                        Some(c) => write!(w, ",{c:e}")?,
+                        None => write!(w, ",")?,
+                    }
+                }
+                writeln!(w)?;
+            }
+            Ok(())
+        })
+    }
+
     /// Write `summary.json`.
     pub fn write_summary(&self, summary: &Summary) -> std::io::Result<()> {
         let text = serde_json::to_string_pretty(summary).map_err(std::io::Error::other)?;
@@ -100,6 +127,12 @@ pub struct StageSummary {
     /// `converged`, `cycle_limit` or `failed`.
     pub status: String,
     pub final_ratio: f64,
+    /// Support fraction on the walls of the excavations made so far.
+    pub support_fraction: f64,
+    /// Mean wall closure of each excavation made so far at the end of the stage, m (inward
+    /// positive, displacement since the start of the run): with `support_fraction`, the ground
+    /// reaction curve.
+    pub closure: std::collections::BTreeMap<String, f64>,
 }
 
 /// Contents of `summary.json`.
