@@ -65,9 +65,7 @@ impl Staging {
             built.model.nodes.origin.clone_from(&built.model.nodes.disp);
         }
     }
-}
 
-impl Staging {
     /// Mean closure (m, inward positive) of the wall of each excavation made so far: the
     /// displacement of the rock's wall nodes along the inward normal of their wall edges.
     pub fn closures(
