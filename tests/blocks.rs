@@ -61,21 +61,49 @@ fn weight_above_each_joint(mode: &str) {
     }
 }
 
+/// Two equal 1 m × 0.5 m blocks side by side, joined by a frictionless joint that carries no
+/// tension, in `mode`, solved dynamically without damping.
+fn collision_scene(mode: &str) -> Scene {
+    let text = format!(
+        r#"{{
+        "name": "collision",
+        "materials": {{ "rock": {{ "density": 2500, "young": 10e9, "poisson": 0.25 }} }},
+        "region": {{ "polygon": [[0, 0], [2, 0], [2, 0.5], [0, 0.5]], "material": "rock" }},
+        "zoning": {{ "edge_at_excavation": 0.125, "edge_far": 0.125 }},
+        "joint_materials": {{ "smooth": {{ "normal_stiffness": 1e12, "shear_stiffness": 1e11, "friction": 0 }} }},
+        "joints": [{{ "from": [1, 0], "to": [1, 0.5], "material": "smooth" }}],
+        "blocks": {{ "mode": "{mode}" }},
+        "solve": {{ "mode": "dynamic", "damping": 0, "max_cycles": 1 }}
+    }}"#
+    );
+    Scene::from_json(&text, "collision").unwrap()
+}
+
+/// Cycle `model` through 3 ms one step at a time; the largest drift of `momentum` over the run,
+/// relative to the starting x momentum.
+fn momentum_drift(
+    solver: &mut Solver,
+    model: &mut adit::model::Model,
+    momentum: impl Fn(&adit::model::Model) -> [f64; 2],
+) -> f64 {
+    let p0 = momentum(model);
+    let cycles = (3e-3 / solver.params.dt) as u64;
+    let mut worst = 0.0f64;
+    for _ in 0..cycles {
+        let sol = solver.solve(model, &mut Quiet);
+        assert!(!matches!(sol.status, Status::Failed(_)), "{:?}", sol.status);
+        let p = momentum(model);
+        worst = worst.max((p[0] - p0[0]).hypot(p[1] - p0[1]) / p0[0]);
+    }
+    worst
+}
+
 /// Two equal free blocks, one moving at 1 m/s into the other through a joint that carries no
 /// tension: momentum is conserved to round-off, and (as for equal elastic bars) they exchange
 /// velocities.
 #[test]
 fn free_collision_conserves_momentum_and_exchanges_velocities() {
-    let text = r#"{
-        "name": "collision",
-        "materials": { "rock": { "density": 2500, "young": 10e9, "poisson": 0.25 } },
-        "region": { "polygon": [[0, 0], [2, 0], [2, 0.5], [0, 0.5]], "material": "rock" },
-        "zoning": { "edge_at_excavation": 0.125, "edge_far": 0.125 },
-        "joint_materials": { "smooth": { "normal_stiffness": 1e12, "shear_stiffness": 1e11, "friction": 0 } },
-        "joints": [{ "from": [1, 0], "to": [1, 0.5], "material": "smooth" }],
-        "solve": { "mode": "dynamic", "damping": 0, "max_cycles": 1 }
-    }"#;
-    let scene = Scene::from_json(text, "collision").unwrap();
+    let scene = collision_scene("deformable");
     let mut b = build(&scene).unwrap();
     assert_eq!(b.model.blocks.len(), 2);
     let left = b.model.blocks.block_of_node(
@@ -99,16 +127,7 @@ fn free_collision_conserves_momentum_and_exchanges_velocities() {
         }
         p
     };
-    let p0 = momentum(&b.model);
-    let duration = 3e-3;
-    let cycles = (duration / solver.params.dt) as u64;
-    let mut worst = 0.0f64;
-    for _ in 0..cycles {
-        let sol = solver.solve(&mut b.model, &mut Quiet);
-        assert!(!matches!(sol.status, Status::Failed(_)), "{:?}", sol.status);
-        let p = momentum(&b.model);
-        worst = worst.max((p[0] - p0[0]).hypot(p[1] - p0[1]) / p0[0]);
-    }
+    let worst = momentum_drift(&mut solver, &mut b.model, momentum);
     let mean_vx = |r: std::ops::Range<usize>| {
         let m: f64 = r.clone().map(|n| b.model.nodes.mass[n]).sum();
         r.map(|n| b.model.nodes.mass[n] * b.model.nodes.vel[n][0])
@@ -130,17 +149,7 @@ fn free_collision_conserves_momentum_and_exchanges_velocities() {
 /// elastic collision through the joint spring, which lets go in tension).
 #[test]
 fn free_rigid_collision_exchanges_velocities() {
-    let text = r#"{
-        "name": "collision",
-        "materials": { "rock": { "density": 2500, "young": 10e9, "poisson": 0.25 } },
-        "region": { "polygon": [[0, 0], [2, 0], [2, 0.5], [0, 0.5]], "material": "rock" },
-        "zoning": { "edge_at_excavation": 0.125, "edge_far": 0.125 },
-        "joint_materials": { "smooth": { "normal_stiffness": 1e12, "shear_stiffness": 1e11, "friction": 0 } },
-        "joints": [{ "from": [1, 0], "to": [1, 0.5], "material": "smooth" }],
-        "blocks": { "mode": "rigid" },
-        "solve": { "mode": "dynamic", "damping": 0, "max_cycles": 1 }
-    }"#;
-    let scene = Scene::from_json(text, "collision").unwrap();
+    let scene = collision_scene("rigid");
     let mut b = build(&scene).unwrap();
     let bodies = &b.model.bodies;
     assert_eq!(bodies.len(), 2);
@@ -155,15 +164,7 @@ fn free_rigid_collision_exchanges_velocities() {
         let b = &m.bodies;
         std::array::from_fn(|d| (0..2).map(|k| b.mass[k][d] * b.velocity[k][d]).sum())
     };
-    let p0 = momentum(&b.model);
-    let cycles = (3e-3 / solver.params.dt) as u64;
-    let mut worst = 0.0f64;
-    for _ in 0..cycles {
-        let sol = solver.solve(&mut b.model, &mut Quiet);
-        assert!(!matches!(sol.status, Status::Failed(_)), "{:?}", sol.status);
-        let p = momentum(&b.model);
-        worst = worst.max((p[0] - p0[0]).hypot(p[1] - p0[1]) / p0[0]);
-    }
+    let worst = momentum_drift(&mut solver, &mut b.model, momentum);
     let v = &b.model.bodies.velocity;
     let (va, vc) = (v[left], v[1 - left]);
     eprintln!("momentum drift {worst:.2e}; after: left {va:?}, right {vc:?}");

@@ -44,3 +44,15 @@ pub fn settle(model: &mut Model, spec: &SolveSpec, what: &str) -> anyhow::Result
     );
     Ok((solver, sol.cycles))
 }
+
+/// Mean radial displacement of `nodes` about the origin, m (outward positive).
+pub fn mean_radial_displacement(model: &Model, nodes: &[u32]) -> f64 {
+    nodes
+        .iter()
+        .map(|&n| {
+            let (p, u) = (model.nodes.pos[n as usize], model.nodes.disp[n as usize]);
+            (u[0] * p[0] + u[1] * p[1]) / p[0].hypot(p[1])
+        })
+        .sum::<f64>()
+        / nodes.len() as f64
+}

@@ -33,13 +33,7 @@ pub struct ModeRun {
 
 /// Mean inward radial displacement of the nodes of `wall`, about the origin, m.
 fn closure(model: &Model, wall: &[u32]) -> f64 {
-    wall.iter()
-        .map(|&n| {
-            let (p, u) = (model.nodes.pos[n as usize], model.nodes.disp[n as usize]);
-            -(u[0] * p[0] + u[1] * p[1]) / p[0].hypot(p[1])
-        })
-        .sum::<f64>()
-        / wall.len() as f64
+    -crate::mean_radial_displacement(model, wall)
 }
 
 /// Run `scene` with every block in `mode` and the rock's Young's modulus times `stiffen`.

@@ -216,14 +216,7 @@ pub fn run(kirsch: &Scene, factor: f64, pi: f64) -> anyhow::Result<CaseReport> {
         .part_nodes
         .get(&sc.excavations[0].name)
         .ok_or_else(|| anyhow::anyhow!("no wall nodes"))?;
-    let u_wall = wall
-        .iter()
-        .map(|&n| {
-            let (p, u) = (m.nodes.pos[n as usize], m.nodes.disp[n as usize]);
-            (u[0] * p[0] + u[1] * p[1]) / p[0].hypot(p[1])
-        })
-        .sum::<f64>()
-        / wall.len() as f64;
+    let u_wall = crate::mean_radial_displacement(m, wall);
     let u_exact = exact.wall_displacement();
     let h = (h2 / count).sqrt();
     Ok(CaseReport::new(
@@ -292,15 +285,7 @@ pub fn ground_reaction(
         .copied()
         .filter(|&n| !fill(n))
         .collect();
-    let mean_u = |m: &adit::model::Model| {
-        wall.iter()
-            .map(|&n| {
-                let (p, u) = (m.nodes.pos[n as usize], m.nodes.disp[n as usize]);
-                (u[0] * p[0] + u[1] * p[1]) / p[0].hypot(p[1])
-            })
-            .sum::<f64>()
-            / wall.len() as f64
-    };
+    let mean_u = |m: &adit::model::Model| crate::mean_radial_displacement(m, &wall);
     let mut staging = Staging::new(&sc);
     let (mut curve, mut cycles) = (Vec::new(), 0);
     for st in &sc.stages {
