@@ -43,18 +43,8 @@ impl Staging {
             let Some(now) = support else { continue };
             let change = stage.support_fraction - *now;
             if change != 0.0 {
-                let model = &mut built.model;
-                let walls: Vec<BoundaryEdge> = built
-                    .boundary
-                    .iter()
-                    .filter(|e| e.kind == EdgeKind::Excavation(j as u32))
-                    .filter(|e| {
-                        let b = model.blocks.block_of_node(e.nodes[0]);
-                        !model.blocks.is_removed(b)
-                    })
-                    .copied()
-                    .collect();
-                add_tractions(&mut model.nodes, walls.iter(), |p, n| {
+                let walls: Vec<BoundaryEdge> = rock_walls(built, j).copied().collect();
+                add_tractions(&mut built.model.nodes, walls.iter(), |p, n| {
                     let t = traction(&in_situ_stress(&scene.in_situ, p[1], poisson), n);
                     [change * t[0], change * t[1]]
                 });
@@ -80,14 +70,7 @@ impl Staging {
                 continue;
             }
             let (mut sum, mut count) = (0.0, 0usize);
-            for e in built
-                .boundary
-                .iter()
-                .filter(|e| e.kind == EdgeKind::Excavation(j as u32))
-            {
-                if m.blocks.is_removed(m.blocks.block_of_node(e.nodes[0])) {
-                    continue;
-                }
+            for e in rock_walls(built, j) {
                 let [a, b] = e.nodes.map(|n| n as usize);
                 let (pa, pb) = (m.nodes.pos[a], m.nodes.pos[b]);
                 let len = (pb[0] - pa[0]).hypot(pb[1] - pa[1]);
@@ -108,6 +91,17 @@ impl Staging {
     pub fn support_fraction(&self) -> f64 {
         self.support.iter().flatten().copied().next().unwrap_or(0.0)
     }
+}
+
+/// The wall edges of excavation `j` on the rock that stays (the fill's own wall edges excluded
+/// once it is removed).
+fn rock_walls(built: &Built, j: usize) -> impl Iterator<Item = &BoundaryEdge> {
+    let blocks = &built.model.blocks;
+    built
+        .boundary
+        .iter()
+        .filter(move |e| e.kind == EdgeKind::Excavation(j as u32))
+        .filter(move |e| !blocks.is_removed(blocks.block_of_node(e.nodes[0])))
 }
 
 /// Remove the rock filling excavation `j`: its blocks are marked removed (detection skips them),
