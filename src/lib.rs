@@ -17,6 +17,7 @@ pub mod run;
 pub mod scene;
 pub mod solve;
 pub mod stage;
+pub mod support;
 
 pub use run::{RunResult, run_scene};
 pub use scene::Scene;

@@ -70,6 +70,7 @@ pub fn run_scene(
         name: "solve".into(),
         excavate: vec![],
         support_fraction: 0.0,
+        install: vec![],
         reset_displacements: false,
         solve: None,
     }];

@@ -78,13 +78,16 @@ impl Solver {
     /// Set nodal masses and the time step for the solve mode: static runs scale masses so that
     /// Δt = 1 s is stable; dynamic runs keep real masses and take Δt = s·Δt_crit.
     pub fn new(model: &mut Model, spec: &SolveSpec, output_every: u64) -> Solver {
-        let stiffness = nodal_stiffness(model);
+        let mut stiffness = nodal_stiffness(model);
+        let s = spec.safety_factor;
+        let scaled = (spec.mode == SolveMode::Static).then_some(s);
+        let support_dt = model.supports.set_masses(&mut stiffness, scaled);
         let real = lumped_masses(model);
         let mut step = critical_step(&stiffness, &real);
+        step.dt_critical = step.dt_critical.min(support_dt);
         let body_k = body_stiffness(model, &stiffness);
         let body_real = body_masses(model);
         body_step(model, &body_k, &body_real, &mut step);
-        let s = spec.safety_factor;
         let dt = match spec.mode {
             SolveMode::Static => {
                 model.nodes.mass = scaled_masses(&stiffness, s);

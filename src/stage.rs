@@ -1,5 +1,6 @@
-//! Stages: what changes between the solves of a staged run — excavations removed, the support
-//! pressure left on their walls (convergence–confinement), displacements reset.
+//! Stages: what changes between the solves of a staged run — excavations removed, supports
+//! installed, the support pressure left on their walls (convergence–confinement), displacements
+//! reset.
 
 use adit_meshing::{BoundaryEdge, EdgeKind};
 
@@ -25,7 +26,7 @@ impl Staging {
     }
 
     /// Apply `stage` to the model before its solve: remove the rock of the excavations it names,
-    /// set the support pressure of every excavation made so far to `support_fraction` × the
+    /// install the bolts and liners it names, set the support pressure of every excavation made so far to `support_fraction` × the
     /// in-situ traction on its walls, and reset displacements if asked.
     pub fn apply(&mut self, stage: &Stage, scene: &Scene, built: &mut Built) {
         for name in &stage.excavate {
@@ -37,6 +38,11 @@ impl Staging {
             // The rock's contacts go with it: the wall is unsupported until a pressure is set.
             remove_fill(&mut built.model, j as u32);
             self.support[j] = Some(0.0);
+        }
+        for name in &stage.install {
+            let model = &mut built.model;
+            let known = model.supports.install(name, &model.nodes.disp);
+            debug_assert!(known, "validated: '{name}' is a bolt group or liner");
         }
         let poisson = scene.materials[&scene.region.material].poisson;
         for (j, support) in self.support.iter_mut().enumerate() {

@@ -5,6 +5,7 @@
 mod bodies;
 mod boundary;
 mod geometry;
+mod supports;
 #[cfg(test)]
 mod tests;
 
@@ -357,7 +358,7 @@ pub fn build(scene: &Scene) -> anyhow::Result<Built> {
     let size = domain.outer.size();
     let gather = Gather::new(nodes.len(), &zones.nodes);
     let contact_gather = Gather::new(nodes.len(), &contacts.triples(&blocks.edges));
-    let model = Model {
+    let mut model = Model {
         nodes,
         zones,
         gather,
@@ -375,7 +376,19 @@ pub fn build(scene: &Scene) -> anyhow::Result<Built> {
         fill_material,
         fill: meshed.fill.clone(),
         null_material,
+        supports: Default::default(),
+        support_gather: Gather::default(),
     };
+    model.supports = supports::supports(scene, &model, &meshed.domain, &boundary)?;
+    model.support_gather = Gather::from_slots(model.nodes.len(), &model.supports.slot_nodes());
+    // Supports no stage installs are there from the start.
+    let staged: Vec<&String> = scene.stages.iter().flat_map(|s| &s.install).collect();
+    let from_start = scene.bolts.iter().map(|b| &b.name);
+    for name in from_start.chain(scene.liners.iter().map(|l| &l.name)) {
+        if !staged.contains(&name) {
+            model.supports.install(name, &model.nodes.disp);
+        }
+    }
     Ok(Built {
         model,
         mesh: stats,

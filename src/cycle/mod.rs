@@ -1,6 +1,6 @@
 //! One explicit cycle as a pipeline of named stages: detect (when something has moved far enough),
-//! contact forces, zone forces, motion; the monitor runs every few cycles. The `Cycle` owns only
-//! scratch space, the detection trigger and stage timers. Structural forces join with supports.
+//! contact forces, zone forces, structural forces (supports), motion; the monitor runs every few
+//! cycles. The `Cycle` owns only scratch space, the detection trigger and stage timers.
 
 mod bodies;
 mod contacts;
@@ -43,6 +43,9 @@ pub struct Cycle {
     pub zone_force: Vec<[f64; 2]>,
     /// Force of each contact on its node and on the two nodes of its edge, N/m, contact·3 + role.
     pub contact_force: Vec<[f64; 2]>,
+    /// Force of the supports on the rock nodes, N/m, one per support slot
+    /// (`Supports::slot_nodes`).
+    pub support_force: Vec<[f64; 2]>,
     /// Upper bound on how far any node has moved since the last detection, m.
     pub moved: f64,
     pub seconds: StageSeconds,
@@ -53,6 +56,7 @@ impl Cycle {
         Cycle {
             zone_force: vec![[0.0; 2]; 3 * model.zones.len()],
             contact_force: vec![[0.0; 2]; 3 * model.contacts.len()],
+            support_force: vec![[0.0; 2]; model.supports.slot_count()],
             ..Default::default()
         }
     }
@@ -68,13 +72,27 @@ impl Cycle {
         let t2 = Instant::now();
         self.zone_forces(model, p);
         let t3 = Instant::now();
+        self.structural_forces(model, p);
+        let t4 = Instant::now();
         let speed = self.motion(model, p).max(self.body_motion(model, p));
         self.moved += speed * p.dt;
-        let t4 = Instant::now();
+        let t5 = Instant::now();
         self.seconds.detect += (t1 - t0).as_secs_f64();
         self.seconds.contacts += (t2 - t1).as_secs_f64();
         self.seconds.zones += (t3 - t2).as_secs_f64();
-        self.seconds.motion += (t4 - t3).as_secs_f64();
+        self.seconds.supports += (t4 - t3).as_secs_f64();
+        self.seconds.motion += (t5 - t4).as_secs_f64();
+    }
+
+    /// Structural stage: bolts and liners take the rock's displacements, push back on the rock
+    /// through the support slots, and move their own nodes (`support::Supports::cycle`).
+    pub fn structural_forces(&mut self, model: &mut Model, p: &CycleParams) {
+        if model.supports.is_empty() {
+            return;
+        }
+        model
+            .supports
+            .cycle(&model.nodes.disp, &mut self.support_force, p.damping, p.dt);
     }
 
     /// Zone stage: strain increment from node velocities, Δε = sym(∇v)Δt with the CST gradients,
@@ -131,9 +149,10 @@ impl Cycle {
             nodes,
             gather,
             contact_gather,
+            support_gather,
             ..
         } = model;
-        let (zf, cf) = (&self.zone_force, &self.contact_force);
+        let (zf, cf, sf) = (&self.zone_force, &self.contact_force, &self.support_force);
         let (alpha, dt) = (p.damping, p.dt);
         nodes
             .vel
@@ -154,6 +173,11 @@ impl Cycle {
                 }
                 for &s in contact_gather.of(n) {
                     let c = cf[s as usize];
+                    f[0] += c[0];
+                    f[1] += c[1];
+                }
+                for &s in support_gather.of(n) {
+                    let c = sf[s as usize];
                     f[0] += c[0];
                     f[1] += c[1];
                 }

@@ -44,6 +44,10 @@ impl Cycle {
                         let c = self.contact_force[s as usize];
                         gross += (c[0] * c[0] + c[1] * c[1]).sqrt();
                     }
+                    for &s in model.support_gather.of(i) {
+                        let c = self.support_force[s as usize];
+                        gross += (c[0] * c[0] + c[1] * c[1]).sqrt();
+                    }
                     let v = nodes.vel[i];
                     ke += 0.5 * nodes.mass[i] * (v[0] * v[0] + v[1] * v[1]);
                 }
@@ -69,6 +73,9 @@ impl Cycle {
                 .map(|d| 0.5 * m[d] * v[d] * v[d])
                 .sum::<f64>();
         }
+        let (support_force, support_kinetic) = model.supports.monitor();
+        max_force = max_force.max(support_force);
+        kinetic += support_kinetic;
         if !(max_force.is_finite() && kinetic.is_finite()) {
             return Err(self.first_bad(model));
         }
@@ -134,6 +141,28 @@ impl Cycle {
             return format!(
                 "non-finite stress in zone {z} at ({:.4}, {:.4})",
                 c[0], c[1]
+            );
+        }
+        let (cables, liners) = (&model.supports.cables, &model.supports.liners);
+        if let Some(n) = (0..cables.nodes())
+            .find(|&n| !(cables.vel[n].is_finite() && cables.force[n].is_finite()))
+        {
+            let p = cables.pos[n];
+            return format!(
+                "non-finite velocity or force of cable node {n} of bolt group '{}' at ({:.4}, {:.4})",
+                cables.names[cables.group[n] as usize], p[0], p[1]
+            );
+        }
+        if let Some(n) = (0..liners.nodes()).find(|&n| {
+            liners.vel[n]
+                .iter()
+                .chain(&liners.force[n])
+                .any(|v| !v.is_finite())
+        }) {
+            let p = liners.pos[n];
+            return format!(
+                "non-finite velocity or force of liner node {n} of '{}' at ({:.4}, {:.4})",
+                liners.names[liners.group[n] as usize], p[0], p[1]
             );
         }
         let n = model

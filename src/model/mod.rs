@@ -1,5 +1,5 @@
-//! Model state as structure-of-arrays: nodes, zones and the node→zone gather table, indexed by
-//! typed ids. Stages of the cycle borrow the parts they need.
+//! Model state as structure-of-arrays: nodes, zones, blocks, contacts, supports and the gather
+//! tables, indexed by typed ids. Stages of the cycle borrow the parts they need.
 
 pub mod blocks;
 pub mod bodies;
@@ -12,6 +12,7 @@ pub use zones::{Stress, Zones, traction};
 use crate::contact::Contacts;
 use crate::joint::JointLaw;
 use crate::law::ZoneLaw;
+use crate::support::Supports;
 
 /// Index of a node.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
@@ -33,22 +34,24 @@ pub struct Gather {
 impl Gather {
     /// Build from zone connectivity.
     pub fn new(num_nodes: usize, zone_nodes: &[[u32; 3]]) -> Gather {
+        let flat: Vec<u32> = zone_nodes.iter().flatten().copied().collect();
+        Gather::from_slots(num_nodes, &flat)
+    }
+
+    /// Build from the node of each slot (slot s acts on node `slot_nodes[s]`).
+    pub fn from_slots(num_nodes: usize, slot_nodes: &[u32]) -> Gather {
         let mut count = vec![0u32; num_nodes + 1];
-        for t in zone_nodes {
-            for &n in t {
-                count[n as usize + 1] += 1;
-            }
+        for &n in slot_nodes {
+            count[n as usize + 1] += 1;
         }
         for i in 0..num_nodes {
             count[i + 1] += count[i];
         }
         let mut fill = count.clone();
-        let mut slots = vec![0u32; zone_nodes.len() * 3];
-        for (z, t) in zone_nodes.iter().enumerate() {
-            for (k, &n) in t.iter().enumerate() {
-                slots[fill[n as usize] as usize] = (3 * z + k) as u32;
-                fill[n as usize] += 1;
-            }
+        let mut slots = vec![0u32; slot_nodes.len()];
+        for (s, &n) in slot_nodes.iter().enumerate() {
+            slots[fill[n as usize] as usize] = s as u32;
+            fill[n as usize] += 1;
         }
         Gather {
             start: count,
@@ -93,4 +96,8 @@ pub struct Model {
     pub fill: Vec<u32>,
     /// The null law excavated zones take (staged scenes only).
     pub null_material: Option<MaterialId>,
+    /// Rock bolts and liners (inactive until installed).
+    pub supports: Supports,
+    /// For each node, the slots of the support-force buffer acting on it.
+    pub support_gather: Gather,
 }

@@ -1,7 +1,9 @@
 //! Results on disk, as the output contract of `design.md`: a ParaView collection (`.pvd`) over
-//! zone grids (`_zones_NNNN.vtu`), `history.csv` and `summary.json`, each written atomically.
+//! zone grids (`_zones_NNNN.vtu`), contacts and supports (`_contacts_`, `_supports_NNNN.vtu`),
+//! `history.csv` and `summary.json`, each written atomically.
 
 pub mod atomic;
+pub mod supports_vtu;
 pub mod vtu;
 
 use std::path::{Path, PathBuf};
@@ -17,7 +19,8 @@ use atomic::write_atomic;
 pub struct OutputWriter {
     pub dir: PathBuf,
     pub name: String,
-    /// (timestep value, file names: zones, then contacts when there are blocks) of each step so far.
+    /// (timestep value, file names: zones, then contacts when there are blocks, then supports when
+    /// there are any) of each step so far.
     steps: Vec<(f64, Vec<String>)>,
 }
 
@@ -44,6 +47,12 @@ impl OutputWriter {
             let xml = vtu::contacts_vtu(model)?;
             write_atomic(&self.dir.join(&contacts), |w| w.write_all(&xml))?;
             files.push(contacts);
+        }
+        if !model.supports.is_empty() {
+            let supports = format!("{}_supports_{step:04}.vtu", self.name);
+            let xml = supports_vtu::supports_vtu(model)?;
+            write_atomic(&self.dir.join(&supports), |w| w.write_all(&xml))?;
+            files.push(supports);
         }
         self.steps.push((timestep, files));
         self.write_pvd()?;

@@ -165,7 +165,7 @@ pub fn contacts_vtu(model: &Model) -> Result<Vec<u8>, vtkio::Error> {
 }
 
 /// One piece as binary XML text, with the positions note in its field data.
-fn xml_of(piece: UnstructuredGridPiece) -> Result<Vec<u8>, vtkio::Error> {
+pub(super) fn xml_of(piece: UnstructuredGridPiece) -> Result<Vec<u8>, vtkio::Error> {
     let vtk = Vtk {
         version: Version::new((1, 0)),
         title: String::new(),

@@ -2,6 +2,7 @@
 //! boundary conditions, solve criterion, output). Every field is documented in
 //! `docs/scene-format.md`; unknown fields are errors.
 
+mod supports;
 mod validate;
 
 use std::collections::BTreeMap;
@@ -9,6 +10,7 @@ use std::path::Path;
 
 use serde::Deserialize;
 
+pub use supports::{BoltLine, BoltPattern, BoltSpec, LinerSpec};
 pub use validate::SceneError;
 
 /// A whole scene, as read from JSON.
@@ -49,6 +51,12 @@ pub struct Scene {
     pub boundary: Vec<BoundaryCondition>,
     #[serde(default)]
     pub solve: SolveSpec,
+    /// Fully grouted rock bolts (installed by a stage's `install`, else from the start).
+    #[serde(default)]
+    pub bolts: Vec<BoltSpec>,
+    /// Liners on excavation walls (installed by a stage's `install`, else from the start).
+    #[serde(default)]
+    pub liners: Vec<LinerSpec>,
     /// Stages solved in order (default: one stage, solved with `solve`). Excavations named in a
     /// stage's `excavate` are filled with rock until that stage.
     #[serde(default)]
@@ -70,6 +78,10 @@ pub struct Stage {
     /// (fictitious support pressure of the convergence–confinement method), in [0, 1]; default 0.
     #[serde(default)]
     pub support_fraction: f64,
+    /// Bolt groups and liners installed at the start of this stage (by name), after its
+    /// excavations.
+    #[serde(default)]
+    pub install: Vec<String>,
     /// Measure displacements from the start of this stage on (default false).
     #[serde(default)]
     pub reset_displacements: bool,

@@ -22,7 +22,7 @@ pub enum SceneError {
     Invalid { path: String, reason: String },
 }
 
-fn invalid(path: impl Into<String>, reason: impl Into<String>) -> SceneError {
+pub(super) fn invalid(path: impl Into<String>, reason: impl Into<String>) -> SceneError {
     SceneError::Invalid {
         path: path.into(),
         reason: reason.into(),
@@ -354,6 +354,7 @@ impl Scene {
             self.validate_boundary(i, bc)?;
         }
         validate_solve("solve", &self.solve)?;
+        self.validate_supports()?;
         self.validate_stages()
     }
 
@@ -373,6 +374,10 @@ impl Scene {
             }
             if let Some(spec) = &st.solve {
                 validate_solve(&format!("{p}.solve"), spec)?;
+            }
+            for (k, name) in st.install.iter().enumerate() {
+                let q = format!("{p}.install[{k}]");
+                self.validate_install(&q, name, &done)?;
             }
             if !(0.0..=1.0).contains(&st.support_fraction) {
                 return Err(invalid(

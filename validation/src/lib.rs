@@ -7,6 +7,7 @@ pub mod gravity;
 pub mod incline;
 pub mod kirsch;
 pub mod kirsch_case;
+pub mod lined;
 pub mod modes;
 pub mod patch;
 pub mod plot;

@@ -266,6 +266,7 @@ pub fn ground_reaction(
         name,
         excavate,
         support_fraction,
+        install: vec![],
         reset_displacements: false,
         solve: None,
     };

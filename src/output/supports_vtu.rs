@@ -1,0 +1,88 @@
+//! Supports as line cells (`_supports_NNNN.vtu`): one cell per cable segment and per liner
+//! element at original positions, with `axial_force` (N/m, tension positive) and `moment` (N·m/m,
+//! the liner's internal bending moment at the element's middle, positive when its excavation
+//! face is in tension; 0 for cables), `kind` (0 bolt, 1 liner), `installed` and `yielded` per
+//! cell, and the rock's `displacement` (m) at each point.
+
+use vtkio::model::{Attribute, Attributes, CellType, Cells, UnstructuredGridPiece, VertexNumbers};
+
+use super::vtu::xml_of;
+use crate::model::Model;
+
+/// The supports of `model` as XML text.
+pub fn supports_vtu(model: &Model) -> Result<Vec<u8>, vtkio::Error> {
+    let (c, l) = (&model.supports.cables, &model.supports.liners);
+    let nodes = &model.nodes;
+    let rock = |n: u32| {
+        let (u, o) = (nodes.disp[n as usize], nodes.origin[n as usize]);
+        [u[0] - o[0], u[1] - o[1]]
+    };
+    let mut points = Vec::new();
+    let mut displacement = Vec::new();
+    for n in 0..c.nodes() {
+        points.extend([c.pos[n][0], c.pos[n][1], 0.0]);
+        let mut u = [0.0; 2];
+        for (&h, w) in c.host[n].iter().zip(c.weight[n]) {
+            let r = rock(h);
+            u = [u[0] + w * r[0], u[1] + w * r[1]];
+        }
+        displacement.extend([u[0], u[1], 0.0]);
+    }
+    let first_liner = c.nodes() as u64;
+    for n in 0..l.nodes() {
+        points.extend([l.pos[n][0], l.pos[n][1], 0.0]);
+        let link = l.link_node.iter().position(|&m| m as usize == n);
+        let u = link.map_or([0.0; 2], |k| rock(l.link_rock[k]));
+        displacement.extend([u[0], u[1], 0.0]);
+    }
+    let segments = c.segment.len();
+    let cells = segments + l.element.len();
+    let connectivity: Vec<u64> = c
+        .segment
+        .iter()
+        .flat_map(|s| s.map(u64::from))
+        .chain(
+            l.element
+                .iter()
+                .flat_map(|e| e.map(|n| first_liner + n as u64)),
+        )
+        .collect();
+    let axial: Vec<f64> = c.axial.iter().chain(&l.axial).copied().collect();
+    let moment: Vec<f64> = std::iter::repeat_n(0.0, segments)
+        .chain(l.moment.iter().map(|m| 0.5 * (m[0] + m[1])))
+        .collect();
+    let kind: Vec<i32> = std::iter::repeat_n(0, segments)
+        .chain(std::iter::repeat_n(1, l.element.len()))
+        .collect();
+    let installed: Vec<i32> = (c.segment_group.iter().map(|&g| c.active[g as usize]))
+        .chain(l.element_group.iter().map(|&g| l.active[g as usize]))
+        .map(i32::from)
+        .collect();
+    let yielded: Vec<i32> = c
+        .plastic
+        .iter()
+        .map(|&p| i32::from(p != 0.0))
+        .chain(std::iter::repeat_n(0, l.element.len()))
+        .collect();
+    let piece = UnstructuredGridPiece {
+        points: points.into(),
+        cells: Cells {
+            cell_verts: VertexNumbers::XML {
+                connectivity,
+                offsets: (1..=cells as u64).map(|k| 2 * k).collect(),
+            },
+            types: vec![CellType::Line; cells],
+        },
+        data: Attributes {
+            point: vec![Attribute::generic("displacement", 3).with_data(displacement)],
+            cell: vec![
+                Attribute::generic("axial_force", 1).with_data(axial),
+                Attribute::generic("moment", 1).with_data(moment),
+                Attribute::generic("kind", 1).with_data(kind),
+                Attribute::generic("installed", 1).with_data(installed),
+                Attribute::generic("yielded", 1).with_data(yielded),
+            ],
+        },
+    };
+    xml_of(piece)
+}

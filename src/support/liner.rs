@@ -1,0 +1,330 @@
+//! Liners: elastic Euler–Bernoulli beam elements along an excavation's wall. Each liner node has
+//! its own two displacements and rotation and is bonded (no slip) to the rock wall node(s) at its
+//! place by stiff links, so a liner stays continuous across the joints that cut the wall.
+//!
+//! Element (length L, axis e, normal n = e rotated +90°, per unit thickness of the model, with
+//! s the sets' spacing along the tunnel), in total form from installation (small rotations):
+//!   N   = (EA/s)/L · (u_b − u_a)·e                                   axial force (tension +),
+//!   m_a = (EI/s)/L · (4θ_a + 2θ_b − 6φ),  m_b = (EI/s)/L · (2θ_a + 4θ_b − 6φ),  φ = (u_b − u_a)·n / L,
+//! end moments on the element; its shear is V = (m_a + m_b)/L. The internal bending moment is
+//! −m_a at a and m_b at b (positive when the face toward −n, the excavation, is in tension),
+//! E = E/(1 − ν²) for a shell in plane strain (Przemieniecki, *Theory of Matrix Structural
+//! Analysis*, §4; Itasca, UDEC *Structural Elements*, "beam elements").
+
+/// Properties of one liner, per metre of model thickness.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LinerProps {
+    /// Axial stiffness EA/s, N.
+    pub axial_stiffness: f64,
+    /// Bending stiffness EI/s, N·m².
+    pub bending_stiffness: f64,
+    /// Mass per length ρA/s, kg/m per m; rotational inertia per length ρI/s, kg·m.
+    pub line_density: f64,
+    pub line_inertia: f64,
+}
+
+/// Liners, their nodes, links to the rock and elements as structure-of-arrays.
+#[derive(Debug, Clone, Default)]
+pub struct Liners {
+    pub names: Vec<String>,
+    pub props: Vec<LinerProps>,
+    pub active: Vec<bool>,
+    /// Liner of each liner node.
+    pub group: Vec<u32>,
+    /// Position, m.
+    pub pos: Vec<[f64; 2]>,
+    /// Displacement since installation, m, and rotation, rad.
+    pub disp: Vec<[f64; 3]>,
+    /// Velocity, m/s, and angular velocity, rad/s.
+    pub vel: Vec<[f64; 3]>,
+    /// Unbalanced force, N/m, and moment, N·m/m.
+    pub force: Vec<[f64; 3]>,
+    /// Inertial mass, kg/m, and rotational inertia, kg·m (scaled in static runs).
+    pub mass: Vec<[f64; 2]>,
+    /// Links: liner node, rock node, stiffness (N/m per m) and the rock displacement at
+    /// installation (m).
+    pub link_node: Vec<u32>,
+    pub link_rock: Vec<u32>,
+    pub link_stiffness: Vec<f64>,
+    pub link_origin: Vec<[f64; 2]>,
+    /// Elements: liner nodes, liner, length (m), unit axis.
+    pub element: Vec<[u32; 2]>,
+    pub element_group: Vec<u32>,
+    pub element_length: Vec<f64>,
+    pub element_axis: Vec<[f64; 2]>,
+    /// Axial force N, N/m (tension positive), and internal bending moments at both ends, N·m/m.
+    pub axial: Vec<f64>,
+    pub moment: Vec<[f64; 2]>,
+}
+
+impl Liners {
+    pub fn nodes(&self) -> usize {
+        self.pos.len()
+    }
+
+    /// Add liner `g` over the wall edges `edges` (pairs of rock nodes, rock on the left) at the
+    /// rock node positions `rock_pos`: one liner node per distinct position (closer than `tol`),
+    /// linked to every rock node there, one element per edge.
+    pub fn add(&mut self, g: u32, edges: &[[u32; 2]], rock_pos: &[[f64; 2]], tol: f64) {
+        let first = self.pos.len();
+        let node_of = |rock: u32, this: &mut Liners| -> u32 {
+            let p = rock_pos[rock as usize];
+            let found = (first..this.pos.len()).find(|&i| {
+                let q = this.pos[i];
+                (q[0] - p[0]).hypot(q[1] - p[1]) <= tol
+            });
+            let i = found.unwrap_or_else(|| {
+                this.pos.push(p);
+                this.group.push(g);
+                this.pos.len() - 1
+            }) as u32;
+            if !(0..this.link_node.len())
+                .any(|l| this.link_node[l] == i && this.link_rock[l] == rock)
+            {
+                this.link_node.push(i);
+                this.link_rock.push(rock);
+                this.link_stiffness.push(0.0);
+                this.link_origin.push([0.0; 2]);
+            }
+            i
+        };
+        let p = self.props[g as usize];
+        for &[a, b] in edges {
+            let (na, nb) = (node_of(a, self), node_of(b, self));
+            let (pa, pb) = (rock_pos[a as usize], rock_pos[b as usize]);
+            let len = (pb[0] - pa[0]).hypot(pb[1] - pa[1]);
+            self.element.push([na, nb]);
+            self.element_group.push(g);
+            self.element_length.push(len);
+            self.element_axis
+                .push([(pb[0] - pa[0]) / len, (pb[1] - pa[1]) / len]);
+            self.axial.push(0.0);
+            self.moment.push([0.0; 2]);
+        }
+        let n = self.pos.len();
+        self.disp.resize(n, [0.0; 3]);
+        self.vel.resize(n, [0.0; 3]);
+        self.force.resize(n, [0.0; 3]);
+        self.mass.resize(n, [0.0; 2]);
+        // Links twice as stiff as the stiffest element touching the node: their compliance is
+        // (L/R)²/2 of the ring's hoop compliance (no slip in effect).
+        for l in 0..self.link_node.len() {
+            let i = self.link_node[l];
+            if self.group[i as usize] != g {
+                continue;
+            }
+            self.link_stiffness[l] = (0..self.element.len())
+                .filter(|&e| self.element[e].contains(&i))
+                .map(|e| {
+                    let len = self.element_length[e];
+                    2.0 * (p.axial_stiffness / len + 12.0 * p.bending_stiffness / len.powi(3))
+                })
+                .fold(0.0, f64::max);
+        }
+    }
+
+    /// Install liner `g`: it starts unstressed on the wall as the wall is now.
+    pub fn install(&mut self, g: usize, rock: &[[f64; 2]]) {
+        self.active[g] = true;
+        for l in 0..self.link_node.len() {
+            if self.group[self.link_node[l] as usize] as usize == g {
+                self.link_origin[l] = rock[self.link_rock[l] as usize];
+            }
+        }
+        for n in (0..self.nodes()).filter(|&n| self.group[n] as usize == g) {
+            self.disp[n] = [0.0; 3];
+            self.vel[n] = [0.0; 3];
+        }
+    }
+
+    /// Element and link forces; the rock's share of each link goes to `slots` (one per link).
+    pub fn forces(&mut self, rock: &[[f64; 2]], slots: &mut [[f64; 2]]) {
+        for f in &mut self.force {
+            *f = [0.0; 3];
+        }
+        for e in 0..self.element.len() {
+            let g = self.element_group[e] as usize;
+            if !self.active[g] {
+                continue;
+            }
+            let p = &self.props[g];
+            let [a, b] = self.element[e].map(|n| n as usize);
+            let (len, ax) = (self.element_length[e], self.element_axis[e]);
+            let nrm = [-ax[1], ax[0]];
+            let (da, db) = (self.disp[a], self.disp[b]);
+            let along = |d: [f64; 3], v: [f64; 2]| d[0] * v[0] + d[1] * v[1];
+            let axial = p.axial_stiffness / len * (along(db, ax) - along(da, ax));
+            let chord = (along(db, nrm) - along(da, nrm)) / len;
+            let k = p.bending_stiffness / len;
+            let ma = k * (4.0 * da[2] + 2.0 * db[2] - 6.0 * chord);
+            let mb = k * (2.0 * da[2] + 4.0 * db[2] - 6.0 * chord);
+            let shear = (ma + mb) / len;
+            self.axial[e] = axial;
+            self.moment[e] = [-ma, mb];
+            // Node a is pulled along +e by tension and pushed along −n by the shear.
+            let fa = [
+                axial * ax[0] - shear * nrm[0],
+                axial * ax[1] - shear * nrm[1],
+            ];
+            self.force[a][0] += fa[0];
+            self.force[a][1] += fa[1];
+            self.force[a][2] -= ma;
+            self.force[b][0] -= fa[0];
+            self.force[b][1] -= fa[1];
+            self.force[b][2] -= mb;
+        }
+        for l in 0..self.link_node.len() {
+            let n = self.link_node[l] as usize;
+            if !self.active[self.group[n] as usize] {
+                continue;
+            }
+            let (r, o, k) = (
+                rock[self.link_rock[l] as usize],
+                self.link_origin[l],
+                self.link_stiffness[l],
+            );
+            let f = [
+                k * (r[0] - o[0] - self.disp[n][0]),
+                k * (r[1] - o[1] - self.disp[n][1]),
+            ];
+            self.force[n][0] += f[0];
+            self.force[n][1] += f[1];
+            slots[l] = [-f[0], -f[1]];
+        }
+    }
+
+    /// Central-difference update of the active liner nodes with local damping α; returns the
+    /// largest speed, m/s.
+    pub fn motion(&mut self, alpha: f64, dt: f64) -> f64 {
+        let mut fastest = 0.0f64;
+        for n in 0..self.nodes() {
+            if !self.active[self.group[n] as usize] {
+                continue;
+            }
+            for d in 0..3 {
+                let (f, v) = (self.force[n][d], &mut self.vel[n][d]);
+                let fd = f - alpha * f.abs() * v.signum() * (*v != 0.0) as u8 as f64;
+                *v += fd / self.mass[n][d / 2] * dt;
+                self.disp[n][d] += *v * dt;
+            }
+            fastest = fastest.max(self.vel[n][0].hypot(self.vel[n][1]));
+        }
+        fastest
+    }
+
+    /// Gershgorin bounds of each liner node, [translation N/m per m, rotation N·m per m]
+    /// (rotations weighted by 1/L: 36 EI/L³ + 2 EA/L and 18 EI/L per element, 2k per link),
+    /// and the links' share on the rock nodes added into `rock`.
+    pub fn stiffness(&self, rock: &mut [f64]) -> Vec<[f64; 2]> {
+        let mut r = vec![[0.0; 2]; self.nodes()];
+        for e in 0..self.element.len() {
+            let p = &self.props[self.element_group[e] as usize];
+            let len = self.element_length[e];
+            let ei = p.bending_stiffness;
+            for n in self.element[e] {
+                r[n as usize][0] += 36.0 * ei / len.powi(3) + 2.0 * p.axial_stiffness / len;
+                r[n as usize][1] += 18.0 * ei / len;
+            }
+        }
+        for l in 0..self.link_node.len() {
+            let n = self.link_node[l] as usize;
+            r[n][0] += 2.0 * self.link_stiffness[l];
+            if self.active[self.group[n] as usize] {
+                rock[self.link_rock[l] as usize] += 2.0 * self.link_stiffness[l];
+            }
+        }
+        r
+    }
+
+    /// Shortest element at each liner node, m (the scale between its rotation and translations).
+    pub fn node_length(&self) -> Vec<f64> {
+        let mut l = vec![f64::INFINITY; self.nodes()];
+        for (e, nodes) in self.element.iter().enumerate() {
+            for &n in nodes {
+                l[n as usize] = l[n as usize].min(self.element_length[e]);
+            }
+        }
+        l
+    }
+
+    /// Real lumped masses [ρA ℓ, ρI ℓ], ℓ the tributary length.
+    pub fn real_masses(&self) -> Vec<[f64; 2]> {
+        let mut m = vec![[0.0; 2]; self.nodes()];
+        for e in 0..self.element.len() {
+            let p = &self.props[self.element_group[e] as usize];
+            let half = 0.5 * self.element_length[e];
+            for n in self.element[e] {
+                m[n as usize][0] += p.line_density * half;
+                m[n as usize][1] += p.line_inertia * half;
+            }
+        }
+        m
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const ROCK: [[f64; 2]; 4] = [[0.0, 0.0], [1.0, 0.0], [1.0, 0.0], [2.0, 0.0]];
+
+    /// A straight two-element liner along x on four rock nodes.
+    fn liner() -> Liners {
+        let mut l = Liners {
+            names: vec!["l".into()],
+            props: vec![LinerProps {
+                axial_stiffness: 1e9,
+                bending_stiffness: 1e6,
+                line_density: 1.0,
+                line_inertia: 1.0,
+            }],
+            active: vec![false],
+            ..Default::default()
+        };
+        // Rock nodes 1 and 2 coincide (a joint meets the wall there): one liner node.
+        l.add(0, &[[0, 1], [2, 3]], &ROCK, 1e-9);
+        l
+    }
+
+    #[test]
+    fn coincident_wall_nodes_share_one_liner_node() {
+        let l = liner();
+        assert_eq!(l.nodes(), 3);
+        assert_eq!(l.link_node.len(), 4);
+        assert_eq!(l.element.len(), 2);
+        assert_eq!(l.element, vec![[0, 1], [1, 2]]);
+    }
+
+    #[test]
+    fn rigid_motion_is_free_and_bending_is_not() {
+        let mut l = liner();
+        l.install(0, &[[0.0; 2]; 4]);
+        let mut slots = vec![[0.0; 2]; 4];
+        // A small rigid rotation θ about node 0: u = θ(−y, x), all nodes rotate by θ.
+        let t = 1e-6;
+        let rock: Vec<[f64; 2]> = ROCK.iter().map(|p| [-t * p[1], t * p[0]]).collect();
+        for (n, r) in [0, 1, 3].into_iter().enumerate() {
+            l.disp[n] = [rock[r][0], rock[r][1], t];
+        }
+        l.forces(&rock, &mut slots);
+        for f in &l.force {
+            assert!(f.iter().all(|v| v.abs() < 1e-6), "{f:?}");
+        }
+        // Bend: lift the middle node by w; moments m = EI/L·(−6φ) at the ends of each element.
+        l.disp[1] = [0.0, 1e-3, 0.0];
+        l.disp[0] = [0.0; 3];
+        l.disp[2] = [0.0; 3];
+        l.forces(&[[0.0; 2]; 4], &mut slots);
+        let f1 = l.force[1][1];
+        // Two clamped-clamped elements: 12 EI/L³ each against the lift, plus two links.
+        let link = l.link_stiffness[1] + l.link_stiffness[2];
+        assert!(
+            (f1 + (24.0 * 1e6 + link) * 1e-3).abs() < 1e-6 * link,
+            "{f1}"
+        );
+        assert!(
+            (l.moment[0][1] - l.moment[1][0]).abs() < 1e-9,
+            "moment continuous at node 1"
+        );
+    }
+}

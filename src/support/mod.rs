@@ -1,0 +1,115 @@
+//! Structural supports: fully grouted cables (rock bolts) and liners (beams bonded to an
+//! excavation's wall). They carry their own degrees of freedom, stay inactive until a stage
+//! installs them, and pass their forces on the rock through force slots that the motion stage
+//! gathers per node (`Model::support_gather`, in a fixed order).
+
+pub mod cable;
+pub mod liner;
+
+pub use cable::{CableProps, Cables};
+pub use liner::{LinerProps, Liners};
+
+/// All supports of a model.
+#[derive(Debug, Clone, Default)]
+pub struct Supports {
+    pub cables: Cables,
+    pub liners: Liners,
+}
+
+impl Supports {
+    pub fn is_empty(&self) -> bool {
+        self.cables.nodes() == 0 && self.liners.nodes() == 0
+    }
+
+    /// Force slots: three per cable node (its host zone's corners), then one per liner link.
+    pub fn slot_count(&self) -> usize {
+        3 * self.cables.nodes() + self.liners.link_node.len()
+    }
+
+    /// The rock node each force slot acts on.
+    pub fn slot_nodes(&self) -> Vec<u32> {
+        let c = &self.cables;
+        c.host
+            .iter()
+            .flatten()
+            .chain(&self.liners.link_rock)
+            .copied()
+            .collect()
+    }
+
+    /// Install the bolt group or liner `name` on the rock as it is now (`rock`: node
+    /// displacements); false if there is none of that name.
+    pub fn install(&mut self, name: &str, rock: &[[f64; 2]]) -> bool {
+        if let Some(g) = self.cables.names.iter().position(|n| n == name) {
+            self.cables.install(g, rock);
+            true
+        } else if let Some(g) = self.liners.names.iter().position(|n| n == name) {
+            self.liners.install(g, rock);
+            true
+        } else {
+            false
+        }
+    }
+
+    /// The supports stage: forces from the rock's displacements `rock` (into `slots`), then the
+    /// central-difference update of the supports' own nodes. Returns their largest speed, m/s.
+    pub fn cycle(&mut self, rock: &[[f64; 2]], slots: &mut [[f64; 2]], alpha: f64, dt: f64) -> f64 {
+        let (cable_slots, liner_slots) = slots.split_at_mut(3 * self.cables.nodes());
+        self.cables.forces(rock, cable_slots);
+        self.liners.forces(rock, liner_slots);
+        self.cables
+            .motion(alpha, dt)
+            .max(self.liners.motion(alpha, dt))
+    }
+
+    /// Set the supports' masses and add their stiffness to the rock nodes' bounds `rock`
+    /// (before the rock's masses are derived from them). Static runs (`safety` given) scale
+    /// masses to the Gershgorin bounds for Δt = 1 (m = R/(4 s²)); dynamic runs take real
+    /// masses. Returns the supports' critical step with real masses, s (∞ without supports).
+    pub fn set_masses(&mut self, rock: &mut [f64], safety: Option<f64>) -> f64 {
+        let rc = self.cables.stiffness(rock);
+        let rl = self.liners.stiffness(rock);
+        let (mc, ml) = (self.cables.real_masses(), self.liners.real_masses());
+        let mut w2 = 0.0f64;
+        for (r, m) in rc.iter().zip(&mc) {
+            w2 = w2.max(r / m);
+        }
+        for (r, m) in rl.iter().zip(&ml) {
+            w2 = w2.max(r[0] / m[0]).max(r[1] / m[1]);
+        }
+        match safety {
+            Some(s) => {
+                let scale = 4.0 * s * s;
+                self.cables.mass = rc.iter().map(|r| r / scale).collect();
+                self.liners.mass = rl.iter().map(|r| [r[0] / scale, r[1] / scale]).collect();
+            }
+            None => {
+                self.cables.mass = mc;
+                self.liners.mass = ml;
+            }
+        }
+        if w2 > 0.0 {
+            2.0 / w2.sqrt()
+        } else {
+            f64::INFINITY
+        }
+    }
+
+    /// Largest unbalanced force (N/m; liner moments over the element length) and kinetic energy
+    /// (J/m) of the active supports' nodes.
+    pub fn monitor(&self) -> (f64, f64) {
+        let (c, l) = (&self.cables, &self.liners);
+        let (mut max_f, mut ke) = (0.0f64, 0.0);
+        for n in (0..c.nodes()).filter(|&n| c.active[c.group[n] as usize]) {
+            max_f = max_f.max(c.force[n].abs());
+            ke += 0.5 * c.mass[n] * c.vel[n] * c.vel[n];
+        }
+        let lengths = l.node_length();
+        for n in (0..l.nodes()).filter(|&n| l.active[l.group[n] as usize]) {
+            let (f, v, m) = (l.force[n], l.vel[n], l.mass[n]);
+            max_f = max_f.max(f[0].hypot(f[1])).max(f[2].abs() / lengths[n]);
+            ke += 0.5 * (m[0] * (v[0] * v[0] + v[1] * v[1]) + m[1] * v[2] * v[2]);
+        }
+        (max_f, ke)
+    }
+}
