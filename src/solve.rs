@@ -81,7 +81,9 @@ impl Solver {
         let mut stiffness = nodal_stiffness(model);
         let s = spec.safety_factor;
         let scaled = (spec.mode == SolveMode::Static).then_some(s);
-        let support_dt = model.supports.set_masses(&mut stiffness, scaled);
+        let support_dt = model
+            .supports
+            .set_masses(&mut stiffness, scaled, spec.damping);
         let real = lumped_masses(model);
         let mut step = critical_step(&stiffness, &real);
         step.dt_critical = step.dt_critical.min(support_dt);

@@ -1,5 +1,5 @@
-//! The output contract: a run writes a readable `.pvd`, zone `.vtu` with the contract's fields,
-//! `history.csv` and `summary.json`; meshio (Python) reads the `.vtu` too.
+//! The output contract: a run writes a readable `.pvd`, zone, contact and support `.vtu` with the
+//! contract's fields, `history.csv` and `summary.json`; meshio (Python) reads the `.vtu` too.
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -136,6 +136,58 @@ fn jointed_tunnel_converges_and_writes_contacts() {
         r.summary.contacts,
     );
     std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn supports_are_written_as_line_cells() {
+    let text = r#"{
+        "name": "lined",
+        "materials": { "rock": { "density": 2500, "young": 10e9, "poisson": 0.25 } },
+        "region": { "polygon": [[-10, -10], [10, -10], [10, 10], [-10, 10]], "material": "rock" },
+        "excavations": [{ "name": "tunnel", "circle": { "center": [0, 0], "radius": 1, "segments": 48 } }],
+        "zoning": { "edge_at_excavation": 0.15, "edge_far": 2.0, "grading": 0.3 },
+        "in_situ": { "sxx": -10e6, "syy": -5e6 },
+        "boundary": [ { "part": "outer", "in_situ_traction": true },
+                      { "at": [10, 0], "fix": "y" }, { "at": [-10, 0], "fix": "y" },
+                      { "at": [0, 10], "fix": "x" }, { "at": [0, -10], "fix": "x" } ],
+        "bolts": [{ "name": "bolts", "young": 200e9, "area": 4.9e-4, "yield_force": 2e5,
+                    "grout_stiffness": 1e9, "bond_strength": 2e5, "segment": 0.5,
+                    "pattern": { "excavation": "tunnel", "count": 3, "length": 2, "spacing": 1 } }],
+        "liners": [{ "name": "liner", "excavation": "tunnel", "young": 30e9, "area": 0.1, "inertia": 8.3e-5 }],
+        "solve": { "ratio": 1e-5 },
+        "stages": [
+            { "name": "excavate", "excavate": ["tunnel"], "support_fraction": 0.5 },
+            { "name": "support", "install": ["bolts", "liner"] }
+        ]
+    }"#;
+    let sc = Scene::from_json(text, "lined").unwrap();
+    let dir = out_dir("supports");
+    let r = run_scene(&sc, &dir, &mut Quiet).unwrap();
+    assert!(r.summary.stages.iter().all(|s| s.status == "converged"));
+    let s = &r.built.model.supports;
+    let (segments, elements) = (s.cables.segment.len(), s.liners.element.len());
+    assert_eq!(segments, 3 * 4, "three bolts of four 0.5 m segments");
+    assert_eq!(elements, 48, "one liner element per wall edge");
+    let pvd = std::fs::read_to_string(dir.join("lined.pvd")).unwrap();
+    assert_eq!(pvd.matches("_supports_").count(), 2, "{pvd}");
+    let points = s.cables.nodes() + s.liners.nodes();
+    let script = format!(
+        r#"
+import sys, meshio, numpy
+m = meshio.read(sys.argv[1])
+assert m.points.shape == ({points}, 3), m.points.shape
+lines = [c for c in m.cells if c.type == "line"]
+assert len(lines) == 1 and lines[0].data.shape == ({cells}, 2)
+for name in ["axial_force", "moment", "kind", "installed", "yielded"]:
+    assert m.cell_data[name][0].shape[0] == {cells}, name
+assert m.point_data["displacement"].shape == ({points}, 3)
+kind, axial = m.cell_data["kind"][0], m.cell_data["axial_force"][0]
+assert (axial[kind == 1] < 0).all(), "the liner is in compression"
+print("meshio ok")
+"#,
+        cells = segments + elements
+    );
+    run_python(&script, &dir.join("lined_supports_0001.vtu"));
 }
 
 /// Read a zones file with Python's meshio and check the contract's fields and sizes.

@@ -55,6 +55,8 @@ pub struct Liners {
     /// Axial force N, N/m (tension positive), and internal bending moments at both ends, N·m/m.
     pub axial: Vec<f64>,
     pub moment: Vec<[f64; 2]>,
+    /// Shortest element at each liner node, m (the scale between its moment and its forces).
+    pub node_length: Vec<f64>,
 }
 
 impl Liners {
@@ -102,12 +104,21 @@ impl Liners {
             self.moment.push([0.0; 2]);
         }
         let n = self.pos.len();
+        self.node_length.resize(n, f64::INFINITY);
+        for (e, nodes) in self.element.iter().enumerate() {
+            for &m in nodes {
+                let l = &mut self.node_length[m as usize];
+                *l = l.min(self.element_length[e]);
+            }
+        }
         self.disp.resize(n, [0.0; 3]);
         self.vel.resize(n, [0.0; 3]);
         self.force.resize(n, [0.0; 3]);
         self.mass.resize(n, [0.0; 2]);
-        // Links twice as stiff as the stiffest element touching the node: their compliance is
-        // (L/R)²/2 of the ring's hoop compliance (no slip in effect).
+        // Links twice as axially stiff as the stiffest element touching the node: their
+        // compliance is (L/R)²/2 of the ring's hoop compliance (no slip in effect). Bending
+        // stiffness is left out: a ring's radial stiffness in bending, (n² − 1)² EI/R⁴ per length,
+        // is far below EA/L, and 12 EI/L³ would make short elements' wall nodes needlessly heavy.
         for l in 0..self.link_node.len() {
             let i = self.link_node[l];
             if self.group[i as usize] != g {
@@ -115,10 +126,7 @@ impl Liners {
             }
             self.link_stiffness[l] = (0..self.element.len())
                 .filter(|&e| self.element[e].contains(&i))
-                .map(|e| {
-                    let len = self.element_length[e];
-                    2.0 * (p.axial_stiffness / len + 12.0 * p.bending_stiffness / len.powi(3))
-                })
+                .map(|e| 2.0 * p.axial_stiffness / self.element_length[e])
                 .fold(0.0, f64::max);
         }
     }
@@ -234,17 +242,6 @@ impl Liners {
             }
         }
         r
-    }
-
-    /// Shortest element at each liner node, m (the scale between its rotation and translations).
-    pub fn node_length(&self) -> Vec<f64> {
-        let mut l = vec![f64::INFINITY; self.nodes()];
-        for (e, nodes) in self.element.iter().enumerate() {
-            for &n in nodes {
-                l[n as usize] = l[n as usize].min(self.element_length[e]);
-            }
-        }
-        l
     }
 
     /// Real lumped masses [ρA ℓ, ρI ℓ], ℓ the tributary length.

@@ -64,9 +64,11 @@ impl Supports {
 
     /// Set the supports' masses and add their stiffness to the rock nodes' bounds `rock`
     /// (before the rock's masses are derived from them). Static runs (`safety` given) scale
-    /// masses to the Gershgorin bounds for Δt = 1 (m = R/(4 s²)); dynamic runs take real
-    /// masses. Returns the supports' critical step with real masses, s (∞ without supports).
-    pub fn set_masses(&mut self, rock: &mut [f64], safety: Option<f64>) -> f64 {
+    /// masses to the Gershgorin bounds for Δt = 1, m = (1 + α) R/(4 s²): a chain of segments
+    /// reaches its bound R (the zigzag mode), and local damping α can raise the force against
+    /// the motion to (1 + α) F, so the bound needs that margin. Dynamic runs take real masses.
+    /// Returns the supports' critical step with real masses, s (∞ without supports).
+    pub fn set_masses(&mut self, rock: &mut [f64], safety: Option<f64>, alpha: f64) -> f64 {
         let rc = self.cables.stiffness(rock);
         let rl = self.liners.stiffness(rock);
         let (mc, ml) = (self.cables.real_masses(), self.liners.real_masses());
@@ -79,7 +81,7 @@ impl Supports {
         }
         match safety {
             Some(s) => {
-                let scale = 4.0 * s * s;
+                let scale = 4.0 * s * s / (1.0 + alpha);
                 self.cables.mass = rc.iter().map(|r| r / scale).collect();
                 self.liners.mass = rl.iter().map(|r| [r[0] / scale, r[1] / scale]).collect();
             }
@@ -104,10 +106,11 @@ impl Supports {
             max_f = max_f.max(c.force[n].abs());
             ke += 0.5 * c.mass[n] * c.vel[n] * c.vel[n];
         }
-        let lengths = l.node_length();
         for n in (0..l.nodes()).filter(|&n| l.active[l.group[n] as usize]) {
             let (f, v, m) = (l.force[n], l.vel[n], l.mass[n]);
-            max_f = max_f.max(f[0].hypot(f[1])).max(f[2].abs() / lengths[n]);
+            max_f = max_f
+                .max(f[0].hypot(f[1]))
+                .max(f[2].abs() / l.node_length[n]);
             ke += 0.5 * (m[0] * (v[0] * v[0] + v[1] * v[1]) + m[1] * v[2] * v[2]);
         }
         (max_f, ke)

@@ -11,6 +11,8 @@ pub mod lined;
 pub mod modes;
 pub mod patch;
 pub mod plot;
+pub mod pullout;
+pub mod render;
 pub mod report;
 pub mod salencon;
 pub mod scaling;

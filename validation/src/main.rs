@@ -6,9 +6,11 @@ use std::fmt::Write as _;
 use adit::Scene;
 use adit::scene::BlockMode;
 use adit_validation::kirsch_case::{KirschResult, OuterLoad, run, scaled};
-use adit_validation::plot::{Series, speed_and_convergence};
+use adit_validation::plot::{Curve, Series, curves, speed_and_convergence};
 use adit_validation::report::{CaseReport, fitted_order, observed_order};
-use adit_validation::{direct_shear, glued, gravity, incline, modes, patch, salencon, scaling};
+use adit_validation::{
+    direct_shear, glued, gravity, incline, lined, modes, patch, pullout, salencon, scaling,
+};
 use plotters::style::RGBColor;
 
 /// Uniform refinement factors of the Kirsch levels (1 = the shipped model's zoning).
@@ -91,6 +93,64 @@ fn convergence_section(md: &mut String, levels: &[KirschResult], heading: &str) 
     );
     let _ = writeln!(md, "\n{heading}\n");
     order_table(md, levels);
+}
+
+/// The tunnel model's section: its cost, its stages and what its supports carry.
+fn tunnel_section(md: &mut String, run: &adit::RunResult, row: &CaseReport) {
+    let _ = writeln!(md, "\n## The tunnel model (`models/tunnel.json`)\n");
+    let _ = writeln!(
+        md,
+        "A 6 m × 5.5 m horseshoe at 800 m depth (σv = 21.2 MPa at the axis with its gradient and gravity, \
+         K0 = 1.5), Mohr–Coulomb rock cut by two sets of non-persistent joints; the in-situ state is solved, the \
+         tunnel excavated with 25 % of the in-situ traction left on its wall (partial relaxation), then 11 \
+         grouted, pretensioned 4 m bolts over the crown and a 0.15 m shotcrete liner are installed and the \
+         support pressure removed. Not a closed-form case: its figures are what the README's main job shows.\n"
+    );
+    table(md, std::slice::from_ref(row));
+    let _ = writeln!(md, "\n| stage | cycles | status | wall closure (mm) |");
+    let _ = writeln!(md, "|---|---:|---|---:|");
+    for s in &run.summary.stages {
+        let closure = s
+            .closure
+            .values()
+            .next()
+            .map_or("–".to_string(), |c| format!("{:.2}", 1e3 * c));
+        let _ = writeln!(
+            md,
+            "| {} | {} | {} | {closure} |",
+            s.name, s.cycles, s.status
+        );
+    }
+    let m = &run.built.model;
+    let sup = &m.supports;
+    let yielded = m.zones.state.iter().filter(|&&s| s != 0).count();
+    let moving = m
+        .contacts
+        .state
+        .iter()
+        .filter(|s| s.flags & (adit::joint::SLIPPING | adit::joint::OPEN) != 0)
+        .count();
+    let bolt = sup.cables.axial.iter().fold(0.0f64, |a, &n| a.max(n));
+    let yielding = sup.cables.plastic.iter().filter(|&&p| p != 0.0).count();
+    let thrust = sup.liners.axial.iter().fold(0.0f64, |a, &n| a.min(n));
+    let moment = sup
+        .liners
+        .moment
+        .iter()
+        .flatten()
+        .fold(0.0f64, |a, &n| a.max(n.abs()));
+    let _ = writeln!(
+        md,
+        "\nAt the end: {yielded} of {} zones have yielded, {moving} of {} contacts slip or are open; the largest \
+         bolt force is {:.0} kN/m ({yielding} of {} segments at yield), the largest liner thrust {:.2} MN/m and \
+         moment {:.0} kN·m/m.\n\n![sigma1 and yield state around the tunnel, bolts (black) and liner (green)](img/tunnel.png)\n",
+        m.zones.len(),
+        m.contacts.len(),
+        bolt / 1e3,
+        sup.cables.segment.len(),
+        -thrust / 1e6,
+        moment / 1e3
+    );
 }
 
 fn table(md: &mut String, rows: &[CaseReport]) {
@@ -182,6 +242,38 @@ fn main() -> anyhow::Result<()> {
     let (grc, grc_report) =
         salencon::ground_reaction(&scene, 1.0, &[0.8, 0.6, 0.5, 0.4, 0.3, 0.2, 0.1, 0.05, 0.0])?;
     print_row(&grc_report);
+    let lined_cases = vec![
+        lined::run(&scene, 2.0, 0.15)?,
+        lined::run(&scene, 1.0, 0.15)?,
+        lined::run(&scene, 1.0, 0.05)?,
+    ];
+    let mut pullout_cases = Vec::new();
+    let mut profiles = Vec::new();
+    for (fraction, segment) in [(0.25, 0.1), (0.6, 0.1), (0.25, 0.05), (0.6, 0.05)] {
+        let (r, profile) = pullout::run(fraction, segment)?;
+        pullout_cases.push(r);
+        if segment == 0.1 {
+            profiles.push((fraction, profile));
+        }
+    }
+    for r in lined_cases.iter().chain(&pullout_cases) {
+        print_row(r);
+    }
+    let tunnel_scene = Scene::load(&root.join("models/tunnel.json"))?;
+    let tunnel = adit::run_scene(
+        &tunnel_scene,
+        &root.join("target/validation/tunnel"),
+        &mut adit::solve::Quiet,
+    )?;
+    let tunnel_report = CaseReport::new(
+        "models/tunnel.json (README main job): staged, bolted and lined horseshoe",
+        tunnel.summary.zones,
+        tunnel.summary.cycles,
+        tunnel.summary.wall_seconds,
+        None,
+        &[],
+    );
+    print_row(&tunnel_report);
     let jointed = Scene::load(&root.join("models/jointed_tunnel.json"))?;
     let mixed = Scene::load(&root.join("models/jointed_tunnel_mixed.json"))?;
     let mode_runs = modes::table(&jointed, Some(&mixed))?;
@@ -212,6 +304,9 @@ fn main() -> anyhow::Result<()> {
     all.extend(mode_reports.iter().cloned());
     all.extend(salencon_cases.iter().cloned());
     all.push(grc_report.clone());
+    all.extend(lined_cases.iter().cloned());
+    all.extend(pullout_cases.iter().cloned());
+    all.push(tunnel_report.clone());
     let out = root.join("target/validation");
     std::fs::create_dir_all(&out)?;
     std::fs::write(out.join("report.json"), serde_json::to_string_pretty(&all)?)?;
@@ -260,6 +355,41 @@ fn main() -> anyhow::Result<()> {
     ];
     std::fs::create_dir_all(root.join("docs/img"))?;
     speed_and_convergence(&root.join("docs/img/kirsch_convergence.png"), &plot_series)?;
+    let pull_curves: Vec<Curve> = profiles
+        .iter()
+        .zip([blue, red])
+        .flat_map(|((fraction, profile), color)| {
+            let pts = |f: fn(&pullout::ProfilePoint) -> f64| {
+                profile.iter().map(|p| (p.x, f(p))).collect::<Vec<_>>()
+            };
+            [
+                Curve {
+                    label: format!("shear-lag, {:.0} % of s·L", 100.0 * fraction),
+                    points: pts(|p| p.exact),
+                    color,
+                    dots: false,
+                },
+                Curve {
+                    label: format!("adit, {:.0} % of s·L", 100.0 * fraction),
+                    points: pts(|p| p.computed),
+                    color,
+                    dots: true,
+                },
+            ]
+        })
+        .collect();
+    adit_validation::render::tunnel_png(
+        &root.join("docs/img/tunnel.png"),
+        &tunnel.built.model,
+        [0.0, -0.5],
+        9.0,
+    )?;
+    curves(
+        &root.join("docs/img/bolt_pullout.png"),
+        "grouted bolt pulled out of a block",
+        ("distance from the head (m)", "axial force (N/m)"),
+        &pull_curves,
+    )?;
     std::fs::copy(
         root.join("docs/img/kirsch_convergence.png"),
         out.join("kirsch_convergence.png"),
@@ -384,6 +514,39 @@ fn main() -> anyhow::Result<()> {
             1e3 * p.exact
         );
     }
+    let _ = writeln!(md, "\n## Supports: lined tunnel (Einstein–Schwartz)\n");
+    let _ = writeln!(
+        md,
+        "The Kirsch geometry (a = 1 m) in elastic ground (E = 10 GPa, ν = 0.25) under P = 20 MPa vertical and \
+         K·P = 10 MPa horizontal, lined as the hole is made by a shotcrete shell (Es = 30 GPa, νs = 0.2, \
+         thickness t: As = t, Is = t³/12 per metre) bonded to the wall (`liners`: beams on the wall nodes, no \
+         slip), against Einstein & Schwartz's (1979) no-slip solution, T/(PR) = ½(1+K)(1−a0*) + \
+         ½(1−K)(1+2a2*)cos 2θ, M/(PR²) = ¼(1−K)(1−2a2*+2b2*)cos 2θ with the compressibility and flexibility \
+         ratios C and F. `thrust` and `moment`: largest deviation over the liner elements relative to the \
+         largest closed-form value. Bar (issue 4): thrust within 5 %. The moment misses by 17–20 % and hardly \
+         changes with the zoning (×2 → ×1): not resolved yet — either the beam discretisation (elements \
+         shorter than the shell is thick) or the approximations of E-S's no-slip solution; to be checked \
+         against an exact thin-ring solution.\n"
+    );
+    table(&mut md, &lined_cases);
+    let _ = writeln!(md, "\n## Supports: grouted bolt pull-out\n");
+    let _ = writeln!(
+        md,
+        "A 3 m bolt (EA = 98 MN, grout k = 100 MN/m/m, bond strength s = 50 kN/m) grouted into a block that \
+         hardly moves (E = 1000 GPa, outline fixed), pulled at its head, against the shear-lag solution \
+         N(x) = P sinh(λ(L−x))/sinh(λL), λ = √(k/EA), and, once the grout slips at the head \
+         (P > s tanh(λL)/λ = {:.1} kN), the slipped length a with (P − s a) λ coth(λ(L−a)) = s. `axial`: \
+         largest |N_h − N| over the segments relative to P. Beyond s·L the bolt pulls out \
+         (`the_bolt_pulls_out_beyond_its_bond_capacity` in `validation/src/pullout.rs`). A bolt across an open \
+         joint carries the block hanging on it to 3 % (`tests/supports.rs`).\n",
+        pullout::CASE.first_slip() / 1e3
+    );
+    table(&mut md, &pullout_cases);
+    let _ = writeln!(
+        md,
+        "\n![axial force along the bolt, computed and closed form](img/bolt_pullout.png)\n"
+    );
+    tunnel_section(&mut md, &tunnel, &tunnel_report);
     let _ = writeln!(md, "\n## Jointed rock: glued joints\n");
     let _ = writeln!(
         md,
@@ -499,7 +662,8 @@ fn main() -> anyhow::Result<()> {
     );
     std::fs::write(root.join("docs/validation.md"), md)?;
     println!(
-        "wrote target/validation/report.json, docs/validation.md, docs/img/kirsch_convergence.png"
+        "wrote target/validation/report.json, docs/validation.md, docs/img/kirsch_convergence.png, \
+         docs/img/bolt_pullout.png, docs/img/tunnel.png"
     );
     anyhow::ensure!(pass, "the shipped Kirsch model misses its accuracy bar");
     Ok(())

@@ -1,4 +1,5 @@
-//! Plots of the report (plotters, PNG): error against run time and against zone size.
+//! Plots of the report (plotters, PNG): error against run time and against zone size, and
+//! computed against closed-form curves.
 
 use std::path::Path;
 
@@ -92,6 +93,69 @@ pub fn speed_and_convergence(path: &Path, series: &[Series]) -> anyhow::Result<(
             .border_style(BLACK)
             .draw()?;
     }
+    root.present()?;
+    Ok(())
+}
+
+/// One curve of a linear plot: closed forms as lines, computed values as dots.
+pub struct Curve {
+    pub label: String,
+    pub points: Vec<(f64, f64)>,
+    pub color: RGBColor,
+    pub dots: bool,
+}
+
+/// A linear x–y plot of `curves` (PNG).
+pub fn curves(
+    path: &Path,
+    title: &str,
+    (xlabel, ylabel): (&str, &str),
+    curves: &[Curve],
+) -> anyhow::Result<()> {
+    let root = BitMapBackend::new(path, (640, 420)).into_drawing_area();
+    root.fill(&WHITE)?;
+    let all = || curves.iter().flat_map(|c| c.points.iter().copied());
+    let (x0, x1) = all().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
+        (a.min(p.0), b.max(p.0))
+    });
+    let (y0, y1) = all().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
+        (a.min(p.1), b.max(p.1))
+    });
+    let pad = 0.05 * (y1 - y0).max(1e-30);
+    let mut chart = ChartBuilder::on(&root)
+        .caption(title, ("sans-serif", 18))
+        .margin(12)
+        .x_label_area_size(40)
+        .y_label_area_size(70)
+        .build_cartesian_2d(x0..x1, (y0 - pad)..(y1 + pad))?;
+    chart
+        .configure_mesh()
+        .x_desc(xlabel)
+        .y_desc(ylabel)
+        .y_label_formatter(&|v| format!("{v:.3e}"))
+        .draw()?;
+    for c in curves {
+        let color = c.color;
+        if c.dots {
+            chart
+                .draw_series(c.points.iter().map(|&p| Circle::new(p, 3, color.filled())))?
+                .label(c.label.clone())
+                .legend(move |(x, y)| Circle::new((x + 8, y), 3, color.filled()));
+        } else {
+            chart
+                .draw_series(LineSeries::new(c.points.clone(), color.stroke_width(2)))?
+                .label(c.label.clone())
+                .legend(move |(x, y)| {
+                    PathElement::new([(x, y), (x + 16, y)], color.stroke_width(2))
+                });
+        }
+    }
+    chart
+        .configure_series_labels()
+        .position(SeriesLabelPosition::UpperRight)
+        .background_style(WHITE.mix(0.8))
+        .border_style(BLACK)
+        .draw()?;
     root.present()?;
     Ok(())
 }

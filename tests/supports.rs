@@ -1,0 +1,105 @@
+//! Supports in whole runs: a bolt across an open joint carries the block hanging on it; bolts and
+//! a liner installed at a stage take load only from then on; bad support input is named.
+
+use adit::Scene;
+use adit::solve::Quiet;
+
+/// A 2 m × 2 m region cut by a horizontal joint at y = 0 (no tensile strength), the top fixed,
+/// gravity on: the lower block (2 m × 1 m, 2700 kg/m³) hangs on one vertical bolt from its base
+/// into the upper block.
+fn hanging_block() -> Scene {
+    let text = r#"{
+        "name": "hanging",
+        "materials": { "rock": { "density": 2700, "young": 10e9, "poisson": 0.25 } },
+        "region": { "polygon": [[-1, -1], [1, -1], [1, 1], [-1, 1]],
+                    "edge_names": ["bottom", "right", "top", "left"], "material": "rock" },
+        "zoning": { "edge_at_excavation": 0.1, "edge_far": 0.2, "grading": 0.2 },
+        "joint_materials": { "joint": { "normal_stiffness": 1e11, "shear_stiffness": 1e11, "friction": 30 } },
+        "joints": [{ "from": [-1, 0], "to": [1, 0], "material": "joint" }],
+        "gravity": [0, -9.81],
+        "boundary": [{ "part": "top", "fix": "xy" }],
+        "bolts": [{ "name": "bolt", "young": 200e9, "area": 4.9e-4, "yield_force": 2e5,
+                    "grout_stiffness": 1e9, "bond_strength": 1e6, "segment": 0.1,
+                    "line": { "from": [0, -1], "to": [0, 0.8] } }],
+        "solve": { "ratio": 1e-6, "max_cycles": 200000 }
+    }"#;
+    Scene::from_json(text, "hanging").unwrap()
+}
+
+#[test]
+fn a_bolt_across_an_open_joint_carries_the_hanging_block() {
+    let sc = hanging_block();
+    let out = std::env::temp_dir().join("adit_hanging_test");
+    let r = adit::run_scene(&sc, &out, &mut Quiet).unwrap();
+    assert_eq!(r.summary.status, "converged", "{:?}", r.summary);
+    let c = &r.built.model.supports.cables;
+    let weight = 2700.0 * 9.81 * 2.0 * 1.0;
+    // The segment crossing the joint (y from −0.0 to 0.1 or −0.1 to 0) carries the weight.
+    let s = (0..c.segment.len())
+        .find(|&s| {
+            let [a, b] = c.segment[s].map(|n| c.pos[n as usize][1]);
+            a <= 0.0 && b > 0.0
+        })
+        .unwrap();
+    assert!(
+        (c.axial[s] - weight).abs() < 0.03 * weight,
+        "bolt force at the joint {} N/m, block weight {weight} N/m",
+        c.axial[s]
+    );
+    // The joint has opened under the block: it carries no tension.
+    let contacts = &r.built.model.contacts;
+    assert!(contacts.state.iter().all(|s| s.normal <= 1e-6));
+}
+
+#[test]
+fn without_its_bolt_the_block_falls() {
+    let mut sc = hanging_block();
+    sc.bolts.clear();
+    sc.solve.max_cycles = 20_000;
+    let out = std::env::temp_dir().join("adit_falling_test");
+    let r = adit::run_scene(&sc, &out, &mut Quiet).unwrap();
+    assert_ne!(r.summary.status, "converged");
+}
+
+#[test]
+fn support_input_errors_name_the_field() {
+    let bad = |edit: &dyn Fn(&mut serde_json::Value), field: &str| {
+        let mut v: serde_json::Value =
+            serde_json::from_str(include_str!("../models/tunnel.json")).unwrap();
+        edit(&mut v);
+        let err = Scene::from_json(&v.to_string(), "tunnel")
+            .unwrap_err()
+            .to_string();
+        assert!(err.contains(field), "{err}");
+    };
+    bad(
+        &|v| v["bolts"][0]["bond_strength"] = (-1.0).into(),
+        "bolts[0].bond_strength",
+    );
+    bad(
+        &|v| v["liners"][0]["excavation"] = "nowhere".into(),
+        "liners[0].excavation",
+    );
+    bad(
+        &|v| {
+            v["stages"][2]["install"] = serde_json::json!(["crown bolts"]);
+            v["stages"][0]["install"] = serde_json::json!(["shotcrete"]);
+        },
+        "stages[0].install[0]: 'shotcrete' is installed on the wall of 'tunnel' before it is excavated",
+    );
+    bad(
+        &|v| v["stages"][0]["install"] = serde_json::json!(["no such support"]),
+        "stages[0].install[0]",
+    );
+}
+
+#[test]
+fn a_bolt_outside_the_rock_is_an_error() {
+    let mut sc = hanging_block();
+    sc.bolts[0].line.as_mut().unwrap().to = [0.0, 3.0];
+    let err = adit::build::build(&sc).err().unwrap().to_string();
+    assert!(
+        err.contains("bolts[0]") && err.contains("leaves the rock"),
+        "{err}"
+    );
+}
