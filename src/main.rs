@@ -104,6 +104,35 @@ fn run(scene_path: &Path, out: Option<PathBuf>, quiet: bool) -> anyhow::Result<b
         s.zone_cycles_per_second,
         s.block_cycles_per_second
     );
+    let sup = &result.built.model.supports;
+    if !sup.is_empty() {
+        let bolt = sup.cables.axial.iter().fold(0.0f64, |a, &n| a.max(n));
+        let thrust = sup.liners.axial.iter().fold(0.0f64, |a, &n| a.min(n));
+        println!(
+            "supports: {} bolt segments (largest force {:.1} kN/m, {} at yield), {} liner elements \
+             (largest thrust {:.2} MN/m)",
+            sup.cables.segment.len(),
+            bolt / 1e3,
+            sup.cables.plastic.iter().filter(|&&p| p != 0.0).count(),
+            sup.liners.element.len(),
+            -thrust / 1e6
+        );
+    }
+    for st in &s.stages {
+        let closure: Vec<String> = st
+            .closure
+            .iter()
+            .map(|(name, c)| format!("{name} closure {:.2} mm", 1e3 * c))
+            .collect();
+        println!(
+            "stage '{}': {} after {} cycles{}{}",
+            st.name,
+            st.status,
+            st.cycles,
+            if closure.is_empty() { "" } else { ", " },
+            closure.join(", ")
+        );
+    }
     println!("results in {}", result.out_dir.display());
     if let Some(reason) = &s.reason {
         eprintln!("error: run failed: {reason}");

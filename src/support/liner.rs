@@ -324,4 +324,62 @@ mod tests {
             "moment continuous at node 1"
         );
     }
+
+    #[test]
+    fn a_ring_pinched_by_two_loads_bends_as_the_closed_form() {
+        // Free thin ring (R = 1 m) squeezed by P at the crown and the invert: M = PR/π under
+        // the loads and −PR(1/2 − 1/π) at the springlines; thrust P/2 at the springlines
+        // (Roark's Formulas for Stress and Strain, table 9.2 case 1).
+        let n = 96;
+        let rock: Vec<[f64; 2]> = (0..n)
+            .map(|k| {
+                let t = 2.0 * std::f64::consts::PI * k as f64 / n as f64;
+                [t.cos(), t.sin()]
+            })
+            .collect();
+        let edges: Vec<[u32; 2]> = (0..n as u32).map(|k| [k, (k + 1) % n as u32]).collect();
+        let mut l = Liners {
+            names: vec!["ring".into()],
+            props: vec![LinerProps {
+                axial_stiffness: 1e9,
+                bending_stiffness: 1e6,
+                line_density: 1.0,
+                line_inertia: 1.0,
+            }],
+            active: vec![false],
+            ..Default::default()
+        };
+        l.add(0, &edges, &rock, 1e-9);
+        l.link_stiffness.iter_mut().for_each(|k| *k = 0.0);
+        l.install(0, &vec![[0.0; 2]; n]);
+        let r = l.stiffness(&mut vec![0.0; n]);
+        l.mass = r
+            .iter()
+            .map(|r| [r[0] * 1.8 / 2.56, r[1] * 1.8 / 2.56])
+            .collect();
+        let (p, top, bottom) = (1e3, n / 4, 3 * n / 4);
+        let mut slots = vec![[0.0; 2]; n];
+        for _ in 0..200_000 {
+            l.forces(&rock, &mut slots);
+            l.force[top][1] -= p;
+            l.force[bottom][1] += p;
+            l.motion(0.8, 1.0);
+        }
+        // Elements around the crown node and the right springline node (node 0).
+        let at = |node: usize| {
+            let e = (0..n).find(|&e| l.element[e][1] as usize == node).unwrap();
+            (l.moment[e][1], l.axial[e], l.axial[(e + 1) % n])
+        };
+        let (m_top, _, _) = at(top);
+        let (m_side, n1, n2) = at(0);
+        let pr = p * 1.0;
+        let pi = std::f64::consts::PI;
+        assert!((m_top.abs() - pr / pi).abs() < 0.01 * pr, "{m_top}");
+        assert!(
+            (m_side.abs() - pr * (0.5 - 1.0 / pi)).abs() < 0.01 * pr,
+            "{m_side}"
+        );
+        assert!(m_top * m_side < 0.0);
+        assert!((0.5 * (n1 + n2) + 0.5 * p).abs() < 0.01 * p, "{n1} {n2}");
+    }
 }

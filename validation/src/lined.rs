@@ -15,6 +15,20 @@
 //!
 //! (E-S's M is positive with the outer face in tension: adit's liner moment is −M). For K = 1
 //! the thrust reduces to the thin ring on the elastic hole, P R / (1 + C (1 − ν)), checked below.
+//!
+//! E-S's no-slip moment is an approximation; the liner is also checked against the exact solution
+//! of the same thin ring (hoop strain (v′ + w)/R, curvature change (v′ − w″)/R², w outward, v
+//! along θ) bonded to the elastic ground, derived here mode by mode. Mode 0: the ring's hoop force
+//! N0 = −P0 EA/(2G + EA/R), P0 = P(1 + K)/2. Mode 2 (w = W cos 2θ, v = V sin 2θ): with S = P(1 − K)/2
+//! the in-situ stresses at the wall are σrr = S cos 2θ, σrθ = −S sin 2θ (deviatoric part); the ring
+//! loaded by the interface stresses Ar cos 2θ, Aθ sin 2θ is in equilibrium (stationary energy)
+//! when R·[Ar, Aθ] = Kring·[W, V], Kring = [[EA/R + 16EI/R³, 2EA/R + 8EI/R³],
+//! [2EA/R + 8EI/R³, 4EA/R + 4EI/R³]]; the ground's exterior Michell solution for the stress change
+//! a = Ar − S, b = Aθ + S on the hole (Barber, *Elasticity*, table 9.1, κ = 3 − 4ν) moves the wall
+//! by 2G W/R = a(1/3 − (κ + 1)/2) + b((κ + 1)/2 − 2/3), 2G V/R = a(1/3 + (κ − 1)/2) − b(2/3 + (κ − 1)/2)
+//! (without a ring it gives Kirsch's u_r = κ S R/(2G) cos 2θ). Solving the 2 × 2 system gives
+//! N2 = EA(2V + W)/R and M2 = EI(2V + 4W)/R² (outer face in tension positive). For the shipped case
+//! (t = 0.15 m) its thrust is within 0.5 % of E-S's and E-S's moment is 18 % above it.
 
 use std::time::Instant;
 
@@ -75,6 +89,53 @@ impl EinsteinSchwartz {
                 + 0.5 * (1.0 - k) * (1.0 + 2.0 * a2) * (2.0 * theta).cos())
     }
 
+    /// The exact thin ring bonded to the ground, [N0, N2, M2]: hoop force N0 + N2 cos 2θ (N/m,
+    /// tension positive), moment M2 cos 2θ (N·m/m, outer face in tension positive).
+    pub fn thin_ring(&self) -> [f64; 3] {
+        let r = self.radius;
+        let e = self.liner_young / (1.0 - self.liner_poisson.powi(2));
+        let (ea, ei) = (e * self.area, e * self.inertia);
+        let g = self.young / (2.0 * (1.0 + self.poisson));
+        let kappa = 3.0 - 4.0 * self.poisson;
+        let n0 = -0.5 * self.p * (1.0 + self.k) * ea / (2.0 * g + ea / r);
+        let s = 0.5 * self.p * (1.0 - self.k);
+        // Ring stiffness (per R) and ground compliance (times R/2G), mode 2.
+        let kr = [
+            [
+                ea / r + 16.0 * ei / r.powi(3),
+                2.0 * ea / r + 8.0 * ei / r.powi(3),
+            ],
+            [
+                2.0 * ea / r + 8.0 * ei / r.powi(3),
+                4.0 * ea / r + 4.0 * ei / r.powi(3),
+            ],
+        ]
+        .map(|row| row.map(|k| k / r));
+        let c = r / (2.0 * g);
+        let gm = [
+            [
+                1.0 / 3.0 - 0.5 * (kappa + 1.0),
+                0.5 * (kappa + 1.0) - 2.0 / 3.0,
+            ],
+            [
+                1.0 / 3.0 + 0.5 * (kappa - 1.0),
+                -2.0 / 3.0 - 0.5 * (kappa - 1.0),
+            ],
+        ];
+        // x = c·Gm·(Kr x + [−S, S])  ⇒  (I − c Gm Kr) x = c Gm [−S, S].
+        let gk = |i: usize, j: usize| c * (gm[i][0] * kr[0][j] + gm[i][1] * kr[1][j]);
+        let m = [[1.0 - gk(0, 0), -gk(0, 1)], [-gk(1, 0), 1.0 - gk(1, 1)]];
+        let rhs = [c * (gm[0][1] - gm[0][0]) * s, c * (gm[1][1] - gm[1][0]) * s];
+        let det = m[0][0] * m[1][1] - m[0][1] * m[1][0];
+        let w = (rhs[0] * m[1][1] - m[0][1] * rhs[1]) / det;
+        let v = (m[0][0] * rhs[1] - m[1][0] * rhs[0]) / det;
+        [
+            n0,
+            ea * (2.0 * v + w) / r,
+            ei * (2.0 * v + 4.0 * w) / (r * r),
+        ]
+    }
+
     /// Moment M(θ), N·m/m, E-S's sign (outer face in tension positive).
     pub fn moment(&self, theta: f64) -> f64 {
         let (_, a2, b2) = self.coefficients();
@@ -129,25 +190,43 @@ fn scene(kirsch: &Scene, factor: f64, thickness: f64) -> (Scene, EinsteinSchwart
     (s, exact)
 }
 
-/// Solve and compare the liner's thrust (`thrust`: largest |T_h − T| over the elements relative
-/// to the largest |T|) and moment (`moment`, likewise) at each element's middle.
+/// Solve and compare the liner's thrust with E-S (`thrust`: largest |T_h − T| over the elements
+/// relative to the largest |T|) and with the exact thin ring (`thrust_ring`), and its moment at
+/// each element's middle with the exact thin ring (`moment_ring`, likewise) and with E-S
+/// (`moment_es`).
 pub fn run(kirsch: &Scene, factor: f64, thickness: f64) -> anyhow::Result<CaseReport> {
     let start = Instant::now();
     let (sc, exact) = scene(kirsch, factor, thickness);
     let mut b = build(&sc)?;
     let (_, cycles) = crate::settle(&mut b.model, &sc.solve, "lined tunnel")?;
     let l = &b.model.supports.liners;
-    let (mut t_err, mut t_max, mut m_err, mut m_max) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
-    for e in 0..l.element.len() {
-        let [p, q] = l.element[e].map(|n| l.pos[n as usize]);
-        let theta = (0.5 * (p[1] + q[1])).atan2(0.5 * (p[0] + q[0]));
-        let (t, m) = (exact.thrust(theta), -exact.moment(theta));
-        let mid = 0.5 * (l.moment[e][0] + l.moment[e][1]);
-        t_err = t_err.max((-l.axial[e] - t).abs());
-        t_max = t_max.max(t.abs());
-        m_err = m_err.max((mid - m).abs());
-        m_max = m_max.max(m.abs());
-    }
+    let [n0, n2, m2] = exact.thin_ring();
+    // Largest deviation over the elements relative to the largest reference value.
+    let deviation = |computed: &dyn Fn(usize) -> f64, reference: &dyn Fn(f64) -> f64| {
+        let (mut err, mut max) = (0.0f64, 0.0f64);
+        for e in 0..l.element.len() {
+            let [p, q] = l.element[e].map(|n| l.pos[n as usize]);
+            let theta = (0.5 * (p[1] + q[1])).atan2(0.5 * (p[0] + q[0]));
+            let r = reference(theta);
+            err = err.max((computed(e) - r).abs());
+            max = max.max(r.abs());
+        }
+        err / max
+    };
+    let thrust = |e: usize| -l.axial[e];
+    let moment = |e: usize| 0.5 * (l.moment[e][0] + l.moment[e][1]);
+    let errors = [
+        ("thrust", deviation(&thrust, &|t| exact.thrust(t))),
+        (
+            "thrust_ring",
+            deviation(&thrust, &|t| -(n0 + n2 * (2.0 * t).cos())),
+        ),
+        (
+            "moment_ring",
+            deviation(&moment, &|t| -m2 * (2.0 * t).cos()),
+        ),
+        ("moment_es", deviation(&moment, &|t| -exact.moment(t))),
+    ];
     let (c, f) = exact.ratios();
     Ok(CaseReport::new(
         format!(
@@ -157,7 +236,7 @@ pub fn run(kirsch: &Scene, factor: f64, thickness: f64) -> anyhow::Result<CaseRe
         cycles,
         start.elapsed().as_secs_f64(),
         None,
-        &[("thrust", t_err / t_max), ("moment", m_err / m_max)],
+        &errors,
     ))
 }
 
@@ -187,11 +266,39 @@ mod tests {
     }
 
     #[test]
+    fn the_exact_thin_ring_agrees_with_einstein_schwartz_where_it_should() {
+        let mut es = EinsteinSchwartz {
+            radius: 1.0,
+            p: 20e6,
+            k: 0.5,
+            young: 10e9,
+            poisson: 0.25,
+            liner_young: 30e9,
+            liner_poisson: 0.2,
+            area: 0.15,
+            inertia: 0.15f64.powi(3) / 12.0,
+        };
+        let [n0, n2, m2] = es.thin_ring();
+        // Thrust: E-S's to 1 %; moment: below E-S's simplified no-slip value.
+        assert!((-(n0 + n2) - es.thrust(0.0)).abs() < 0.01 * es.thrust(0.0));
+        assert!(m2 > 0.0 && m2 < es.moment(0.0));
+        // A ring with no bending stiffness carries no moment; hydrostatic stress bends nothing.
+        es.inertia = 0.0;
+        assert!(es.thin_ring()[2].abs() < 1e-9);
+        es.inertia = 1e-3;
+        es.k = 1.0;
+        let [n0, n2, m2] = es.thin_ring();
+        assert!(n2.abs() < 1e-6 && m2.abs() < 1e-9);
+        let (c, _) = es.ratios();
+        let ring = es.p * es.radius / (1.0 + c * (1.0 - es.poisson));
+        assert!((-n0 - ring).abs() < 1e-9 * ring);
+    }
+
+    #[test]
     fn liner_thrust_matches_einstein_schwartz() {
         let kirsch = crate::shipped_kirsch().unwrap();
         let r = run(&kirsch, 2.0, 0.15).unwrap();
         assert!(r.errors["thrust"] < 0.05, "{r:?}");
-        // The moment is a second derivative of the liner's deflection: coarser (report it).
-        assert!(r.errors["moment"] < 0.25, "{r:?}");
+        assert!(r.errors["moment_ring"] < 0.1, "{r:?}");
     }
 }
