@@ -173,7 +173,7 @@ fn supports_are_written_as_line_cells() {
     let points = s.cables.nodes() + s.liners.nodes();
     let script = format!(
         r#"
-import sys, meshio, numpy
+import sys, meshio
 m = meshio.read(sys.argv[1])
 assert m.points.shape == ({points}, 3), m.points.shape
 lines = [c for c in m.cells if c.type == "line"]

@@ -265,8 +265,8 @@ mod tests {
 
     const ROCK: [[f64; 2]; 4] = [[0.0, 0.0], [1.0, 0.0], [1.0, 0.0], [2.0, 0.0]];
 
-    /// A straight two-element liner along x on four rock nodes.
-    fn liner() -> Liners {
+    /// A liner (EA = 1e9 N, EI = 1e6 N·m²) on the wall `edges` of rock nodes at `rock`.
+    fn liner_on(edges: &[[u32; 2]], rock: &[[f64; 2]]) -> Liners {
         let mut l = Liners {
             names: vec!["l".into()],
             props: vec![LinerProps {
@@ -278,9 +278,14 @@ mod tests {
             active: vec![false],
             ..Default::default()
         };
-        // Rock nodes 1 and 2 coincide (a joint meets the wall there): one liner node.
-        l.add(0, &[[0, 1], [2, 3]], &ROCK, 1e-9);
+        l.add(0, edges, rock, 1e-9);
         l
+    }
+
+    /// A straight two-element liner along x on four rock nodes; rock nodes 1 and 2 coincide (a
+    /// joint meets the wall there): one liner node.
+    fn liner() -> Liners {
+        liner_on(&[[0, 1], [2, 3]], &ROCK)
     }
 
     #[test]
@@ -338,18 +343,7 @@ mod tests {
             })
             .collect();
         let edges: Vec<[u32; 2]> = (0..n as u32).map(|k| [k, (k + 1) % n as u32]).collect();
-        let mut l = Liners {
-            names: vec!["ring".into()],
-            props: vec![LinerProps {
-                axial_stiffness: 1e9,
-                bending_stiffness: 1e6,
-                line_density: 1.0,
-                line_inertia: 1.0,
-            }],
-            active: vec![false],
-            ..Default::default()
-        };
-        l.add(0, &edges, &rock, 1e-9);
+        let mut l = liner_on(&edges, &rock);
         l.link_stiffness.iter_mut().for_each(|k| *k = 0.0);
         l.install(0, &vec![[0.0; 2]; n]);
         let r = l.stiffness(&mut vec![0.0; n]);
