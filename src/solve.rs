@@ -10,6 +10,15 @@ use crate::model::Model;
 use crate::model::bodies::NO_BODY;
 use crate::scene::{SolveMode, SolveSpec};
 
+/// A node stepping this fraction of its shortest zone edge in one cycle, `UNSTABLE_GROWTH` times
+/// its step of the cycle before, stops the run: a static solve moves nodes by a tiny fraction of
+/// that per cycle, a dynamic one by |v|Δt ≪ h (the step is below the time a wave takes across a
+/// zone), and a scheme past its stability limit multiplies the step by about (ωΔt)² every cycle,
+/// so it passes both within a few cycles. A block falling freely (a mechanism, not an
+/// instability) speeds up by less than that per cycle and is left to the cycle limit.
+pub const UNSTABLE_JUMP: f64 = 0.1;
+pub const UNSTABLE_GROWTH: f64 = 4.0;
+
 /// How a solve ended.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Status {
@@ -142,6 +151,11 @@ impl Solver {
         let status = loop {
             self.cycle.run(model, &self.params);
             cycle += 1;
+            let jump = self.cycle.jump;
+            if jump > UNSTABLE_JUMP && jump > UNSTABLE_GROWTH * self.cycle.last_jump {
+                let reason = self.cycle.unstable(model, self.params.dt);
+                break Status::Failed(format!("cycle {cycle}: {reason}"));
+            }
             let time = cycle as f64 * self.params.dt;
             let due = cycle.is_multiple_of(every) || cycle == self.spec.max_cycles;
             if due {

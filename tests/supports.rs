@@ -59,6 +59,9 @@ fn without_its_bolt_the_block_falls() {
     let out = std::env::temp_dir().join("adit_falling_test");
     let r = adit::run_scene(&sc, &out, &mut Quiet).unwrap();
     assert_ne!(r.summary.status, "converged");
+    // A mechanism, not a numerical instability.
+    let reason = r.summary.reason.unwrap_or_default();
+    assert!(!reason.contains("unstable"), "{reason}");
 }
 
 #[test]

@@ -48,6 +48,12 @@ pub struct Cycle {
     pub support_force: Vec<[f64; 2]>,
     /// Upper bound on how far any node has moved since the last detection, m.
     pub moved: f64,
+    /// 1 / (shortest zone edge at each node), 1/m (0 for nodes without zones).
+    pub inv_size: Vec<f64>,
+    /// The largest step of the last cycle relative to the node's shortest zone edge, |v| Δt / h,
+    /// and that of the cycle before.
+    pub jump: f64,
+    pub last_jump: f64,
     pub seconds: StageSeconds,
 }
 
@@ -57,6 +63,7 @@ impl Cycle {
             zone_force: vec![[0.0; 2]; 3 * model.zones.len()],
             contact_force: vec![[0.0; 2]; 3 * model.contacts.len()],
             support_force: vec![[0.0; 2]; model.supports.slot_count()],
+            inv_size: inverse_zone_size(model),
             ..Default::default()
         }
     }
@@ -143,7 +150,9 @@ impl Cycle {
     /// add applied loads, apply local non-viscous damping F_d = F − α|F|sign(v) per component
     /// (Cundall 1987; UDEC's default), then the central-difference update
     /// v ← v + F_d Δt / m, u ← u + v Δt. A fixed component keeps its velocity (zero unless
-    /// the scene or a test prescribes one), as FLAC's FIX. Returns the largest node speed, m/s.
+    /// the scene or a test prescribes one), as FLAC's FIX. Returns the largest node speed, m/s,
+    /// and records in `jump` the largest step relative to the node's zone size (an explicit
+    /// scheme past its stability limit grows such steps by a large factor every cycle).
     pub fn motion(&mut self, model: &mut Model, p: &CycleParams) -> f64 {
         let Model {
             nodes,
@@ -153,8 +162,9 @@ impl Cycle {
             ..
         } = model;
         let (zf, cf, sf) = (&self.zone_force, &self.contact_force, &self.support_force);
+        let inv_size = &self.inv_size;
         let (alpha, dt) = (p.damping, p.dt);
-        nodes
+        let (speed2, jump2) = nodes
             .vel
             .par_iter_mut()
             .zip(nodes.disp.par_iter_mut())
@@ -183,7 +193,7 @@ impl Cycle {
                 }
                 if fixed & BODY != 0 {
                     *force = f;
-                    return 0.0;
+                    return (0.0, 0.0);
                 }
                 for (d, flag) in [(0, FIX_X), (1, FIX_Y)] {
                     if fixed & flag != 0 {
@@ -196,9 +206,27 @@ impl Cycle {
                     u[d] += v[d] * dt;
                 }
                 *force = f;
-                v[0] * v[0] + v[1] * v[1]
+                let v2 = v[0] * v[0] + v[1] * v[1];
+                (v2, v2 * inv_size[n] * inv_size[n])
             })
-            .reduce(|| 0.0, f64::max)
-            .sqrt()
+            .reduce(|| (0.0, 0.0), |a, b| (a.0.max(b.0), a.1.max(b.1)));
+        self.last_jump = self.jump;
+        self.jump = jump2.sqrt() * dt;
+        speed2.sqrt()
     }
+}
+
+/// 1 / (shortest zone edge at each node), 1/m; 0 for nodes no zone touches.
+fn inverse_zone_size(model: &Model) -> Vec<f64> {
+    let pos = &model.nodes.pos;
+    let mut h = vec![f64::INFINITY; pos.len()];
+    for t in &model.zones.nodes {
+        for k in 0..3 {
+            let (a, b) = (t[k] as usize, t[(k + 1) % 3] as usize);
+            let len = (pos[b][0] - pos[a][0]).hypot(pos[b][1] - pos[a][1]);
+            h[a] = h[a].min(len);
+            h[b] = h[b].min(len);
+        }
+    }
+    h.into_iter().map(|h| 1.0 / h).collect()
 }

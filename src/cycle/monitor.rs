@@ -103,6 +103,28 @@ impl Cycle {
         })
     }
 
+    /// The reason for an unstable step (`jump` past `solve::UNSTABLE_JUMP`), naming the node
+    /// that made it (the first of the largest).
+    pub fn unstable(&self, model: &Model, dt: f64) -> String {
+        let step = |n: usize| {
+            let v = model.nodes.vel[n];
+            v[0].hypot(v[1]) * dt * self.inv_size[n]
+        };
+        let n =
+            (0..model.nodes.len()).fold(0, |best, n| if step(n) > step(best) { n } else { best });
+        let ratio = step(n);
+        let (p, h) = (model.nodes.pos[n], 1.0 / self.inv_size[n]);
+        format!(
+            "unstable: node {n} at ({:.4}, {:.4}) moved {:.3e} m in one cycle, {:.2} of its \
+             shortest zone edge ({h:.3e} m): the time step is past the stability limit, or a \
+             stiffness is missing from its derivation",
+            p[0],
+            p[1],
+            ratio * h,
+            ratio
+        )
+    }
+
     fn first_bad(&self, model: &Model) -> String {
         let bodies = &model.bodies;
         if let Some(k) = (0..bodies.len()).find(|&k| {
