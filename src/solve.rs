@@ -125,6 +125,7 @@ impl Solver {
             params: CycleParams {
                 dt,
                 damping: spec.damping,
+                large_strain: spec.large_strain,
             },
             step,
             spec: spec.clone(),

@@ -10,7 +10,7 @@ use crate::model::bodies::{BodyMode, DOFS, FIX_SPIN, NO_BODY, velocity_map};
 use crate::model::{FIX_X, FIX_Y, Model, Stress};
 
 /// σ' = R σ Rᵀ for an in-plane rotation by `angle` (rad): the stress of a simple block turns with it.
-fn rotate(s: &mut Stress, angle: f64) {
+pub(super) fn rotate(s: &mut Stress, angle: f64) {
     if angle == 0.0 {
         return;
     }

@@ -4,6 +4,7 @@
 
 mod bodies;
 mod contacts;
+mod large_strain;
 pub mod monitor;
 pub mod timestep;
 
@@ -23,6 +24,8 @@ pub struct CycleParams {
     pub dt: f64,
     /// Local non-viscous damping coefficient α (0.8 is UDEC's default for static runs).
     pub damping: f64,
+    /// Zones on their current shape with their stress turned by their spin (`solve.large_strain`).
+    pub large_strain: bool,
 }
 
 /// Seconds spent in each stage since the start of the run.
@@ -106,6 +109,9 @@ impl Cycle {
     /// stress update by the zone law, then corner forces f_i = −A σ·∇N_i
     /// (the virtual-work nodal force of a constant-stress triangle).
     pub fn zone_forces(&mut self, model: &mut Model, p: &CycleParams) {
+        if p.large_strain {
+            return self.zone_forces_large(model, p);
+        }
         let Model {
             nodes, zones, laws, ..
         } = model;
@@ -136,13 +142,7 @@ impl Cycle {
                         * dt,
                 ];
                 laws[mat.0 as usize].update(s, state, plastic, &de);
-                for i in 0..3 {
-                    let (bx, by) = (g[i], g[3 + i]);
-                    f[i] = [
-                        -area * (s[0] * bx + s[3] * by),
-                        -area * (s[3] * bx + s[1] * by),
-                    ];
-                }
+                corner_forces(s, g, area, f);
             });
     }
 
@@ -213,6 +213,18 @@ impl Cycle {
         self.last_jump = self.jump;
         self.jump = jump2.sqrt() * dt;
         speed2.sqrt()
+    }
+}
+
+/// Corner forces of a constant-stress triangle, f_i = −A σ·∇N_i, N/m.
+#[inline]
+fn corner_forces(s: &crate::model::Stress, g: &[f64; 6], area: f64, f: &mut [[f64; 2]]) {
+    for i in 0..3 {
+        let (bx, by) = (g[i], g[3 + i]);
+        f[i] = [
+            -area * (s[0] * bx + s[3] * by),
+            -area * (s[3] * bx + s[1] * by),
+        ];
     }
 }
 

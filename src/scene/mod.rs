@@ -512,6 +512,10 @@ pub struct SolveSpec {
     pub safety_factor: f64,
     /// Cycles between unbalanced-force checks and history rows (default 10).
     pub monitor_every: u64,
+    /// Large strain: zones use their current shape and their stress turns with them (objective
+    /// rate), for large rotations and displacements; default false (small strain: zones keep
+    /// their original shape, exact for small rotations and cheaper).
+    pub large_strain: bool,
 }
 
 /// Solution mode.
@@ -531,6 +535,7 @@ impl Default for SolveSpec {
             damping: 0.8,
             safety_factor: 0.8,
             monitor_every: 10,
+            large_strain: false,
         }
     }
 }
