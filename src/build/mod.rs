@@ -378,7 +378,22 @@ pub fn build(scene: &Scene) -> anyhow::Result<Built> {
         null_material,
         supports: Default::default(),
         support_gather: Gather::default(),
+        mixed: None,
     };
+    if scene.zoning.mixed {
+        let mut patch = vec![0.0; model.nodes.len()];
+        for (t, &a) in model.zones.nodes.iter().zip(&model.zones.area) {
+            for &n in t {
+                patch[n as usize] += a;
+            }
+        }
+        model.mixed = Some(
+            patch
+                .into_iter()
+                .map(|a| if a > 0.0 { 1.0 / a } else { 0.0 })
+                .collect(),
+        );
+    }
     model.supports = supports::supports(scene, &model, &meshed.domain, &boundary)?;
     model.support_gather = Gather::from_slots(model.nodes.len(), &model.supports.slot_nodes());
     // Supports no stage installs are there from the start.

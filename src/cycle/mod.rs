@@ -5,6 +5,7 @@
 mod bodies;
 mod contacts;
 mod large_strain;
+mod mixed;
 pub mod monitor;
 pub mod timestep;
 
@@ -57,6 +58,10 @@ pub struct Cycle {
     /// and that of the cycle before.
     pub jump: f64,
     pub last_jump: f64,
+    /// Mixed discretization scratch: each zone's strain increment, and each node's
+    /// area-averaged volumetric strain increment.
+    pub zone_strain: Vec<StrainIncrement>,
+    pub node_volumetric: Vec<f64>,
     pub seconds: StageSeconds,
 }
 
@@ -67,6 +72,8 @@ impl Cycle {
             contact_force: vec![[0.0; 2]; 3 * model.contacts.len()],
             support_force: vec![[0.0; 2]; model.supports.slot_count()],
             inv_size: inverse_zone_size(model),
+            zone_strain: vec![[0.0; 3]; model.mixed.as_ref().map_or(0, |_| model.zones.len())],
+            node_volumetric: vec![0.0; model.mixed.as_ref().map_or(0, |_| model.nodes.len())],
             ..Default::default()
         }
     }
@@ -112,6 +119,9 @@ impl Cycle {
         if p.large_strain {
             return self.zone_forces_large(model, p);
         }
+        if model.mixed.is_some() {
+            return self.zone_forces_mixed(model, p);
+        }
         let Model {
             nodes, zones, laws, ..
         } = model;
@@ -129,18 +139,7 @@ impl Cycle {
             .zip(zones.material.par_iter())
             .with_min_len(1024)
             .for_each(|(((((((s, state), plastic), f), t), g), &area), mat)| {
-                let v = t.map(|n| vel[n as usize]);
-                let de: StrainIncrement = [
-                    (g[0] * v[0][0] + g[1] * v[1][0] + g[2] * v[2][0]) * dt,
-                    (g[3] * v[0][1] + g[4] * v[1][1] + g[5] * v[2][1]) * dt,
-                    (g[3] * v[0][0]
-                        + g[4] * v[1][0]
-                        + g[5] * v[2][0]
-                        + g[0] * v[0][1]
-                        + g[1] * v[1][1]
-                        + g[2] * v[2][1])
-                        * dt,
-                ];
+                let de = strain_increment(g, t.map(|n| vel[n as usize]), dt);
                 laws[mat.0 as usize].update(s, state, plastic, &de);
                 corner_forces(s, g, area, f);
             });
@@ -214,6 +213,15 @@ impl Cycle {
         self.jump = jump2.sqrt() * dt;
         speed2.sqrt()
     }
+}
+
+/// Strain increment of a constant-strain triangle, Δε = sym(∇v)Δt = [Δεxx, Δεyy, Δγxy], from its
+/// gradients and its corners' velocities.
+#[inline]
+fn strain_increment(g: &[f64; 6], v: [[f64; 2]; 3], dt: f64) -> StrainIncrement {
+    let dx = |c: usize| g[0] * v[0][c] + g[1] * v[1][c] + g[2] * v[2][c];
+    let dy = |c: usize| g[3] * v[0][c] + g[4] * v[1][c] + g[5] * v[2][c];
+    [dx(0) * dt, dy(1) * dt, (dy(0) + dx(1)) * dt]
 }
 
 /// Corner forces of a constant-stress triangle, f_i = −A σ·∇N_i, N/m.

@@ -98,6 +98,9 @@ pub struct Model {
     pub null_material: Option<MaterialId>,
     /// Rock bolts and liners (inactive until installed).
     pub supports: Supports,
+    /// Mixed discretization (`zoning.mixed`): 1 / (area of the zones around each node), 1/m²;
+    /// `None` when each zone keeps its own volumetric strain.
+    pub mixed: Option<Vec<f64>>,
     /// For each node, the slots of the support-force buffer acting on it.
     pub support_gather: Gather,
 }

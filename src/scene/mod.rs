@@ -392,6 +392,11 @@ pub struct ZoningSpec {
     /// Largest zone count accepted (default 2 000 000).
     #[serde(default = "default_max_zones")]
     pub max_zones: usize,
+    /// Mixed discretization: each zone takes the volumetric strain averaged over its nodes'
+    /// patches instead of its own, so constant-strain triangles do not lock as ν → 0.5
+    /// (default false).
+    #[serde(default)]
+    pub mixed: bool,
 }
 
 fn default_grading() -> f64 {

@@ -354,6 +354,17 @@ impl Scene {
             self.validate_boundary(i, bc)?;
         }
         validate_solve("solve", &self.solve)?;
+        let large = self.solve.large_strain
+            || self
+                .stages
+                .iter()
+                .any(|s| s.solve.as_ref().is_some_and(|s| s.large_strain));
+        if self.zoning.mixed && large {
+            return Err(invalid(
+                "zoning.mixed",
+                "the mixed discretization is not available with `large_strain` yet",
+            ));
+        }
         self.validate_supports()?;
         self.validate_stages()
     }

@@ -5,6 +5,7 @@ pub mod direct_shear;
 pub mod glued;
 pub mod gravity;
 pub mod incline;
+pub mod incompressible;
 pub mod kirsch;
 pub mod kirsch_case;
 pub mod lined;
