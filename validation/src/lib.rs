@@ -4,6 +4,7 @@
 pub mod direct_shear;
 pub mod glued;
 pub mod gravity;
+pub mod impact;
 pub mod incline;
 pub mod incompressible;
 pub mod kirsch;
