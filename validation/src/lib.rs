@@ -1,6 +1,7 @@
 //! Validation of adit against closed forms: each case runs the engine, measures its error against
 //! the exact solution and its cost, and is run in full by the report binary and coarsely by tests.
 
+pub mod corners;
 pub mod direct_shear;
 pub mod glued;
 pub mod gravity;

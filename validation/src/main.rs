@@ -9,8 +9,8 @@ use adit_validation::kirsch_case::{KirschResult, OuterLoad, run, scaled};
 use adit_validation::plot::{Curve, Series, curves, speed_and_convergence};
 use adit_validation::report::{CaseReport, fitted_order, observed_order};
 use adit_validation::{
-    direct_shear, glued, gravity, impact, incline, incompressible, lined, modes, patch, pullout,
-    salencon, scaling,
+    corners, direct_shear, glued, gravity, impact, incline, incompressible, lined, modes, patch,
+    pullout, salencon, scaling,
 };
 use plotters::style::RGBColor;
 
@@ -280,7 +280,20 @@ fn main() -> anyhow::Result<()> {
         .iter()
         .map(|&m| impact::settles(m).map(|c| (m, c)))
         .collect::<anyhow::Result<_>>()?;
-    for r in incompressible_cases.iter().chain(&impact_cases) {
+    let corner_cases: Vec<CaseReport> = [
+        ["deformable", "deformable"],
+        ["simple", "simple"],
+        ["rigid", "rigid"],
+        ["rigid", "deformable"],
+    ]
+    .iter()
+    .map(|&m| corners::run(m))
+    .collect::<anyhow::Result<_>>()?;
+    for r in incompressible_cases
+        .iter()
+        .chain(&impact_cases)
+        .chain(&corner_cases)
+    {
         print_row(r);
     }
     let tunnel_scene = Scene::load(&root.join("models/tunnel.json"))?;
@@ -349,6 +362,7 @@ fn main() -> anyhow::Result<()> {
     all.push(tunnel_report.clone());
     all.extend(incompressible_cases.iter().cloned());
     all.extend(impact_cases.iter().cloned());
+    all.extend(corner_cases.iter().cloned());
     let out = root.join("target/validation");
     std::fs::create_dir_all(&out)?;
     std::fs::write(out.join("report.json"), serde_json::to_string_pretty(&all)?)?;
@@ -615,6 +629,23 @@ fn main() -> anyhow::Result<()> {
             .join(", ")
     );
     table(&mut md, &impact_cases);
+    let _ = writeln!(md, "\n## Stability: corner to corner (issue 5)\n");
+    let _ = writeln!(
+        md,
+        "A 2 m square cut by two persistent joints crossing at its centre (four corners meeting at one \
+         point) under a uniform 1 MPa biaxial compression (rollers left and bottom). With one block mode \
+         the exact answer is uniform: `stress` (largest zone deviation), `stress_mean` (largest deviation of \
+         a block's mean stress), `joint_stress` (largest contact deviation, corner contacts aside); \
+         `overlap`: deepest overlap over the contact tolerance. No jam, no explosion, overlaps a thousandth \
+         of the tolerance. Finding: rigid blocks carry the joint stress exactly; deformable blocks whose \
+         zoning does not match across a joint get the right mean stress (0.2 %) but ±35 % along the \
+         joint: node-to-edge contacts do not pass the contact patch test on non-matching meshes (a \
+         segment-to-segment contact would). Simple blocks touching a roller have their strain held (a fixed \
+         node holds a simple block's strain and spin), so only the free one carries the 1 MPa \
+         (`stress_mean` 1): a limitation to lift. With rigid and deformable blocks mixed the stress is not \
+         uniform (rigid blocks do not strain), so only overlap and convergence count there.\n"
+    );
+    table(&mut md, &corner_cases);
     let _ = writeln!(
         md,
         "\nOther safeguards of issue 5 tested so far (no closed form): a static solve forced to 3× its stable \
