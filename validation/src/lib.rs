@@ -19,6 +19,7 @@ pub mod render;
 pub mod report;
 pub mod salencon;
 pub mod scaling;
+pub mod stiff_joints;
 
 use std::path::PathBuf;
 
