@@ -63,3 +63,17 @@ pub fn mean_radial_displacement(model: &Model, nodes: &[u32]) -> f64 {
         .sum::<f64>()
         / nodes.len() as f64
 }
+
+/// Largest deviation of a zone's in-plane stress from the uniform `target` [σxx, σyy, σxy] (Pa),
+/// component by component, over `scale` (Pa).
+pub fn uniform_stress_error(model: &Model, target: [f64; 3], scale: f64) -> f64 {
+    model
+        .zones
+        .stress
+        .iter()
+        .map(|s| {
+            let d = [s[0] - target[0], s[1] - target[1], s[3] - target[2]];
+            d.iter().fold(0.0f64, |m, x| m.max(x.abs())) / scale
+        })
+        .fold(0.0, f64::max)
+}

@@ -43,12 +43,7 @@ pub fn run(ratio: f64, law: &str) -> anyhow::Result<CaseReport> {
     let (solver, cycles) = crate::settle(&mut b.model, &sc.solve, "stiff joints")?;
     let m = &b.model;
     let p = 1e6;
-    let stress = m
-        .zones
-        .stress
-        .iter()
-        .map(|s| (s[1] + p).abs().max(s[0].abs()).max(s[3].abs()) / p)
-        .fold(0.0, f64::max);
+    let stress = crate::uniform_stress_error(m, [0.0, -p, 0.0], p);
     let top = &b.part_nodes["top"];
     let settle = -top
         .iter()
