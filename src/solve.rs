@@ -17,6 +17,7 @@ use crate::scene::{SolveMode, SolveSpec};
 /// so it passes both within a few cycles. A block falling freely (a mechanism, not an
 /// instability) speeds up by less than that per cycle and is left to the cycle limit.
 pub const UNSTABLE_JUMP: f64 = 0.1;
+/// See `UNSTABLE_JUMP`.
 pub const UNSTABLE_GROWTH: f64 = 4.0;
 
 /// How a solve ended.

@@ -26,8 +26,9 @@ impl Staging {
     }
 
     /// Apply `stage` to the model before its solve: remove the rock of the excavations it names,
-    /// install the bolts and liners it names, set the support pressure of every excavation made so far to `support_fraction` × the
-    /// in-situ traction on its walls, and reset displacements if asked.
+    /// install the bolts and liners it names, set the support pressure of every excavation made so
+    /// far to `support_fraction` × the in-situ traction on its walls, and reset displacements if
+    /// asked.
     pub fn apply(&mut self, stage: &Stage, scene: &Scene, built: &mut Built) {
         for name in &stage.excavate {
             let j = scene

@@ -5,7 +5,8 @@
 //! Element (length L, axis e, normal n = e rotated +90°, per unit thickness of the model, with
 //! s the sets' spacing along the tunnel), in total form from installation (small rotations):
 //!   N   = (EA/s)/L · (u_b − u_a)·e                                   axial force (tension +),
-//!   m_a = (EI/s)/L · (4θ_a + 2θ_b − 6φ),  m_b = (EI/s)/L · (2θ_a + 4θ_b − 6φ),  φ = (u_b − u_a)·n / L,
+//!   m_a = (EI/s)/L · (4θ_a + 2θ_b − 6φ),  m_b = (EI/s)/L · (2θ_a + 4θ_b − 6φ),
+//!   φ = (u_b − u_a)·n / L,
 //! end moments on the element; its shear is V = (m_a + m_b)/L. The internal bending moment is
 //! −m_a at a and m_b at b (positive when the face toward −n, the excavation, is in tension),
 //! E = E/(1 − ν²) for a shell in plane strain (Przemieniecki, *Theory of Matrix Structural
