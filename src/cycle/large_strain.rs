@@ -14,8 +14,7 @@
 use rayon::prelude::*;
 
 use super::bodies::rotate;
-use super::{Cycle, CycleParams, corner_forces};
-use crate::law::StrainIncrement;
+use super::{Cycle, CycleParams, corner_forces, strain_increment, velocity_gradient};
 use crate::model::Model;
 use crate::model::zones::cst_gradients;
 
@@ -46,10 +45,9 @@ impl Cycle {
                     [x[k][0] - 0.5 * v[k][0] * dt, x[k][1] - 0.5 * v[k][1] * dt]
                 });
                 let (g, _) = cst_gradients(mid);
-                let dx = |c: usize| g[0] * v[0][c] + g[1] * v[1][c] + g[2] * v[2][c];
-                let dy = |c: usize| g[3] * v[0][c] + g[4] * v[1][c] + g[5] * v[2][c];
-                rotate(s, 0.5 * (dx(1) - dy(0)) * dt);
-                let de: StrainIncrement = [dx(0) * dt, dy(1) * dt, (dy(0) + dx(1)) * dt];
+                let l = velocity_gradient(&g, v);
+                rotate(s, 0.5 * (l[1][0] - l[0][1]) * dt);
+                let de = strain_increment(&l, dt);
                 laws[mat.0 as usize].update(s, state, plastic, &de);
                 // Forces act on the shape at the end of the step.
                 let (g, area) = cst_gradients(x);

@@ -10,7 +10,7 @@
 
 use rayon::prelude::*;
 
-use super::{Cycle, CycleParams, corner_forces, strain_increment};
+use super::{Cycle, CycleParams, corner_forces, strain_increment, velocity_gradient};
 use crate::model::Model;
 
 impl Cycle {
@@ -31,7 +31,9 @@ impl Cycle {
             .zip(zones.nodes.par_iter())
             .zip(zones.grad.par_iter())
             .with_min_len(1024)
-            .for_each(|((de, t), g)| *de = strain_increment(g, t.map(|n| vel[n as usize]), dt));
+            .for_each(|((de, t), g)| {
+                *de = strain_increment(&velocity_gradient(g, t.map(|n| vel[n as usize])), dt)
+            });
         let (strain, area) = (&self.zone_strain, &zones.area);
         self.node_volumetric
             .par_iter_mut()

@@ -139,7 +139,8 @@ impl Cycle {
             .zip(zones.material.par_iter())
             .with_min_len(1024)
             .for_each(|(((((((s, state), plastic), f), t), g), &area), mat)| {
-                let de = strain_increment(g, t.map(|n| vel[n as usize]), dt);
+                let l = velocity_gradient(g, t.map(|n| vel[n as usize]));
+                let de = strain_increment(&l, dt);
                 laws[mat.0 as usize].update(s, state, plastic, &de);
                 corner_forces(s, g, area, f);
             });
@@ -215,13 +216,19 @@ impl Cycle {
     }
 }
 
-/// Strain increment of a constant-strain triangle, Δε = sym(∇v)Δt = [Δεxx, Δεyy, Δγxy], from its
-/// gradients and its corners' velocities.
+/// Velocity gradient of a constant-strain triangle, L[i][j] = ∂v_i/∂x_j (1/s), from its gradients
+/// and its corners' velocities.
 #[inline]
-fn strain_increment(g: &[f64; 6], v: [[f64; 2]; 3], dt: f64) -> StrainIncrement {
+fn velocity_gradient(g: &[f64; 6], v: [[f64; 2]; 3]) -> [[f64; 2]; 2] {
     let dx = |c: usize| g[0] * v[0][c] + g[1] * v[1][c] + g[2] * v[2][c];
     let dy = |c: usize| g[3] * v[0][c] + g[4] * v[1][c] + g[5] * v[2][c];
-    [dx(0) * dt, dy(1) * dt, (dy(0) + dx(1)) * dt]
+    [[dx(0), dy(0)], [dx(1), dy(1)]]
+}
+
+/// Strain increment Δε = sym(L)Δt = [Δεxx, Δεyy, Δγxy] of a velocity gradient L.
+#[inline]
+fn strain_increment(l: &[[f64; 2]; 2], dt: f64) -> StrainIncrement {
+    [l[0][0] * dt, l[1][1] * dt, (l[0][1] + l[1][0]) * dt]
 }
 
 /// Corner forces of a constant-stress triangle, f_i = −A σ·∇N_i, N/m.
