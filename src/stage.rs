@@ -2,9 +2,9 @@
 //! installed, the support pressure left on their walls (convergence–confinement), displacements
 //! reset.
 
-use adit_meshing::{BoundaryEdge, EdgeKind};
+use adit_meshing::BoundaryEdge;
 
-use crate::build::{Built, NOT_FILL, add_tractions, in_situ_stress};
+use crate::build::{Built, NOT_FILL, add_tractions, in_situ_stress, rock_walls};
 use crate::contact::Contacts;
 use crate::model::bodies::FIX_SPIN;
 use crate::model::{FIX_X, FIX_Y, Gather, Model, traction};
@@ -50,7 +50,9 @@ impl Staging {
             let Some(now) = support else { continue };
             let change = stage.support_fraction - *now;
             if change != 0.0 {
-                let walls: Vec<BoundaryEdge> = rock_walls(built, j).copied().collect();
+                let walls: Vec<BoundaryEdge> = rock_walls(&built.boundary, &built.model, j as u32)
+                    .copied()
+                    .collect();
                 add_tractions(&mut built.model.nodes, walls.iter(), |p, n| {
                     let t = traction(&in_situ_stress(&scene.in_situ, p[1], poisson), n);
                     [change * t[0], change * t[1]]
@@ -77,7 +79,7 @@ impl Staging {
                 continue;
             }
             let (mut sum, mut count) = (0.0, 0usize);
-            for e in rock_walls(built, j) {
+            for e in rock_walls(&built.boundary, m, j as u32) {
                 let [a, b] = e.nodes.map(|n| n as usize);
                 let (pa, pb) = (m.nodes.pos[a], m.nodes.pos[b]);
                 let len = (pb[0] - pa[0]).hypot(pb[1] - pa[1]);
@@ -98,17 +100,6 @@ impl Staging {
     pub fn support_fraction(&self) -> f64 {
         self.support.iter().flatten().copied().next().unwrap_or(0.0)
     }
-}
-
-/// The wall edges of excavation `j` on the rock that stays (the fill's own wall edges excluded
-/// once it is removed).
-fn rock_walls(built: &Built, j: usize) -> impl Iterator<Item = &BoundaryEdge> {
-    let blocks = &built.model.blocks;
-    built
-        .boundary
-        .iter()
-        .filter(move |e| e.kind == EdgeKind::Excavation(j as u32))
-        .filter(move |e| !blocks.is_removed(blocks.block_of_node(e.nodes[0])))
 }
 
 /// Remove the rock filling excavation `j`: its blocks are marked removed (detection skips them),

@@ -40,6 +40,23 @@ pub struct Built {
     pub warnings: Vec<String>,
 }
 
+/// The wall edges of excavation `j` on the rock that stays: not the edges of its own fill (the
+/// rock that fills a staged excavation until a stage removes it), nor of any removed block.
+pub fn rock_walls<'a>(
+    boundary: &'a [BoundaryEdge],
+    model: &'a Model,
+    j: u32,
+) -> impl Iterator<Item = &'a BoundaryEdge> {
+    let blocks = &model.blocks;
+    boundary
+        .iter()
+        .filter(move |e| e.kind == EdgeKind::Excavation(j))
+        .filter(move |e| {
+            let b = blocks.block_of_node(e.nodes[0]);
+            model.fill.get(b).copied().unwrap_or(NOT_FILL) != j && !blocks.is_removed(b)
+        })
+}
+
 /// In-situ stress at elevation y, Pa: [σxx, σyy, σzz, σxy], σzz defaulting to ν(σxx + σyy).
 pub fn in_situ_stress(s: &InSitu, y: f64, poisson: f64) -> [f64; 4] {
     let dy = y - s.y_ref;

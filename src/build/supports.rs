@@ -2,9 +2,9 @@
 //! nodes hosted by the rock zones they lie in; liners become beams on the rock side of an
 //! excavation's wall. All start inactive: a stage (or the start of the run) installs them.
 
-use adit_meshing::{BoundaryEdge, Domain, EdgeKind};
+use adit_meshing::{BoundaryEdge, Domain};
 
-use super::NOT_FILL;
+use super::{NOT_FILL, rock_walls};
 use crate::model::Model;
 use crate::scene::{BoltSpec, LinerSpec, Scene};
 use crate::support::{CableProps, Cables, LinerProps, Liners, Supports};
@@ -62,15 +62,7 @@ pub fn supports(
         liners.names.push(l.name.clone());
         liners.props.push(liner_props(l));
         liners.active.push(false);
-        let walls: Vec<[u32; 2]> = boundary
-            .iter()
-            .filter(|e| e.kind == EdgeKind::Excavation(j))
-            .filter(|e| {
-                let b = model.blocks.block_of_node(e.nodes[0]);
-                model.fill.get(b).copied().unwrap_or(NOT_FILL) != j
-            })
-            .map(|e| e.nodes)
-            .collect();
+        let walls: Vec<[u32; 2]> = rock_walls(boundary, model, j).map(|e| e.nodes).collect();
         liners.add(g, &walls, &model.nodes.pos, tol);
     }
     Ok(Supports { cables, liners })
