@@ -106,16 +106,15 @@ fn run(scene_path: &Path, out: Option<PathBuf>, quiet: bool) -> anyhow::Result<b
     );
     let sup = &result.built.model.supports;
     if !sup.is_empty() {
-        let bolt = sup.cables.axial.iter().fold(0.0f64, |a, &n| a.max(n));
-        let thrust = sup.liners.axial.iter().fold(0.0f64, |a, &n| a.min(n));
+        let loads = sup.loads();
         println!(
             "supports: {} bolt segments (largest force {:.1} kN/m, {} at yield), {} liner elements \
              (largest thrust {:.2} MN/m)",
             sup.cables.segment.len(),
-            bolt / 1e3,
-            sup.cables.plastic.iter().filter(|&&p| p != 0.0).count(),
+            loads.bolt_force / 1e3,
+            loads.bolts_yielded,
             sup.liners.element.len(),
-            -thrust / 1e6
+            loads.liner_thrust / 1e6
         );
     }
     for st in &s.stages {

@@ -9,6 +9,19 @@ pub mod liner;
 pub use cable::{CableProps, Cables};
 pub use liner::{LinerProps, Liners};
 
+/// What the supports carry: the figures a user looks at first.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SupportLoads {
+    /// Largest bolt axial force, N/m (tension positive; 0 without bolts).
+    pub bolt_force: f64,
+    /// Bolt segments that have yielded.
+    pub bolts_yielded: usize,
+    /// Largest liner thrust (compression), N/m, positive; 0 without liners.
+    pub liner_thrust: f64,
+    /// Largest liner bending moment magnitude, N·m/m.
+    pub liner_moment: f64,
+}
+
 /// All supports of a model.
 #[derive(Debug, Clone, Default)]
 pub struct Supports {
@@ -19,6 +32,21 @@ pub struct Supports {
 impl Supports {
     pub fn is_empty(&self) -> bool {
         self.cables.nodes() == 0 && self.liners.nodes() == 0
+    }
+
+    /// The largest forces the bolts and liners carry now.
+    pub fn loads(&self) -> SupportLoads {
+        let (c, l) = (&self.cables, &self.liners);
+        SupportLoads {
+            bolt_force: c.axial.iter().fold(0.0f64, |a, &n| a.max(n)),
+            bolts_yielded: c.plastic.iter().filter(|&&p| p != 0.0).count(),
+            liner_thrust: -l.axial.iter().fold(0.0f64, |a, &n| a.min(n)),
+            liner_moment: l
+                .moment
+                .iter()
+                .flatten()
+                .fold(0.0f64, |a, &n| a.max(n.abs())),
+        }
     }
 
     /// Force slots: three per cable node (its host zone's corners), then one per liner link.

@@ -137,26 +137,19 @@ fn tunnel_section(md: &mut String, run: &adit::RunResult, row: &CaseReport, unsu
         .iter()
         .filter(|s| s.flags & (adit::joint::SLIPPING | adit::joint::OPEN) != 0)
         .count();
-    let bolt = sup.cables.axial.iter().fold(0.0f64, |a, &n| a.max(n));
-    let yielding = sup.cables.plastic.iter().filter(|&&p| p != 0.0).count();
-    let thrust = sup.liners.axial.iter().fold(0.0f64, |a, &n| a.min(n));
-    let moment = sup
-        .liners
-        .moment
-        .iter()
-        .flatten()
-        .fold(0.0f64, |a, &n| a.max(n.abs()));
+    let loads = sup.loads();
     let _ = writeln!(
         md,
         "\nAt the end: {yielded} of {} zones have yielded, {moving} of {} contacts slip or are open; the largest \
-         bolt force is {:.0} kN/m ({yielding} of {} segments at yield), the largest liner thrust {:.2} MN/m and \
+         bolt force is {:.0} kN/m ({} of {} segments at yield), the largest liner thrust {:.2} MN/m and \
          moment {:.0} kN·m/m.\n\n![sigma1 and yield state around the tunnel, bolts (black) and liner (green)](img/tunnel.png)\n",
         m.zones.len(),
         m.contacts.len(),
-        bolt / 1e3,
+        loads.bolt_force / 1e3,
+        loads.bolts_yielded,
         sup.cables.segment.len(),
-        -thrust / 1e6,
-        moment / 1e3
+        loads.liner_thrust / 1e6,
+        loads.liner_moment / 1e3
     );
 }
 
