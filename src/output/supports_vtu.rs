@@ -29,9 +29,13 @@ pub fn supports_vtu(model: &Model) -> Result<Vec<u8>, vtkio::Error> {
         displacement.extend([u[0], u[1], 0.0]);
     }
     let first_liner = c.nodes() as u64;
-    for n in 0..l.nodes() {
+    // Each liner node shows the rock displacement of its first linked wall node.
+    let mut first_link = vec![None; l.nodes()];
+    for (k, &n) in l.link_node.iter().enumerate() {
+        first_link[n as usize].get_or_insert(k);
+    }
+    for (n, link) in first_link.into_iter().enumerate() {
         points.extend([l.pos[n][0], l.pos[n][1], 0.0]);
-        let link = l.link_node.iter().position(|&m| m as usize == n);
         let u = link.map_or([0.0; 2], |k| rock(l.link_rock[k]));
         displacement.extend([u[0], u[1], 0.0]);
     }
