@@ -81,13 +81,10 @@ fn run(scene_path: &Path, out: Option<PathBuf>, quiet: bool) -> anyhow::Result<b
         "scene {}: {} blocks ({} rigid, {} simple), {} zones, {} nodes, min angle {:.1}°",
         s.scene, s.blocks, s.rigid_blocks, s.simple_blocks, s.zones, s.nodes, s.min_zone_angle
     );
-    let limit = match s.critical_block {
-        Some(b) => format!("block {b}"),
-        None => format!("node {}", s.critical_node),
-    };
     println!(
-        "time step: critical {:.3e} s ({limit}), used {:.3e} s{}",
+        "time step: critical {:.3e} s ({}), used {:.3e} s{}",
         s.critical_timestep,
+        s.critical_limiter,
         s.timestep,
         if scene.solve.mode == adit::scene::SolveMode::Static {
             " with mass scaling"

@@ -192,6 +192,7 @@ pub fn run_scene(
         critical_timestep: solver.step.dt_critical,
         critical_node: solver.step.limiting_node.0,
         critical_block: solver.step.limiting_block,
+        critical_limiter: solver.step.describe(),
         min_zone_angle: built.mesh.min_angle_deg,
         warnings: built.warnings.clone(),
         stages: if scene.stages.is_empty() {

@@ -2,8 +2,8 @@
 //! history, and report intermediate output steps to an observer.
 
 use crate::cycle::timestep::{
-    StepLimit, body_masses, body_step, body_stiffness, critical_step, lumped_masses,
-    nodal_stiffness, scaled_masses,
+    Limiter, StepLimit, body_masses, body_step, body_stiffness, critical_step, lumped_masses,
+    nodal_stiffness, scaled_masses, zone_stiffness,
 };
 use crate::cycle::{Cycle, CycleParams, Monitor};
 use crate::model::Model;
@@ -88,7 +88,9 @@ impl Solver {
     /// Set nodal masses and the time step for the solve mode: static runs scale masses so that
     /// Δt = 1 s is stable; dynamic runs keep real masses and take Δt = s·Δt_crit.
     pub fn new(model: &mut Model, spec: &SolveSpec, output_every: u64) -> Solver {
+        let zones_only = zone_stiffness(model);
         let mut stiffness = nodal_stiffness(model);
+        let with_contacts = stiffness.clone();
         let s = spec.safety_factor;
         let scaled = (spec.mode == SolveMode::Static).then_some(s);
         let support_dt = model
@@ -96,6 +98,17 @@ impl Solver {
             .set_masses(&mut stiffness, scaled, spec.damping);
         let real = lumped_masses(model);
         let mut step = critical_step(&stiffness, &real);
+        // Name the largest share of the limiting node's stiffness.
+        let n = step.limiting_node.0 as usize;
+        let (zones, contacts) = (zones_only[n], with_contacts[n] - zones_only[n]);
+        let supports = stiffness[n] - with_contacts[n];
+        step.by = if support_dt < step.dt_critical || supports > zones.max(contacts) {
+            Limiter::Supports
+        } else if contacts > zones {
+            Limiter::Contacts
+        } else {
+            Limiter::Zones
+        };
         step.dt_critical = step.dt_critical.min(support_dt);
         let body_k = body_stiffness(model, &stiffness);
         let body_real = body_masses(model);

@@ -7,17 +7,17 @@ use crate::model::bodies::{Bodies, BodyMode, DOFS, FIX_SPIN, NO_BODY, polygon_mo
 use crate::model::{BODY, MaterialId, Nodes};
 use crate::scene::{BlockMode, Scene};
 
-/// The rigid and simple blocks of `modes` as bodies: centroid, area and radius from the polygon,
-/// weight ρ A g, the in-situ stress at the centroid for a simple block, fixity from the boundary
+/// The rigid and simple blocks of `modes` as bodies of their block's `material`: centroid, area
+/// and radius from the polygon, weight ρ A g, the in-situ stress at the centroid for a simple block, fixity from the boundary
 /// conditions on their nodes (any fixed node holds the block's rotation and strain, and the
 /// translation components it names); their nodes are marked `BODY`.
 pub fn bodies(
     modes: &[BlockMode],
     blocks: &Blocks,
     nodes: &mut Nodes,
-    material: MaterialId,
-    law: &dyn ZoneLaw,
-    stress_at: impl Fn([f64; 2]) -> [f64; 4],
+    material: &[MaterialId],
+    laws: &[Box<dyn ZoneLaw>],
+    stress_at: impl Fn([f64; 2], MaterialId) -> [f64; 4],
     gravity: [f64; 2],
 ) -> Bodies {
     let mut out = Bodies {
@@ -47,6 +47,7 @@ pub fn bodies(
             nodes.fixed[n] |= BODY;
             out.of_node[n] = k;
         }
+        let law = laws[material[b].0 as usize].as_ref();
         let mass = law.density() * m.area;
         out.block.push(b as u32);
         out.mode.push(mode);
@@ -58,9 +59,9 @@ pub fn bodies(
         out.weight.push([mass * gravity[0], mass * gravity[1]]);
         out.area.push(m.area);
         out.radius.push(radius);
-        out.material.push(material);
+        out.material.push(material[b]);
         out.stress.push(match mode {
-            BodyMode::Simple => stress_at(c),
+            BodyMode::Simple => stress_at(c, material[b]),
             BodyMode::Rigid => [0.0; 4],
         });
         out.state.push(0);

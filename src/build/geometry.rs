@@ -10,7 +10,8 @@ use rayon::prelude::*;
 
 use crate::scene::{BlockMode, Scene};
 
-/// The domain (region with excavation holes) a scene describes.
+/// The domain a scene describes: the region with its excavations, then its inclusions, as holes
+/// (hole j ≥ the number of excavations is inclusion j − that number).
 pub fn domain(scene: &Scene) -> Result<Domain, MeshError> {
     let outer = Polygon::new(scene.region.polygon.clone());
     let holes = scene
@@ -28,6 +29,17 @@ pub fn domain(scene: &Scene) -> Result<Domain, MeshError> {
                 polygon,
             }
         })
+        .chain(scene.inclusions.iter().map(|inc| {
+            let polygon = match (&inc.circle, &inc.polygon) {
+                (Some(c), _) => Polygon::circle(c.center, c.radius, c.segments),
+                (None, Some(p)) => Polygon::new(p.clone()),
+                (None, None) => unreachable!("validated: one shape per inclusion"),
+            };
+            Hole {
+                name: inc.name.clone(),
+                polygon,
+            }
+        }))
         .collect();
     Domain::new(outer, scene.edge_names(), holes)
 }
@@ -89,6 +101,8 @@ pub struct Meshed {
     /// For each block, the staged excavation whose rock it is (index into the excavations), or
     /// `NOT_FILL` for the rock that stays.
     pub fill: Vec<u32>,
+    /// For each block, the inclusion it lies in (index into the inclusions), or `NOT_FILL`.
+    pub inclusion: Vec<u32>,
 }
 
 /// Marks a block that is no excavation's fill.
@@ -133,8 +147,11 @@ fn field_of(scene: &Scene, err: &MeshError) -> String {
         MeshError::HolesOverlap { a, .. } => a.as_str(),
         MeshError::Zoning(_) | MeshError::Triangulation(_) => return "zoning".into(),
     };
-    match scene.excavations.iter().position(|e| e.name == shape) {
-        Some(i) => format!("excavations[{i}]"),
+    if let Some(i) = scene.excavations.iter().position(|e| e.name == shape) {
+        return format!("excavations[{i}]");
+    }
+    match scene.inclusions.iter().position(|e| e.name == shape) {
+        Some(i) => format!("inclusions[{i}]"),
         None => "region.polygon".into(),
     }
 }
@@ -152,6 +169,7 @@ fn mesh_blocks(scene: &Scene) -> Result<Meshed, MeshError> {
         .excavations
         .iter()
         .map(|e| scene.is_staged(&e.name))
+        .chain(scene.inclusions.iter().map(|_| true))
         .collect();
     // Vertices closer than 0.3 of the finest zone merge, so joints cut no sliver edges; with
     // Voronoi grains, never more than 2 % of the grain size, whose many short edges would
@@ -167,13 +185,29 @@ fn mesh_blocks(scene: &Scene) -> Result<Meshed, MeshError> {
     } else {
         cut_blocks_filled(&domain, &filled, &joints, tol)?
     };
-    let fill = blocking
+    // The hole each block fills: a staged excavation's rock, or an inclusion.
+    let hole: Vec<u32> = blocking
         .blocks
         .iter()
         .map(|b| {
             (0..domain.holes.len())
                 .find(|&j| filled[j] && b.within(&domain.holes[j].polygon, tol))
                 .map_or(NOT_FILL, |j| j as u32)
+        })
+        .collect();
+    let excavations = scene.excavations.len() as u32;
+    let fill = hole
+        .iter()
+        .map(|&j| if j < excavations { j } else { NOT_FILL })
+        .collect();
+    let inclusion = hole
+        .iter()
+        .map(|&j| {
+            if j == NOT_FILL || j < excavations {
+                NOT_FILL
+            } else {
+                j - excavations
+            }
         })
         .collect();
     let excavations: Vec<Polygon> = domain.holes.iter().map(|h| h.polygon.clone()).collect();
@@ -193,6 +227,7 @@ fn mesh_blocks(scene: &Scene) -> Result<Meshed, MeshError> {
         meshes,
         modes,
         fill,
+        inclusion,
     })
 }
 

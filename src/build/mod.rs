@@ -17,7 +17,7 @@ pub use boundary::add_tractions;
 pub use geometry::{Meshed, NOT_FILL, domain, joint_segments, mesh, zoning};
 
 use crate::contact::Contacts;
-use crate::contact::detect::{Detection, Touch, detect};
+use crate::contact::detect::{Detection, NO_MATERIAL, Touch, detect};
 use crate::joint::{
     ContinuouslyYielding, CoulombSlip, FAILED, Glued, JointLaw, JointState, tan_deg,
 };
@@ -182,11 +182,30 @@ pub fn build(scene: &Scene) -> anyhow::Result<Built> {
         laws.push(Box::new(Null));
         MaterialId((laws.len() - 1) as u32)
     });
-    let poisson = scene.materials[&scene.region.material].poisson;
+    // Each block's material: the region's, or its inclusion's.
+    let material_id = |name: &str| {
+        MaterialId(
+            material_names
+                .iter()
+                .position(|n| n == name)
+                .expect("validated") as u32,
+        )
+    };
+    let block_material: Vec<MaterialId> = meshed
+        .inclusion
+        .iter()
+        .map(|&i| match scene.inclusions.get(i as usize) {
+            Some(inc) => material_id(&inc.material),
+            None => MaterialId(region_mat as u32),
+        })
+        .collect();
+    let poisson: Vec<f64> = scene.materials.values().map(|m| m.poisson).collect();
+    let stress_at =
+        |c: [f64; 2], m: MaterialId| in_situ_stress(&scene.in_situ, c[1], poisson[m.0 as usize]);
     for z in 0..zones.len() {
-        zones.material[z] = MaterialId(region_mat as u32);
-        let c = zones.centroid(z, &nodes.pos);
-        zones.stress[z] = in_situ_stress(&scene.in_situ, c[1], poisson);
+        let m = block_material[zones.block[z] as usize];
+        zones.material[z] = m;
+        zones.stress[z] = stress_at(zones.centroid(z, &nodes.pos), m);
     }
 
     // Gravity: body force ρ g A / 3 on each corner (lumped).
@@ -228,9 +247,9 @@ pub fn build(scene: &Scene) -> anyhow::Result<Built> {
         &meshed.modes,
         &blocks,
         &mut nodes,
-        MaterialId(region_mat as u32),
-        laws[region_mat].as_ref(),
-        |c| in_situ_stress(&scene.in_situ, c[1], poisson),
+        &block_material,
+        &laws,
+        stress_at,
         scene.gravity,
     );
     if !bodies.is_empty() {
@@ -314,6 +333,34 @@ pub fn build(scene: &Scene) -> anyhow::Result<Built> {
         }));
         (joint_laws.len() - 1) as u32
     });
+    // Inclusions are bonded to the rock around: glued, kn = (largest E of the rock and the
+    // inclusions) / h at the excavation, so the interface is stiffer than a zone of either side.
+    let inclusion_material = (!scene.inclusions.is_empty()).then(|| {
+        let e = scene
+            .inclusions
+            .iter()
+            .map(|i| &i.material)
+            .chain([&scene.region.material])
+            .map(|m| scene.materials[m].young)
+            .fold(0.0, f64::max);
+        let k = e / scene.zoning.edge_at_excavation;
+        joint_material_names.push("inclusion interface".into());
+        joint_laws.push(Box::new(Glued {
+            normal_stiffness: k,
+            shear_stiffness: 0.5 * k,
+        }));
+        (joint_laws.len() - 1) as u32
+    });
+    // The joint material of each hole's wall: a staged excavation's fill, an inclusion's
+    // interface, none for a hole from the start.
+    let hole_material: Vec<u32> = (0..meshed.domain.holes.len())
+        .map(|j| match scene.excavations.get(j) {
+            Some(e) if scene.is_staged(&e.name) => fill_material,
+            Some(_) => None,
+            None => inclusion_material,
+        })
+        .map(|m| m.unwrap_or(NO_MATERIAL))
+        .collect();
     anyhow::ensure!(
         blocks.len() == 1 || !joint_laws.is_empty(),
         "joint_materials: {} blocks need at least one joint material for their contacts",
@@ -332,7 +379,7 @@ pub fn build(scene: &Scene) -> anyhow::Result<Built> {
                 ..Default::default()
             };
         }
-        let s = in_situ_stress(&scene.in_situ, t.point[1], poisson);
+        let s = in_situ_stress(&scene.in_situ, t.point[1], poisson[region_mat]);
         let n = t.normal;
         let tangent = [-n[1], n[0]];
         let t = traction(&s, n);
@@ -350,7 +397,7 @@ pub fn build(scene: &Scene) -> anyhow::Result<Built> {
             x: &nodes.pos,
             tolerance: contact_tolerance,
             joint_material: &joint_material,
-            fill_material,
+            hole_material: &hole_material,
         };
         detect(&d, &Contacts::default(), &in_situ_joint)
     } else {
@@ -390,7 +437,7 @@ pub fn build(scene: &Scene) -> anyhow::Result<Built> {
         joint_material_names,
         joint_material,
         contact_tolerance,
-        fill_material,
+        hole_material,
         fill: meshed.fill.clone(),
         null_material,
         supports: Default::default(),

@@ -19,10 +19,13 @@ pub struct Detection<'a> {
     pub tolerance: f64,
     /// Joint material of each joint feature (`EdgeKind::Joint(k)` → `joint_material[k]`).
     pub joint_material: &'a [u32],
-    /// Joint material of the walls of filled excavations (`EdgeKind::Excavation(_)` edges between
-    /// blocks), if there are any.
-    pub fill_material: Option<u32>,
+    /// Joint material of each hole's wall (`EdgeKind::Excavation(j)` edges between blocks: the
+    /// fill of a staged excavation, an inclusion), `NO_MATERIAL` for a hole that is empty.
+    pub hole_material: &'a [u32],
 }
+
+/// Marks a hole whose wall makes no contacts (an excavation from the start).
+pub const NO_MATERIAL: u32 = u32::MAX;
 
 /// Geometry of a new contact, handed to the caller to choose its initial joint state.
 #[derive(Debug, Clone, Copy)]
@@ -280,7 +283,11 @@ fn edge_normals_at(d: &Detection, n: u32) -> Vec<[f64; 2]> {
 fn material_of(d: &Detection, node: u32, edge: u32) -> u32 {
     let of = |e: u32| match d.blocks.edge_kind[e as usize] {
         EdgeKind::Joint(k) => d.joint_material.get(k as usize).copied(),
-        EdgeKind::Excavation(_) => d.fill_material,
+        EdgeKind::Excavation(j) => d
+            .hole_material
+            .get(j as usize)
+            .copied()
+            .filter(|&m| m != NO_MATERIAL),
         EdgeKind::Region(_) => None,
     };
     of(edge)
@@ -418,7 +425,7 @@ mod tests {
             x,
             tolerance: 1e-3,
             joint_material: &[0],
-            fill_material: None,
+            hole_material: &[],
         }
     }
 

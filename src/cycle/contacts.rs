@@ -24,7 +24,7 @@ impl Cycle {
             x: &x,
             tolerance: model.contact_tolerance,
             joint_material: &model.joint_material,
-            fill_material: model.fill_material,
+            hole_material: &model.hole_material,
         };
         let fresh = |t: &Touch| JointState {
             normal_displacement: t.gap,

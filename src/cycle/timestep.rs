@@ -20,6 +20,34 @@ pub struct StepLimit {
     pub limiting_node: NodeId,
     /// The rigid or simple block that sets the critical step, if one does.
     pub limiting_block: Option<u32>,
+    /// What stiffness dominates at the limit.
+    pub by: Limiter,
+}
+
+/// The stiffness that sets the critical step.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Limiter {
+    /// The zones at the limiting node (their size and modulus).
+    #[default]
+    Zones,
+    /// The contact springs at the limiting node (joint stiffness over its edge length).
+    Contacts,
+    /// A bolt or liner (its own nodes, or its springs at the limiting node).
+    Supports,
+    /// A rigid or simple block.
+    Block,
+}
+
+impl StepLimit {
+    /// What set the step, for reports: `zones at node 12`, `contacts at node 40`, `block 3`, ….
+    pub fn describe(&self) -> String {
+        match self.by {
+            Limiter::Zones => format!("zones at node {}", self.limiting_node.0),
+            Limiter::Contacts => format!("contacts at node {}", self.limiting_node.0),
+            Limiter::Supports => "supports".to_string(),
+            Limiter::Block => format!("block {}", self.limiting_block.unwrap_or(0)),
+        }
+    }
 }
 
 /// Element stiffness K = A Bᵀ D B of a plane-strain CST with moduli α1 = K + 4G/3, α2 = K − 2G/3, G;
@@ -44,6 +72,13 @@ fn zone_row_sums(grad: &[f64; 6], area: f64, a1: f64, a2: f64, g: f64) -> [[f64;
 
 /// Gershgorin stiffness bound R_i per node (zones and contacts), N/m.
 pub fn nodal_stiffness(model: &Model) -> Vec<f64> {
+    let mut r = zone_stiffness(model);
+    add_contact_stiffness(model, &mut r);
+    r
+}
+
+/// Gershgorin stiffness bound R_i per node from the zones alone, N/m.
+pub fn zone_stiffness(model: &Model) -> Vec<f64> {
     let Zones {
         nodes,
         grad,
@@ -60,9 +95,7 @@ pub fn nodal_stiffness(model: &Model) -> Vec<f64> {
             r[n as usize][1] += sums[c][1];
         }
     }
-    let mut r: Vec<f64> = r.into_iter().map(|[x, y]| x.max(y)).collect();
-    add_contact_stiffness(model, &mut r);
-    r
+    r.into_iter().map(|[x, y]| x.max(y)).collect()
 }
 
 /// Contact springs stiffen the boundary nodes. A node's contact (length ≤ half its tributary
@@ -124,6 +157,7 @@ pub fn critical_step(stiffness: &[f64], masses: &[f64]) -> StepLimit {
         dt_critical: 2.0 / ratio.sqrt(),
         limiting_node: NodeId(node as u32),
         limiting_block: None,
+        by: Limiter::Zones,
     }
 }
 
@@ -209,6 +243,7 @@ pub fn body_step(model: &Model, stiffness: &[Dof], masses: &[Dof], limit: &mut S
                 dt_critical: dt,
                 limiting_node: NodeId(model.bodies.nodes[k][0]),
                 limiting_block: Some(model.bodies.block[k]),
+                by: Limiter::Block,
             };
         }
     }

@@ -90,8 +90,9 @@ pub struct Model {
     pub joint_material: Vec<u32>,
     /// Contact detection tolerance, m.
     pub contact_tolerance: f64,
-    /// Joint material of the contacts on the walls of filled (staged) excavations.
-    pub fill_material: Option<u32>,
+    /// Joint material of the contacts on each hole's wall (staged excavations' fill, inclusions),
+    /// `NO_MATERIAL` for an empty hole.
+    pub hole_material: Vec<u32>,
     /// For each block, the staged excavation whose rock it is, or `NOT_FILL`.
     pub fill: Vec<u32>,
     /// The null law excavated zones take (staged scenes only).

@@ -174,6 +174,8 @@ pub struct Summary {
     pub critical_node: u32,
     /// The rigid or simple block that sets the critical time step, if one does.
     pub critical_block: Option<u32>,
+    /// What sets the critical step: `zones at node N`, `contacts at node N`, `supports`, `block B`.
+    pub critical_limiter: String,
     /// Smallest zone angle, degrees.
     pub min_zone_angle: f64,
     /// What building the model found worth a warning (sliver blocks, absorbed joints).

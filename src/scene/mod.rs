@@ -24,6 +24,10 @@ pub struct Scene {
     pub region: Region,
     #[serde(default)]
     pub excavations: Vec<Excavation>,
+    /// Regions of another material inside the region (a stiff dyke, a soft fault zone), bonded to
+    /// the rock around them.
+    #[serde(default)]
+    pub inclusions: Vec<Inclusion>,
     pub zoning: ZoningSpec,
     /// Joint materials by name.
     #[serde(default)]
@@ -169,6 +173,22 @@ pub struct Excavation {
     /// A horseshoe: semicircular crown on vertical walls and a flat invert.
     #[serde(default)]
     pub horseshoe: Option<Horseshoe>,
+}
+
+/// A region of another material, cut from the rock along its outline and glued to it (a bonded
+/// interface: kn = max E / `zoning.edge_at_excavation`, ks = kn / 2, never slipping or opening).
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Inclusion {
+    /// Name, used in messages.
+    pub name: String,
+    #[serde(default)]
+    pub circle: Option<Circle>,
+    /// Vertices (m) of a polygonal inclusion.
+    #[serde(default)]
+    pub polygon: Option<Vec<[f64; 2]>>,
+    /// Name of the material inside (a key of `materials`).
+    pub material: String,
 }
 
 /// A horseshoe excavation: a semicircular crown of radius r centred on the springline at
@@ -632,6 +652,30 @@ mod tests {
             msg,
             "region.material: no material named 'granite' in materials"
         );
+    }
+
+    #[test]
+    fn inclusion_errors_name_the_field() {
+        let with = |inc: &str| {
+            GOOD.replace(
+                "\"zoning\"",
+                &format!("\"inclusions\": [{inc}], \"zoning\""),
+            )
+        };
+        let circle = "\"circle\": { \"center\": [5, 5], \"radius\": 1 }";
+        let msg = error_of(&with(&format!(
+            "{{ \"name\": \"i\", {circle}, \"material\": \"granite\" }}"
+        )));
+        assert_eq!(
+            msg,
+            "inclusions[0].material: no material named 'granite' in materials"
+        );
+        let msg = error_of(&with("{ \"name\": \"i\", \"material\": \"rock\" }"));
+        assert!(msg.starts_with("inclusions[0]: give exactly one"), "{msg}");
+        let one = format!("{{ \"name\": \"i\", {circle}, \"material\": \"rock\" }}");
+        let msg = error_of(&with(&format!("{one}, {one}")));
+        assert!(msg.starts_with("inclusions[1].name:"), "{msg}");
+        assert!(Scene::from_json(&with(&one), "scene.json").is_ok());
     }
 
     #[test]

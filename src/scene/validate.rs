@@ -218,6 +218,7 @@ impl Scene {
                 ));
             }
         }
+        self.validate_inclusions()?;
         let z = &self.zoning;
         positive("zoning.edge_at_excavation", z.edge_at_excavation)?;
         positive("zoning.edge_far", z.edge_far)?;
@@ -394,6 +395,42 @@ impl Scene {
                 return Err(invalid(
                     format!("{p}.support_fraction"),
                     format!("must be in [0, 1], got {}", st.support_fraction),
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    fn validate_inclusions(&self) -> Result<(), SceneError> {
+        for (i, inc) in self.inclusions.iter().enumerate() {
+            let p = format!("inclusions[{i}]");
+            match (&inc.circle, &inc.polygon) {
+                (Some(c), None) => {
+                    positive(&format!("{p}.circle.radius"), c.radius)?;
+                    if c.segments < 8 {
+                        return Err(invalid(
+                            format!("{p}.circle.segments"),
+                            "at least 8 segments",
+                        ));
+                    }
+                }
+                (None, Some(_)) => {}
+                _ => return Err(invalid(&p, "give exactly one of `circle` and `polygon`")),
+            }
+            if !self.materials.contains_key(&inc.material) {
+                return Err(invalid(
+                    format!("{p}.material"),
+                    format!("no material named '{}' in materials", inc.material),
+                ));
+            }
+            let taken = self.excavations.iter().map(|e| &e.name);
+            if taken
+                .chain(self.inclusions[..i].iter().map(|o| &o.name))
+                .any(|n| *n == inc.name)
+            {
+                return Err(invalid(
+                    format!("{p}.name"),
+                    format!("'{}' already names an excavation or inclusion", inc.name),
                 ));
             }
         }

@@ -20,7 +20,7 @@ use std::time::Instant;
 use adit::Scene;
 use adit::build::build;
 
-use crate::report::CaseReport;
+use crate::report::{CaseReport, StepInfo};
 
 fn scene(modes: [&str; 2]) -> anyhow::Result<Scene> {
     let text = serde_json::json!({
@@ -46,7 +46,7 @@ pub fn run(modes: [&str; 2]) -> anyhow::Result<CaseReport> {
     let start = Instant::now();
     let sc = scene(modes)?;
     let mut b = build(&sc)?;
-    let (_, cycles) = crate::settle(&mut b.model, &sc.solve, "corner-to-corner blocks")?;
+    let (solver, cycles) = crate::settle(&mut b.model, &sc.solve, "corner-to-corner blocks")?;
     let m = &b.model;
     let p = 1e6;
     let stress = crate::uniform_stress_error(m, [-p, -p, 0.0], p);
@@ -102,7 +102,8 @@ pub fn run(modes: [&str; 2]) -> anyhow::Result<CaseReport> {
             ("joint_stress", joint),
             ("overlap", overlap),
         ],
-    ))
+    )
+    .with_step(StepInfo::of(&solver)))
 }
 
 #[cfg(test)]

@@ -14,7 +14,7 @@ use adit::Scene;
 use adit::build::build;
 use adit::solve::{Quiet, Solver, Status};
 
-use crate::report::CaseReport;
+use crate::report::{CaseReport, StepInfo};
 
 fn scene(mode: &str, damping: f64) -> anyhow::Result<Scene> {
     let text = serde_json::json!({
@@ -102,7 +102,8 @@ pub fn run(mode: &str) -> anyhow::Result<CaseReport> {
         start.elapsed().as_secs_f64(),
         None,
         &[("energy_loss", 1.0 - ke1 / ke0)],
-    ))
+    )
+    .with_step(StepInfo::of(&solver)))
 }
 
 /// The same impact with gravity and local damping 0.8, solved statically: the block must come to

@@ -11,7 +11,7 @@ use adit_meshing::EdgeKind;
 use serde::Serialize;
 
 use crate::kirsch::Kirsch;
-use crate::report::CaseReport;
+use crate::report::{CaseReport, StepInfo};
 
 /// Errors and cost of one Kirsch run.
 #[derive(Debug, Clone, Serialize)]
@@ -30,6 +30,7 @@ pub struct KirschResult {
     pub zone_cycles_per_s: f64,
     /// Representative zone size (√ of the mean zone area within r ≤ 5a), m.
     pub h: f64,
+    pub step: StepInfo,
     pub status: String,
 }
 
@@ -84,6 +85,7 @@ impl KirschResult {
             Some(self.h),
             &errors,
         )
+        .with_step(self.step.clone())
     }
 }
 
@@ -159,6 +161,7 @@ pub fn run(scene: &Scene, case: &str, load: OuterLoad) -> anyhow::Result<KirschR
         wall_displacement: err / max_u,
         zone_cycles_per_s: model.zones.len() as f64 * solution.cycles as f64 / cycling,
         h: (area / count as f64).sqrt(),
+        step: StepInfo::of(&solver),
         status: solution.status.label().to_string(),
     })
 }

@@ -3,10 +3,12 @@
 
 pub mod corners;
 pub mod direct_shear;
+pub mod drop;
 pub mod glued;
 pub mod gravity;
 pub mod impact;
 pub mod incline;
+pub mod inclusion;
 pub mod incompressible;
 pub mod kirsch;
 pub mod kirsch_case;
@@ -19,6 +21,7 @@ pub mod render;
 pub mod report;
 pub mod salencon;
 pub mod scaling;
+pub mod softening;
 pub mod stiff_joints;
 
 use std::path::PathBuf;

@@ -18,6 +18,50 @@ pub struct CaseReport {
     /// Named relative errors (e.g. `stress_l2`, `wall_displacement`).
     #[serde(flatten)]
     pub errors: BTreeMap<String, f64>,
+    /// The time step and what limited it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub step: Option<StepInfo>,
+}
+
+/// A run's time step: the critical step with real masses and what set it, and the step used.
+#[derive(Debug, Clone, Serialize)]
+pub struct StepInfo {
+    /// Critical step with real masses, s (the dynamic step before the safety factor).
+    pub critical_s: f64,
+    /// Step used, s (1 for static runs, whose masses are scaled instead).
+    pub used_s: f64,
+    /// What set the critical step: zones or contacts at a node, supports, a rigid or simple block.
+    pub limited_by: String,
+}
+
+impl StepInfo {
+    /// The step a solver derived for its model.
+    pub fn of(solver: &adit::solve::Solver) -> StepInfo {
+        StepInfo {
+            critical_s: solver.step.dt_critical,
+            used_s: solver.params.dt,
+            limited_by: solver.step.describe(),
+        }
+    }
+
+    /// The step a scene run reported in its summary.
+    pub fn from_summary(s: &adit::output::Summary) -> StepInfo {
+        StepInfo {
+            critical_s: s.critical_timestep,
+            used_s: s.timestep,
+            limited_by: s.critical_limiter.clone(),
+        }
+    }
+
+    /// `1.2e-5 s, zones at node 40` (static runs) or `…, used 9.6e-6 s` (dynamic runs).
+    pub fn label(&self) -> String {
+        let used = if self.used_s == 1.0 {
+            String::new()
+        } else {
+            format!(", used {:.2e} s", self.used_s)
+        };
+        format!("{:.2e} s, {}{used}", self.critical_s, self.limited_by)
+    }
 }
 
 impl CaseReport {
@@ -38,7 +82,14 @@ impl CaseReport {
             zone_cycles_per_s: zones as f64 * cycles as f64 / wall_s,
             h,
             errors: errors.iter().map(|&(k, v)| (k.to_string(), v)).collect(),
+            step: None,
         }
+    }
+
+    /// The row with its run's time step.
+    pub fn with_step(mut self, step: StepInfo) -> Self {
+        self.step = Some(step);
+        self
     }
 
     /// The largest of the named errors.

@@ -52,7 +52,7 @@ pub fn measure(n: usize) -> anyhow::Result<DetectionCost> {
         x: &m.nodes.pos,
         tolerance: m.contact_tolerance,
         joint_material: &m.joint_material,
-        fill_material: m.fill_material,
+        hole_material: &m.hole_material,
     };
     let mut best = f64::INFINITY;
     let mut contacts = 0;

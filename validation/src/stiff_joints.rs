@@ -11,7 +11,7 @@ use std::time::Instant;
 use adit::Scene;
 use adit::build::build;
 
-use crate::report::CaseReport;
+use crate::report::{CaseReport, StepInfo};
 
 fn scene(ratio: f64, law: &str) -> anyhow::Result<Scene> {
     let kn = ratio * 10e9 / 0.2;
@@ -53,18 +53,7 @@ pub fn run(ratio: f64, law: &str) -> anyhow::Result<CaseReport> {
     let (young, nu, kn) = (10e9, 0.25, ratio * 10e9 / 0.2);
     let exact = p * 2.0 * (1.0 - nu * nu) / young + 2.0 * p / kn;
     Ok(CaseReport::new(
-        format!(
-            "stiff joints, kn = {ratio:.0} × E/h, {law}: step limited by node {} ({})",
-            solver.step.limiting_node.0,
-            if b.model.blocks.node_edges[solver.step.limiting_node.0 as usize]
-                .iter()
-                .any(|&e| e != adit::model::blocks::NO_EDGE)
-            {
-                "on a joint"
-            } else {
-                "inside a block"
-            }
-        ),
+        format!("stiff joints, kn = {ratio:.0} × E/h, {law}"),
         m.zones.len(),
         cycles,
         start.elapsed().as_secs_f64(),
@@ -73,7 +62,8 @@ pub fn run(ratio: f64, law: &str) -> anyhow::Result<CaseReport> {
             ("stress", stress),
             ("settlement", (settle - exact).abs() / exact),
         ],
-    ))
+    )
+    .with_step(StepInfo::of(&solver)))
 }
 
 #[cfg(test)]
