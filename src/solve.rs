@@ -2,8 +2,8 @@
 //! history, and report intermediate output steps to an observer.
 
 use crate::cycle::timestep::{
-    Limiter, StepLimit, body_masses, body_step, body_stiffness, critical_step, lumped_masses,
-    nodal_stiffness, scaled_masses, zone_stiffness,
+    Limiter, StepLimit, body_masses, body_step, body_stiffness, critical_step, damped_margin,
+    lumped_masses, nodal_stiffness, scaled_masses, zone_stiffness,
 };
 use crate::cycle::{Cycle, CycleParams, Monitor};
 use crate::model::Model;
@@ -115,10 +115,18 @@ impl Solver {
         body_step(model, &body_k, &body_real, &mut step);
         let dt = match spec.mode {
             SolveMode::Static => {
-                model.nodes.mass = scaled_masses(&stiffness, s);
+                model.nodes.mass = scaled_masses(&stiffness, s, spec.damping);
                 model.bodies.mass = body_k
                     .iter()
-                    .map(|d| d.map(|k| if k > 0.0 { k / (4.0 * s * s) } else { 1.0 }))
+                    .map(|d| {
+                        d.map(|k| {
+                            if k > 0.0 {
+                                k * damped_margin(s, spec.damping) / (4.0 * s * s)
+                            } else {
+                                1.0
+                            }
+                        })
+                    })
                     .collect();
                 1.0
             }

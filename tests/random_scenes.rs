@@ -24,7 +24,7 @@ struct Draw {
 fn draw() -> impl Strategy<Value = Draw> {
     (
         2.0..4.0f64,
-        (0.0..180.0f64, 15.0..165.0f64),
+        (0.0..180.0f64, 3.0..177.0f64),
         (0.5..1.5f64, 0.5..1.5f64),
         1usize..=2,
         10.0..12.0f64,
@@ -36,8 +36,8 @@ fn draw() -> impl Strategy<Value = Draw> {
         .prop_map(
             |(width, dips, spacings, sets, log_kn, friction, mode, pressure, gravity)| Draw {
                 width,
-                // The second set at least 15° from the first: near-parallel sets make sliver
-                // blocks, issue 5's case 3, still open (see docs/stability.md).
+                // The second set at least 3° from the first: near-parallel sets cut sliver
+                // wedges (issue 5's case 3, `tests/slivers.rs`).
                 dips: [dips.0, (dips.0 + dips.1) % 180.0],
                 spacings: [spacings.0, spacings.1],
                 sets,
