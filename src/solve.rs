@@ -7,7 +7,7 @@ use crate::cycle::timestep::{
 };
 use crate::cycle::{Cycle, CycleParams, Monitor};
 use crate::model::Model;
-use crate::model::bodies::NO_BODY;
+use crate::model::bodies::{NO_BODY, projector};
 use crate::scene::{SolveMode, SolveSpec};
 
 /// A node stepping this fraction of its shortest zone edge in one cycle, `UNSTABLE_GROWTH` times
@@ -136,6 +136,16 @@ impl Solver {
                 s * step.dt_critical
             }
         };
+        let bodies = &mut model.bodies;
+        bodies.projector = (0..bodies.len())
+            .map(|k| {
+                projector(
+                    &bodies.constraint[k],
+                    &bodies.mass[k],
+                    bodies.mode[k].dofs(),
+                )
+            })
+            .collect();
         // Body nodes move with their body and carry no mass of their own.
         for (m, &b) in model.nodes.mass.iter_mut().zip(&model.bodies.of_node) {
             if b != NO_BODY {

@@ -6,7 +6,6 @@ use adit_meshing::BoundaryEdge;
 
 use crate::build::{Built, NOT_FILL, add_tractions, in_situ_stress, rock_walls};
 use crate::contact::Contacts;
-use crate::model::bodies::FIX_SPIN;
 use crate::model::{FIX_X, FIX_Y, Gather, Model, traction};
 use crate::scene::{Scene, Stage};
 
@@ -129,7 +128,8 @@ pub fn remove_fill(model: &mut Model, j: u32) {
             model.nodes.applied[n] = [0.0; 2];
         }
         if let Some(k) = model.bodies.block.iter().position(|&bb| bb as usize == b) {
-            model.bodies.fixed[k] = FIX_X | FIX_Y | FIX_SPIN;
+            model.bodies.constraint[k] =
+                std::array::from_fn(|i| std::array::from_fn(|j| if i == j { 1.0 } else { 0.0 }));
             model.bodies.velocity[k] = [0.0; 6];
             model.bodies.weight[k] = [0.0; 2];
             model.bodies.stress[k] = [0.0; 4];

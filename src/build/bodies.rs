@@ -3,8 +3,8 @@
 use crate::contact::rounding;
 use crate::law::ZoneLaw;
 use crate::model::blocks::Blocks;
-use crate::model::bodies::{Bodies, BodyMode, DOFS, FIX_SPIN, NO_BODY, polygon_moments};
-use crate::model::{BODY, MaterialId, Nodes};
+use crate::model::bodies::{Bodies, BodyMode, DOFS, Gram, NO_BODY, polygon_moments, velocity_map};
+use crate::model::{BODY, FIX_X, FIX_Y, MaterialId, Nodes};
 use crate::scene::{BlockMode, Scene};
 
 /// The rigid and simple blocks of `modes` as bodies of their block's `material`: centroid, area
@@ -37,12 +37,19 @@ pub fn bodies(
             (nodes.pos[p as usize], nodes.pos[q as usize])
         }));
         let c = m.centroid;
-        let (mut radius, mut fixed) = (0.0f64, 0u8);
+        let (mut radius, mut gram): (f64, Gram) = (0.0, [[0.0; DOFS]; DOFS]);
         for n in range[0] as usize..range[1] as usize {
             let p = nodes.pos[n];
             radius = radius.max((p[0] - c[0]).hypot(p[1] - c[1]));
-            if nodes.fixed[n] != 0 {
-                fixed |= nodes.fixed[n] | FIX_SPIN;
+            let t = velocity_map([p[0] - c[0], p[1] - c[1]]);
+            for (d, flag) in [FIX_X, FIX_Y].into_iter().enumerate() {
+                if nodes.fixed[n] & flag != 0 {
+                    for i in 0..DOFS {
+                        for j in 0..DOFS {
+                            gram[i][j] += t[d][i] * t[d][j];
+                        }
+                    }
+                }
             }
             nodes.fixed[n] |= BODY;
             out.of_node[n] = k;
@@ -66,7 +73,8 @@ pub fn bodies(
         });
         out.state.push(0);
         out.plastic.push(0.0);
-        out.fixed.push(fixed);
+        out.constraint.push(gram);
+        out.projector.push(None);
         out.step.push((c, c, [1.0, 0.0, 0.0, 1.0]));
     }
     out

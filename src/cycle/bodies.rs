@@ -6,8 +6,8 @@ use rayon::prelude::*;
 
 use super::{Cycle, CycleParams};
 use crate::law::StrainIncrement;
-use crate::model::bodies::{BodyMode, DOFS, FIX_SPIN, NO_BODY, velocity_map};
-use crate::model::{FIX_X, FIX_Y, Model, Stress};
+use crate::model::bodies::{BodyMode, DOFS, NO_BODY, apply, velocity_map};
+use crate::model::{Model, Stress};
 
 /// σ' = R σ Rᵀ for an in-plane rotation by `angle` (rad): the stress of a simple block turns with it.
 pub(super) fn rotate(s: &mut Stress, angle: f64) {
@@ -39,13 +39,13 @@ impl Cycle {
         } = model;
         let (alpha, dt) = (p.damping, p.dt);
         let (pos, disp, force) = (&nodes.pos, &nodes.disp, &nodes.force);
-        let (mode, range, mass, weight, material, fixed) = (
+        let (mode, range, mass, weight, material, projector) = (
             &bodies.mode,
             &bodies.nodes,
             &bodies.mass,
             &bodies.weight,
             &bodies.material,
-            &bodies.fixed,
+            &bodies.projector,
         );
         bodies
             .velocity
@@ -80,15 +80,23 @@ impl Cycle {
                     }
                     let dofs = mode[k].dofs();
                     q[dofs..].fill(0.0);
+                    // A constrained body keeps the force its constraint does not react to:
+                    // q ← M P M⁻¹ q, and its velocity stays in what the constraint allows.
+                    let m = &mass[k];
+                    if let Some(p) = &projector[k] {
+                        let a = apply(
+                            p,
+                            &std::array::from_fn(|d| if d < dofs { q[d] / m[d] } else { 0.0 }),
+                        );
+                        q = std::array::from_fn(|d| if d < dofs { a[d] * m[d] } else { 0.0 });
+                    }
                     for d in 0..dofs {
-                        let flag = [FIX_X, FIX_Y][..].get(d).copied().unwrap_or(FIX_SPIN);
-                        if fixed[k] & flag != 0 {
-                            q[d] = 0.0;
-                            continue;
-                        }
                         let damped =
                             q[d] - alpha * q[d].abs() * v[d].signum() * (v[d] != 0.0) as u8 as f64;
-                        v[d] += damped / mass[k][d] * dt;
+                        v[d] += damped / m[d] * dt;
+                    }
+                    if let Some(p) = &projector[k] {
+                        *v = apply(p, v);
                     }
                     *q_out = q;
                     let old = *c;

@@ -146,6 +146,26 @@ impl Cycle {
             });
     }
 
+    /// Total force on node `n`, N/m, from the last cycle: its applied load plus the zone, contact
+    /// and support forces gathered as the motion stage does, before fixities and damping. At a
+    /// fixed node its negative is the reaction of the support (a platen's load, for instance).
+    pub fn node_force(&self, model: &Model, n: usize) -> [f64; 2] {
+        let mut f = model.nodes.applied[n];
+        let sources = [
+            (&model.gather, &self.zone_force),
+            (&model.contact_gather, &self.contact_force),
+            (&model.support_gather, &self.support_force),
+        ];
+        for (gather, forces) in sources {
+            for &s in gather.of(n) {
+                let c = forces[s as usize];
+                f[0] += c[0];
+                f[1] += c[1];
+            }
+        }
+        f
+    }
+
     /// Motion stage: gather forces per node in a fixed order (deterministic on any thread count),
     /// add applied loads, apply local non-viscous damping F_d = F − α|F|sign(v) per component
     /// (Cundall 1987; UDEC's default), then the central-difference update

@@ -18,8 +18,9 @@ pub const DOFS: usize = 6;
 /// Generalised vector (velocity m/s, rad/s, 1/s; force N/m, N·m/m, N·m/m; mass kg/m, kg·m).
 pub type Dof = [f64; DOFS];
 
-/// Bit flag of `Bodies::fixed`: rotation and strain held (any node of the block fixed).
-pub const FIX_SPIN: u8 = 4;
+/// Constraint Gram matrix of a body: G = Σ tᵀ t over the rows t of the velocity map at its fixed
+/// node components (zero: free; identity: held still).
+pub type Gram = [[f64; DOFS]; DOFS];
 
 /// How a body moves.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -59,7 +60,7 @@ pub struct Bodies {
     pub velocity: Vec<Dof>,
     /// Diagonal generalised mass used by the integrator (scaled in static runs).
     pub mass: Vec<Dof>,
-    /// Last unbalanced generalised force (fixed DOFs zeroed).
+    /// Last unbalanced generalised force (the constraint's reaction removed).
     pub force: Vec<Dof>,
     /// Weight ρ A g, N/m.
     pub weight: Vec<[f64; 2]>,
@@ -74,8 +75,13 @@ pub struct Bodies {
     pub state: Vec<u8>,
     /// Accumulated plastic shear strain of a simple block (dimensionless).
     pub plastic: Vec<f64>,
-    /// `FIX_X`, `FIX_Y`, `FIX_SPIN` bit flags.
-    pub fixed: Vec<u8>,
+    /// What the boundary conditions on the block's nodes hold: the Gram matrix of their rows of
+    /// the velocity map (a roller on a simple block holds one velocity component along its wall,
+    /// not the block's strain).
+    pub constraint: Vec<Gram>,
+    /// The mass-orthogonal projector onto the velocities the constraint allows (set with the
+    /// masses by the solver), `None` for a free body.
+    pub projector: Vec<Option<Gram>>,
     /// This cycle's motion: old centroid, new centroid and the map r_new = A r_old
     /// (row-major 2×2), read by the node update.
     pub step: Vec<([f64; 2], [f64; 2], [f64; 4])>,
@@ -97,6 +103,43 @@ impl Bodies {
     pub fn is_empty(&self) -> bool {
         self.block.is_empty()
     }
+}
+
+/// The mass-orthogonal projector onto the velocities a constraint allows, over the first `dofs`
+/// DOFs: with N an orthonormal basis of the null space of G (eigenvalues below 1e-9 of the
+/// largest), P = N (Nᵀ M N)⁻¹ Nᵀ M. It keeps what the constraint allows (P N = N) and removes the
+/// reaction: P M⁻¹ Cᵀλ = 0, so the body is in equilibrium when its force is a reaction. `None`
+/// for a free body (G = 0).
+pub fn projector(g: &Gram, mass: &Dof, dofs: usize) -> Option<Gram> {
+    use nalgebra::{DMatrix, SymmetricEigen};
+    let gd = DMatrix::from_fn(dofs, dofs, |i, j| g[i][j]);
+    let eig = SymmetricEigen::new(gd);
+    let largest = eig.eigenvalues.iter().fold(0.0f64, |m, &v| m.max(v.abs()));
+    if largest == 0.0 {
+        return None;
+    }
+    let free: Vec<usize> = (0..dofs)
+        .filter(|&i| eig.eigenvalues[i].abs() <= 1e-9 * largest)
+        .collect();
+    let mut out = [[0.0; DOFS]; DOFS];
+    if free.is_empty() {
+        return Some(out);
+    }
+    let n = DMatrix::from_fn(dofs, free.len(), |i, j| eig.eigenvectors[(i, free[j])]);
+    let m = DMatrix::from_fn(dofs, dofs, |i, j| if i == j { mass[i] } else { 0.0 });
+    let reduced = (n.transpose() * &m * &n).try_inverse()?;
+    let p = &n * reduced * n.transpose() * m;
+    for (i, row) in out.iter_mut().enumerate().take(dofs) {
+        for (j, v) in row.iter_mut().enumerate().take(dofs) {
+            *v = p[(i, j)];
+        }
+    }
+    Some(out)
+}
+
+/// y = P x over all DOFs.
+pub fn apply(p: &Gram, x: &Dof) -> Dof {
+    std::array::from_fn(|i| (0..DOFS).map(|j| p[i][j] * x[j]).sum())
 }
 
 /// The velocity map T (2 × 6) at offset r from the centroid.

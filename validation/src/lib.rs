@@ -21,6 +21,7 @@ pub mod render;
 pub mod report;
 pub mod salencon;
 pub mod scaling;
+pub mod slivers;
 pub mod softening;
 pub mod stiff_joints;
 

@@ -744,9 +744,9 @@ fn main() -> anyhow::Result<()> {
          of the tolerance. Finding: rigid blocks carry the joint stress exactly; deformable blocks whose \
          zoning does not match across a joint get the right mean stress (0.2 %) but ±35 % along the \
          joint: node-to-edge contacts do not pass the contact patch test on non-matching meshes (a \
-         segment-to-segment contact would). Simple blocks touching a roller have their strain held (a fixed \
-         node holds a simple block's strain and spin), so only the free one carries the 1 MPa \
-         (`stress_mean` 1): a limitation to lift. With rigid and deformable blocks mixed the stress is not \
+         segment-to-segment contact would). Simple blocks on the rollers strain along them (a fixed node \
+         holds only the velocity component it names, projected onto the block's DOFs) and carry the \
+         1 MPa like the others. With rigid and deformable blocks mixed the stress is not \
          uniform (rigid blocks do not strain), so only overlap and convergence count there.\n"
     );
     table(&mut md, &corner_cases);
