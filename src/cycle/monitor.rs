@@ -201,11 +201,14 @@ impl Cycle {
     }
 }
 
-/// The first contact whose overlap exceeds half the joint length it stands for (the node has gone
-/// through the opposite block), named with its node and block.
+/// The first contact whose overlap exceeds the joint length it stands for or the contact tolerance,
+/// whichever is larger (the node has gone through the opposite block; a vertex between two very
+/// short edges stands for a tiny length but may press in as deep as a contact can start),
+/// named with its node and block.
 fn interpenetration(model: &Model) -> Option<String> {
     let c = &model.contacts;
-    (0..c.len()).find(|&k| -c.state[k].normal_displacement > c.length[k]).map(|k| {
+    let tolerance = model.contact_tolerance;
+    (0..c.len()).find(|&k| -c.state[k].normal_displacement > c.length[k].max(tolerance)).map(|k| {
         let p = model.nodes.pos[c.node[k] as usize];
         format!(
             "interpenetration at contact {k}: node {} (block {}, at ({:.4}, {:.4})) is {:.3e} m inside block {}, \
@@ -216,7 +219,7 @@ fn interpenetration(model: &Model) -> Option<String> {
             p[1],
             -c.state[k].normal_displacement,
             c.block[k],
-            c.length[k]
+            c.length[k].max(tolerance)
         )
     })
 }

@@ -5,6 +5,7 @@ pub mod corners;
 pub mod direct_shear;
 pub mod drop;
 pub mod glued;
+pub mod grains;
 pub mod gravity;
 pub mod impact;
 pub mod incline;
