@@ -19,13 +19,12 @@
 use std::time::Instant;
 
 use adit::Scene;
-use adit::build::{add_tractions, build};
-use adit::model::traction;
+use adit::build::build;
 use adit::scene::{Circle, Inclusion as InclusionSpec, Material};
 use adit::solve::{Quiet, Solver, Status};
-use adit_meshing::EdgeKind;
 use serde::Serialize;
 
+use crate::kirsch_case::load_outer_exactly;
 use crate::report::{CaseReport, StepInfo};
 
 /// Plane-strain elastic constants of one material.
@@ -189,17 +188,7 @@ pub fn run(scene: &Scene, case: &str) -> anyhow::Result<InclusionResult> {
     s.in_situ = Default::default();
     let start = Instant::now();
     let mut built = build(&s)?;
-    for &n in &built.part_nodes["outer"] {
-        built.model.nodes.applied[n as usize] = [0.0; 2];
-    }
-    let edges = built
-        .boundary
-        .iter()
-        .filter(|e| matches!(e.kind, EdgeKind::Region(_)));
-    add_tractions(&mut built.model.nodes, edges, |p, n| {
-        let [sxx, syy, sxy] = exact.stress(p[0], p[1]);
-        traction(&[sxx, syy, 0.0, sxy], n)
-    });
+    load_outer_exactly(&mut built, |x, y| exact.stress(x, y));
     let mut solver = Solver::new(&mut built.model, &s.solve, 0);
     let solution = solver.solve(&mut built.model, &mut Quiet);
     let wall_s = start.elapsed().as_secs_f64();

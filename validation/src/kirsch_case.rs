@@ -4,7 +4,7 @@
 use std::time::Instant;
 
 use adit::Scene;
-use adit::build::{add_tractions, build};
+use adit::build::{Built, add_tractions, build};
 use adit::model::traction;
 use adit::solve::{Quiet, Solver, Status};
 use adit_meshing::EdgeKind;
@@ -99,24 +99,29 @@ pub enum OuterLoad {
     Exact,
 }
 
+/// Replace the loads on the region's outer boundary by the traction σ(p)·n of an exact stress field
+/// [σxx, σyy, σxy] (Pa): the discrete problem's exact solution is then the field itself.
+pub fn load_outer_exactly(built: &mut Built, stress: impl Fn(f64, f64) -> [f64; 3]) {
+    for &n in &built.part_nodes["outer"] {
+        built.model.nodes.applied[n as usize] = [0.0; 2];
+    }
+    let edges = built
+        .boundary
+        .iter()
+        .filter(|e| matches!(e.kind, EdgeKind::Region(_)));
+    add_tractions(&mut built.model.nodes, edges, |p, n| {
+        let [sxx, syy, sxy] = stress(p[0], p[1]);
+        traction(&[sxx, syy, 0.0, sxy], n)
+    });
+}
+
 /// Run the scene to equilibrium and measure its errors.
 pub fn run(scene: &Scene, case: &str, load: OuterLoad) -> anyhow::Result<KirschResult> {
     let exact = closed_form(scene)?;
     let start = Instant::now();
     let mut built = build(scene)?;
     if load == OuterLoad::Exact {
-        let outer = &built.part_nodes["outer"];
-        for &n in outer {
-            built.model.nodes.applied[n as usize] = [0.0; 2];
-        }
-        let edges = built
-            .boundary
-            .iter()
-            .filter(|e| matches!(e.kind, EdgeKind::Region(_)));
-        add_tractions(&mut built.model.nodes, edges, |p, n| {
-            let [sxx, syy, sxy] = exact.stress(p[0], p[1]);
-            traction(&[sxx, syy, 0.0, sxy], n)
-        });
+        load_outer_exactly(&mut built, |x, y| exact.stress(x, y));
     }
     let mut solver = Solver::new(&mut built.model, &scene.solve, 0);
     let solution = solver.solve(&mut built.model, &mut Quiet);
