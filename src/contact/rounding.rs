@@ -22,7 +22,7 @@ fn edge_directions(
     let dir = |e: u32| {
         let [a, b] = blocks.edges[e as usize].map(x);
         let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
-        let l = dx.hypot(dy);
+        let l = (dx * dx + dy * dy).sqrt();
         [dx / l, dy / l]
     };
     Some((dir(inc), dir(out)))

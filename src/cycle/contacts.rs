@@ -79,7 +79,7 @@ impl Cycle {
                     let ci = rounding::centre(blocks, &x, i, blocks.round_of(i));
                     let cj = rounding::centre(blocks, &x, j, blocks.round_of(j));
                     let (dx, dy) = (ci[0] - cj[0], ci[1] - cj[1]);
-                    let l = dx.hypot(dy);
+                    let l = (dx * dx + dy * dy).sqrt();
                     [dx / l, dy / l]
                 } else {
                     let (pj, pk) = (x(j), x(k));

@@ -4,6 +4,7 @@
 pub mod blocks;
 pub mod bodies;
 pub mod nodes;
+mod velocity;
 pub mod zones;
 
 pub use nodes::{BODY, FIX_X, FIX_Y, Nodes};

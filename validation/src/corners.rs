@@ -49,7 +49,7 @@ pub fn run(modes: [&str; 2]) -> anyhow::Result<CaseReport> {
     let (solver, cycles) = crate::settle(&mut b.model, &sc.solve, "corner-to-corner blocks")?;
     let m = &b.model;
     let p = 1e6;
-    let stress = crate::uniform_stress_error(m, [-p, -p, 0.0], p);
+    let stress = crate::uniform_stress_error(&m.zones.stress, [-p, -p, 0.0], p);
     // Each deformable block's area-weighted mean stress against the uniform one.
     let z = &m.zones;
     let stress_mean = (0..m.blocks.len())

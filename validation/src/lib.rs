@@ -18,13 +18,16 @@ pub mod modes;
 pub mod patch;
 pub mod plot;
 pub mod pullout;
+pub mod random_scenes;
 pub mod render;
 pub mod report;
+pub mod rotation;
 pub mod salencon;
 pub mod scaling;
 pub mod slivers;
 pub mod softening;
 pub mod stiff_joints;
+pub mod unstable;
 
 use std::path::PathBuf;
 
@@ -69,12 +72,10 @@ pub fn mean_radial_displacement(model: &Model, nodes: &[u32]) -> f64 {
         / nodes.len() as f64
 }
 
-/// Largest deviation of a zone's in-plane stress from the uniform `target` [σxx, σyy, σxy] (Pa),
-/// component by component, over `scale` (Pa).
-pub fn uniform_stress_error(model: &Model, target: [f64; 3], scale: f64) -> f64 {
-    model
-        .zones
-        .stress
+/// Largest deviation of a zone's in-plane stress (`stresses`, Pa) from the uniform `target`
+/// [σxx, σyy, σxy] (Pa), component by component, over `scale` (Pa).
+pub fn uniform_stress_error(stresses: &[adit::model::Stress], target: [f64; 3], scale: f64) -> f64 {
+    stresses
         .iter()
         .map(|s| {
             let d = [s[0] - target[0], s[1] - target[1], s[3] - target[2]];

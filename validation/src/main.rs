@@ -10,8 +10,8 @@ use adit_validation::plot::{Curve, Series, curves, speed_and_convergence};
 use adit_validation::report::{CaseReport, StepInfo, fitted_order, observed_order};
 use adit_validation::{
     corners, direct_shear, drop, glued, grains, gravity, impact, incline, inclusion,
-    incompressible, lined, modes, patch, pullout, salencon, scaling, slivers, softening,
-    stiff_joints,
+    incompressible, lined, modes, patch, pullout, random_scenes, rotation, salencon, scaling,
+    slivers, softening, stiff_joints, unstable,
 };
 use plotters::style::RGBColor;
 
@@ -20,6 +20,8 @@ const LEVELS: [f64; 4] = [4.0, 2.0, 1.0, 0.6];
 /// Unbalanced-force ratio for the convergence levels: tight enough that solver error is far below
 /// discretisation error at the finest level.
 const STUDY_RATIO: f64 = 1e-8;
+/// Random scenes in the report's sweep (64 in `cargo test`).
+const RANDOM_SCENES: usize = 1000;
 
 fn print_row(r: &CaseReport) {
     let errors: Vec<String> = r
@@ -301,13 +303,37 @@ fn main() -> anyhow::Result<()> {
         slivers::run_tiny("deformable")?,
         slivers::run_tiny("rigid")?,
     ];
-    // 10 × 20 grains quasi-statically (servo) and at 5e-7 strain per cycle, then ~10 000 grains
-    // at the same strain rate.
+    // The 1 m × 2 m specimen in 10 × 20 grains servo-controlled and at three platen rates, then
+    // in 71 × 142 grains (about 10 000) at the middle rate.
+    let loading = |strain_per_cycle: f64, servo: Option<f64>| grains::Loading {
+        strain_per_cycle,
+        servo,
+        residual: 0.8,
+        max_strain: 0.02,
+    };
     let grain_cases: Vec<grains::GrainsResult> = vec![
-        grains::run(10, 0.1, 1e-5, Some(1e-2), 0.8, 0.02)?,
-        grains::run(10, 0.1, 1e-6, None, 0.8, 0.02)?,
-        grains::run(71, 0.05, 3.55e-6, None, 0.8, 0.012)?,
+        grains::run(10, 0.1, &loading(5e-6, Some(1e-2)))?,
+        grains::run(10, 0.1, &loading(2.5e-8, None))?,
+        grains::run(10, 0.1, &loading(1e-7, None))?,
+        grains::run(10, 0.1, &loading(5e-7, None))?,
+        grains::run(71, 1.0 / 71.0, &loading(1e-7, None))?,
     ];
+    let rotation_cases: Vec<CaseReport> = vec![
+        rotation::spin(true, 3.0)?.report(),
+        rotation::spin(false, 0.25)?.report(),
+        rotation::turned(true)?.report(),
+        rotation::turned(false)?.report(),
+    ];
+    let random_sweep = random_scenes::sweep(RANDOM_SCENES, 7)?.report();
+    let forced_cases: Vec<CaseReport> =
+        vec![unstable::run(3.0)?.report(), unstable::run(1.0)?.report()];
+    for r in rotation_cases
+        .iter()
+        .chain([&random_sweep])
+        .chain(&forced_cases)
+    {
+        print_row(r);
+    }
     for r in &kirsch_nu {
         print_row(&r.report());
     }
@@ -442,6 +468,9 @@ fn main() -> anyhow::Result<()> {
             .map(softening::SofteningResult::report),
     );
     all.extend(stiff_cases.iter().cloned());
+    all.extend(rotation_cases.iter().cloned());
+    all.push(random_sweep.clone());
+    all.extend(forced_cases.iter().cloned());
     let out = root.join("target/validation");
     std::fs::create_dir_all(&out)?;
     std::fs::write(out.join("report.json"), serde_json::to_string_pretty(&all)?)?;
@@ -809,18 +838,30 @@ fn main() -> anyhow::Result<()> {
     let _ = writeln!(md, "\n## Stability: many blocks (issue 5)\n");
     let _ = writeln!(
         md,
-        "A specimen W × 2W of Voronoi grains bonded by Coulomb grain boundaries (kn = 1e12, ks = 5e11 Pa/m, \
-         φ = 30°, c = 4 MPa, T = 2 MPa, lost on failure), rigid except within two grains of the platens \
-         (deformable, so the platens drive their nodes), under σ3 = 1 MPa, compressed by a smooth platen to \
-         failure; σ1 is the platen's reaction over W (no closed form). In mass-scaled relaxation the \
-         platen's speed per cycle matters: the coarse specimen peaks at {:.0} MPa when servo-controlled \
-         (quasi-static) and at {:.0} MPa at 5e-7 axial strain per cycle. The 10 000-grain specimen at that \
-         rate stays stable to the end (no NaN, runaway or overlap stop, while most of its bonds break) but \
-         its stress is still rising, inertia-dominated: loading it quasi-statically to failure would take \
-         about ten times its cycles (the contact stage costs about 36 ns per contact-cycle on 2 threads), \
-         so its strength is not reported as a peak.\n",
+        "A 1 m × 2 m specimen of Voronoi grains bonded by Coulomb grain boundaries (kn = 1e12, \
+         ks = 5e11 Pa/m, φ = 30°, c = 4 MPa, T = 2 MPa, lost on failure), rigid except within two grains \
+         of the platens (deformable, so the platens drive their nodes), under σ3 = 1 MPa, compressed by a \
+         smooth platen to failure, every grain started on the platens' affine velocity field; σ1 is the \
+         platen's reaction over the width (no closed form; `validation/src/grains.rs`). In mass-scaled \
+         relaxation the platen's speed per cycle matters: the grains' inertial number stays below 1e-5, \
+         but a failing bond sheds its load over tens of cycles, so a fast platen loads the specimen past \
+         bonds that have not yet broken. The 242-grain specimen peaks at {:.1} MPa servo-controlled and \
+         {:.1}, {:.1} and {:.1} MPa at 2.5e-8, 1e-7 and 5e-7 axial strain per cycle. The {}-grain \
+         specimen, loaded at 1e-7 per cycle (a rate that puts the coarse peak {:.0} % above its \
+         quasi-static value), reaches {:.1} MPa at ε = {:.2e} and ends at {:.1} MPa (ε = {:.2e}), stable \
+         throughout: no NaN, runaway or overlap stop while most of its bonds break. Loading it at \
+         2.5e-8 would take four times its {} cycles.\n",
         grain_cases[0].peak / 1e6,
-        grain_cases[1].peak / 1e6
+        grain_cases[1].peak / 1e6,
+        grain_cases[2].peak / 1e6,
+        grain_cases[3].peak / 1e6,
+        grain_cases[4].grains,
+        100.0 * (grain_cases[2].peak / grain_cases[1].peak - 1.0),
+        grain_cases[4].peak / 1e6,
+        grain_cases[4].peak_strain,
+        grain_cases[4].end / 1e6,
+        grain_cases[4].end_strain,
+        grain_cases[4].cycles
     );
     table(
         &mut md,
@@ -828,6 +869,34 @@ fn main() -> anyhow::Result<()> {
             .iter()
             .map(grains::GrainsResult::report)
             .collect::<Vec<_>>(),
+    );
+    let grain_curves: Vec<Curve> = grain_cases[1..]
+        .iter()
+        .zip([
+            RGBColor(31, 119, 180),
+            RGBColor(44, 160, 44),
+            RGBColor(255, 127, 14),
+            RGBColor(214, 39, 40),
+        ])
+        .map(|(r, color)| Curve {
+            label: format!(
+                "{} grains, {:.1e} per cycle",
+                r.grains, r.loading.strain_per_cycle
+            ),
+            points: r.curve.iter().map(|&(e, s)| (100.0 * e, s / 1e6)).collect(),
+            color,
+            dots: false,
+        })
+        .collect();
+    curves(
+        &root.join("docs/img/grains.png"),
+        "Voronoi grains, biaxial: axial stress against axial strain",
+        ("axial strain (%)", "σ1 (MPa)"),
+        &grain_curves,
+    )?;
+    let _ = writeln!(
+        md,
+        "\n![axial stress against strain, coarse and 10 000 grains](img/grains.png)\n"
     );
     let _ = writeln!(md, "\n## Stability: strain softening (issue 5)\n");
     let _ = writeln!(
@@ -870,14 +939,43 @@ fn main() -> anyhow::Result<()> {
         md,
         "\n![axial stress against strain at two zone sizes](img/softening.png)\n"
     );
+    let _ = writeln!(md, "\n## Stability: large rotation (issue 5)\n");
     let _ = writeln!(
         md,
-        "\nOther safeguards of issue 5 tested so far (no closed form): a static solve forced to 3× its stable \
-         step stops within 10 cycles naming the node (`tests/stability.rs`); with `solve.large_strain` a \
-         deformable block spinning freely for three turns carries only its centripetal stress and a block \
-         prestressed by 1 kPa and turned by 90° carries it in its own frame to 1 Pa, where small-strain zones \
-         give MPa of spurious stress (`tests/rotation.rs`).\n"
+        "A 1 m square of soft rock (E = 1 MPa, ρ = 1000 kg/m³, zones of 0.2 m), dynamic and undamped, \
+         started spinning at 1 rad/s: it should carry only its centripetal stress, below 2ρω²r² = 1 kPa \
+         (a thousandth of E), and keep its shape. The same block prestressed by σxx = −1 kPa and turned \
+         by 90° in 400 steps should carry σyy = −1 kPa, σxx = σxy = 0; `stress` is the largest departure \
+         over 1 kPa (`validation/src/rotation.rs`). Small-strain zones fail both, as they must: they read \
+         the spin as no strain (the nodes fly off along their tangents) and the quarter turn as a \
+         compressive strain of 1.\n"
     );
+    table(&mut md, &rotation_cases);
+    let _ = writeln!(md, "\n## Stability: random scenes (issue 5)\n");
+    let _ = writeln!(
+        md,
+        "Boxes 2–4 m wide cut by one or two joint sets at random dips (the second at least 3° from \
+         the first) and spacings of 0.5–1.5 m, kn = 1e10–1e12 Pa/m, φ = 10–45°, blocks deformable, \
+         simple or rigid, base fixed, sides on rollers, up to 2 MPa on top, with or without gravity, \
+         3000 cycles at most (`validation/src/random_scenes.rs`, proptest strategies from a fixed \
+         seed; `cargo test` runs 64 of them as a shrinking property). Every run must end converged, \
+         at its cycle limit, or stopped as a mechanism by the runaway check, never with NaN, an \
+         unstable step or interpenetration; every overlap stays within its contact length, and a \
+         stopped run writes no zone grid. The step column gives the tightest critical step met.\n"
+    );
+    table(&mut md, std::slice::from_ref(&random_sweep));
+    let _ = writeln!(
+        md,
+        "\n## Stability: a run made unstable on purpose (issue 5)\n"
+    );
+    let _ = writeln!(
+        md,
+        "The Kirsch model with zones three times the shipped size, solved statically with its step \
+         forced to 3× the stable one, and at its derived step (`validation/src/unstable.rs`): the \
+         forced run stops within a few cycles naming the node and the cause; a stopped scene run \
+         writes its summary with status `failed` and no zone grid.\n"
+    );
+    table(&mut md, &forced_cases);
     let _ = writeln!(md, "\n## Jointed rock: glued joints\n");
     let _ = writeln!(
         md,

@@ -43,7 +43,7 @@ pub fn run(ratio: f64, law: &str) -> anyhow::Result<CaseReport> {
     let (solver, cycles) = crate::settle(&mut b.model, &sc.solve, "stiff joints")?;
     let m = &b.model;
     let p = 1e6;
-    let stress = crate::uniform_stress_error(m, [0.0, -p, 0.0], p);
+    let stress = crate::uniform_stress_error(&m.zones.stress, [0.0, -p, 0.0], p);
     let top = &b.part_nodes["top"];
     let settle = -top
         .iter()
