@@ -8,8 +8,8 @@
 //! (starting from a hydrostatic 1 MPa), the base on rollers, the top a smooth platen driven down at
 //! a constant rate (or servo-controlled to keep the unbalanced-force ratio near a target: slower,
 //! quasi-static). In mass-scaled relaxation the platen's rate per cycle is not free: the grains'
-//! inertial number stays below 1e-5, but a failing bond sheds its load over tens of cycles, so a
-//! fast platen loads the specimen past bonds that have not yet broken and raises the peak (the
+//! inertial number (scaled masses) is at most a few 1e-5, yet the peak falls as the platen slows,
+//! most likely because failure spreads from bond to bond over cycles and a fast platen outruns it (the
 //! 242-grain twin: about 118 MPa at 5e-7 axial strain per cycle, 74 MPa at 1e-7, 65 MPa at 2.5e-8
 //! and servo-controlled). The grains are rigid (3 DOF each), except those within 2g of the platens, which
 //! are deformable so that the platens can drive their nodes. The axial stress is the platen's
