@@ -173,6 +173,7 @@ pub fn cut_blocks_filled(
             });
         }
     }
+    let walls = segs.len();
     segs.extend(joints.iter().filter(|s| distance(s.a, s.b) > tol).copied());
 
     // Split every segment at every meeting point; deduplicate edges, boundary kinds first.
@@ -181,6 +182,12 @@ pub fn cut_blocks_filled(
         grid: HashMap::new(),
         tol,
     };
+    // The region's and excavations' corners go in first, so that a crossing within the tolerance
+    // of a corner merges into it and never the corner into the crossing (which would tilt the
+    // wall and could leave a block outside the region).
+    for s in &segs[..walls] {
+        pool.insert(s.a);
+    }
     let mut edges: HashMap<(u32, u32), EdgeKind> = HashMap::new();
     let mut params = Vec::new();
     for (i, s) in segs.iter().enumerate() {
@@ -663,6 +670,31 @@ mod tests {
                 .iter()
                 .all(|k| k.outer.self_intersection().is_none())
         );
+    }
+
+    #[test]
+    fn region_corners_stay_put_when_a_joint_crosses_within_the_tolerance() {
+        // The joint crosses the top and bottom edges 0.5 tol from the corners (0, 10) and (0, 0):
+        // the crossings merge into the corners, never the corners into the crossings (which
+        // would tilt the left edge and leave a block outside the region).
+        let d = square(10.0);
+        let joints = vec![Segment {
+            a: [0.05, -1.0],
+            b: [0.05, 11.0],
+            kind: EdgeKind::Joint(0),
+        }];
+        let b = cut_blocks(&d, &joints, 0.1).unwrap();
+        assert_relative_eq!(total_area(&b), 100.0, max_relative = 1e-12);
+        for k in &b.blocks {
+            assert!(k.within(&d.outer, 1e-12), "a block leaves the region");
+        }
+        let corners = [[0.0, 0.0], [10.0, 0.0], [10.0, 10.0], [0.0, 10.0]];
+        for c in corners {
+            assert!(
+                b.blocks.iter().any(|k| k.outer.vertices.contains(&c)),
+                "corner {c:?} moved"
+            );
+        }
     }
 
     #[test]

@@ -173,7 +173,7 @@ fn mesh_blocks(scene: &Scene) -> Result<Meshed, MeshError> {
         .collect();
     // Vertices closer than 0.3 of the finest zone merge, so joints cut no sliver edges; with
     // Voronoi grains, never more than 2 % of the grain size, whose many short edges would
-    // otherwise collapse (merging can move the region's boundary: see the session notes).
+    // otherwise collapse (walls keep their corners: `cut_blocks_filled`).
     let grain = scene.voronoi.as_ref().map_or(f64::INFINITY, |v| v.size);
     let tol = (0.3 * zoning.h_excavation).min(0.02 * grain);
     let blocking = if joints.is_empty() && !filled.contains(&true) {
