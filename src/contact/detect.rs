@@ -136,6 +136,7 @@ fn node_to_edge(d: &Detection, a: usize, b: usize) -> Vec<Found> {
         let at = |v: u32| d.x[v as usize];
         let c = rounding::centre(d.blocks, &at, n, r);
         let own = edge_normals_at(d, n);
+        let mut depth = None;
         // Nearest edge; among equally near ones (a node at a corner of B), the one facing the node.
         let mut best: Option<(f64, f64, Found)> = None;
         for eb in d.blocks.edge_range(b) {
@@ -153,6 +154,16 @@ fn node_to_edge(d: &Detection, a: usize, b: usize) -> Vec<Found> {
             let gap = (c[0] - q[0]) * normal[0] + (c[1] - q[1]) * normal[1] - r;
             if gap > tol || gap < -0.5 * len {
                 continue;
+            }
+            // Deeper than the tolerance behind the edge's line is an overlap only if the node is
+            // inside b, and no deeper than b's boundary is near (within the tolerance): a node
+            // beside a narrow block, behind the line of its far edge, is not in it, and a node
+            // just inside a corner of b is not deep behind the line of the corner's far edge.
+            if gap < -tol {
+                let depth = *depth.get_or_insert_with(|| depth_in_block(d, b, p));
+                if depth.is_none_or(|depth| -gap > depth + tol) {
+                    continue;
+                }
             }
             let dist = gap.abs();
             // One of the node's edges must face the edge: a node of a flat surface beside the end of
@@ -254,6 +265,23 @@ fn contact_length(d: &Detection, node: u32, edge: u32, b: usize) -> (f64, bool) 
     } else {
         (0.5 * 0.25 * shortest, false)
     }
+}
+
+/// How deep `p` lies inside block `b`, m (its distance to b's boundary), or `None` if it lies
+/// outside (crossing number over all of b's boundary rings).
+fn depth_in_block(d: &Detection, b: usize, p: [f64; 2]) -> Option<f64> {
+    let inside = d.blocks.edge_range(b).fold(false, |inside, e| {
+        let [a, c] = d.blocks.edges[e].map(|n| d.x[n as usize]);
+        let crosses = (a[1] > p[1]) != (c[1] > p[1])
+            && p[0] < a[0] + (p[1] - a[1]) * (c[0] - a[0]) / (c[1] - a[1]);
+        inside != crosses
+    });
+    inside.then(|| {
+        d.blocks
+            .edge_range(b)
+            .map(|e| distance_to_edge(d, p, e as u32))
+            .fold(f64::INFINITY, f64::min)
+    })
 }
 
 /// Distance from `p` to boundary edge `e`, m.
@@ -462,6 +490,72 @@ mod tests {
         });
         let again = detect(&d, &first, &|_: &Touch| JointState::default());
         assert!(again.state.iter().all(|s| s.shear == 7.0));
+    }
+
+    /// A square beside a narrow diagonal block, inside its bounding box and behind the line of its
+    /// far edge (within half that edge's length), with its corners facing that edge: no contact.
+    #[test]
+    fn a_node_behind_the_far_edge_of_a_narrow_block_is_not_inside_it() {
+        let x = vec![
+            [0.0, 0.0],
+            [4.0, 4.0],
+            [3.6, 4.4],
+            [-0.4, 0.4],
+            [1.0, 3.0],
+            [1.0, 2.8],
+            [1.2, 2.8],
+            [1.2, 3.0],
+        ];
+        let edges = vec![
+            [0, 1],
+            [1, 2],
+            [2, 3],
+            [3, 0],
+            [4, 5],
+            [5, 6],
+            [6, 7],
+            [7, 4],
+        ];
+        let mut node_edges = vec![[NO_EDGE; 2]; 8];
+        for (e, &[a, b]) in edges.iter().enumerate() {
+            node_edges[a as usize][1] = e as u32;
+            node_edges[b as usize][0] = e as u32;
+        }
+        let blocks = Blocks {
+            node_start: vec![0, 4, 8],
+            zone_start: vec![0, 2, 4],
+            edge_start: vec![0, 4, 8],
+            edges,
+            edge_kind: vec![EdgeKind::Joint(0); 8],
+            node_edges,
+            round: vec![],
+            removed: vec![],
+        };
+        let c = detect(&at(&blocks, &x), &Contacts::default(), &|_: &Touch| {
+            JointState::default()
+        });
+        assert!(c.is_empty(), "{c:?}");
+        // Pressed 2 mm (beyond the 1 mm tolerance) into the narrow block, its nearest corner is inside.
+        let mut pressed = x.clone();
+        for p in &mut pressed[4..] {
+            let push = 0.4 + 2e-3 * std::f64::consts::FRAC_1_SQRT_2;
+            p[0] += push;
+            p[1] -= push;
+        }
+        let c = detect(
+            &at(&blocks, &pressed),
+            &Contacts::default(),
+            &|t: &Touch| JointState {
+                normal_displacement: t.gap,
+                ..Default::default()
+            },
+        );
+        let k = c.node.iter().position(|&n| n == 6).expect("node 6 inside");
+        assert_eq!(c.edge[k], 2);
+        assert!(
+            (c.state[k].normal_displacement + 2e-3).abs() < 1e-9,
+            "{c:?}"
+        );
     }
 
     /// Two rigid squares meeting corner to corner (the second moved diagonally by s from sharing
