@@ -7,10 +7,13 @@ use crate::error::MeshError;
 use crate::geometry::Point;
 use crate::joints::{EdgeKind, Segment, SplitMix};
 
+/// Voronoi edges shorter than this many grain sizes collapse into a vertex.
+pub const SHORTEST_EDGE: f64 = 0.1;
+
 /// Voronoi edges over the box `lo`–`hi` (m) for grains of about `size` (m): one seed per cell of a
 /// `size` grid, jittered by up to ±0.45 `size` (seeded, reproducible), over the box grown by two
-/// cells so that every cell meeting the box is closed. Edges wholly outside the grown box are
-/// dropped; the region cut clips the rest.
+/// cells so that every cell meeting the box is closed, edges shorter than `SHORTEST_EDGE` grain
+/// sizes collapsed. Edges wholly outside the grown box are dropped; the region cut clips the rest.
 pub fn voronoi_segments(
     lo: Point,
     hi: Point,
@@ -51,18 +54,58 @@ pub fn voronoi_segments(
             && p.y >= lo[1] - margin
             && p.y <= hi[1] + margin
     };
-    let mut out = Vec::new();
+    // Voronoi vertices are the circumcentres of the Delaunay faces. Those joined by an edge shorter
+    // than `SHORTEST_EDGE` grain sizes merge into their mean (union–find over faces): a grain
+    // vertex between two very short edges would stand for a tiny contact length and press deep into
+    // its neighbour.
+    let faces = dt.num_all_faces();
+    let mut parent: Vec<usize> = (0..faces).collect();
+    fn root(parent: &mut [usize], mut f: usize) -> usize {
+        while parent[f] != f {
+            parent[f] = parent[parent[f]];
+            f = parent[f];
+        }
+        f
+    }
+    let mut edges = Vec::new();
     for edge in dt.undirected_voronoi_edges() {
         let [a, b] = edge.vertices();
-        if let (Some(a), Some(b)) = (a.position(), b.position())
-            && (inside(a) || inside(b))
-        {
-            out.push(Segment {
-                a: [a.x, a.y],
-                b: [b.x, b.y],
-                kind,
-            });
+        if let (Some(fa), Some(fb)) = (a.as_delaunay_face(), b.as_delaunay_face()) {
+            let (pa, pb) = (fa.circumcenter(), fb.circumcenter());
+            if !(inside(pa) || inside(pb)) {
+                continue;
+            }
+            let (ia, ib) = (fa.fix().index(), fb.fix().index());
+            if (pa.x - pb.x).hypot(pa.y - pb.y) < SHORTEST_EDGE * size {
+                let (ra, rb) = (root(&mut parent, ia), root(&mut parent, ib));
+                parent[ra.max(rb)] = ra.min(rb);
+            } else {
+                edges.push((ia, ib));
+            }
         }
+    }
+    let mut sum = vec![[0.0f64; 3]; faces];
+    for face in dt.inner_faces() {
+        let i = face.fix().index();
+        let c = face.circumcenter();
+        let r = root(&mut parent, i);
+        sum[r][0] += c.x;
+        sum[r][1] += c.y;
+        sum[r][2] += 1.0;
+    }
+    let mut seen = std::collections::HashSet::new();
+    let mut out = Vec::new();
+    for (ia, ib) in edges {
+        let (ra, rb) = (root(&mut parent, ia), root(&mut parent, ib));
+        if ra == rb || !seen.insert((ra.min(rb), ra.max(rb))) {
+            continue;
+        }
+        let at = |r: usize| [sum[r][0] / sum[r][2], sum[r][1] / sum[r][2]];
+        out.push(Segment {
+            a: at(ra),
+            b: at(rb),
+            kind,
+        });
     }
     Ok(out)
 }
@@ -80,6 +123,11 @@ mod tests {
         let outer = Polygon::new(vec![[0.0, 0.0], [10.0, 0.0], [10.0, 10.0], [0.0, 10.0]]);
         let d = Domain::new(outer, (0..4).map(|i| format!("e{i}")).collect(), vec![]).unwrap();
         let segs = voronoi_segments([0.0, 0.0], [10.0, 10.0], 1.0, 7, EdgeKind::Joint(0)).unwrap();
+        assert!(
+            segs.iter()
+                .all(|s| (s.b[0] - s.a[0]).hypot(s.b[1] - s.a[1]) >= SHORTEST_EDGE),
+            "a short edge survived"
+        );
         let b = cut_blocks(&d, &segs, 1e-6).unwrap();
         // About one grain per m², plus the cut cells along the boundary.
         assert!(

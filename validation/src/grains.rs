@@ -1,20 +1,20 @@
 //! Many blocks (issue 5, case 8): a specimen of Voronoi grains bonded by Coulomb grain boundaries
 //! (cohesion and tensile strength lost once they fail), compressed biaxially to failure.
 //!
-//! Specimen W × 2W of grains of mean size g (one jittered seed per g × g cell), E = 30 GPa, grain
-//! boundaries kn = 1e12, ks = 5e11 Pa/m, φ = 30°, c = 4 MPa, T = 2 MPa, contact tolerance 0.1 g (a
-//! grain vertex between two very short Voronoi edges stands for a tiny contact length and presses
-//! in as deep as the tolerance allows once the grains rotate); σ3 = 1 MPa on the sides
-//! (starting from a hydrostatic 1 MPa), the base on rollers, the top a smooth platen driven down at
-//! a constant rate (or servo-controlled to keep the unbalanced-force ratio near a target: slower,
-//! quasi-static). In mass-scaled relaxation the platen's rate per cycle is not free: the grains'
-//! inertial number (scaled masses) is at most a few 1e-5, yet the peak falls as the platen slows,
-//! most likely because failure spreads from bond to bond over cycles and a fast platen outruns it (the
-//! 242-grain twin: about 118 MPa at 5e-7 axial strain per cycle, 74 MPa at 1e-7, 65 MPa at 2.5e-8
-//! and servo-controlled). The grains are rigid (3 DOF each), except those within 2g of the platens, which
-//! are deformable so that the platens can drive their nodes. The axial stress is the platen's
-//! reaction over W (`Cycle::node_force` at its nodes). No closed form: the run must stay stable
-//! through the peak and the softening that follows, and it reports the peak strength.
+//! Specimen W × 2W of grains of mean size g (one jittered seed per g × g cell, Voronoi edges
+//! shorter than 0.1 g collapsed), E = 30 GPa, grain boundaries kn = 1e11 Pa / g (`GRAIN_KN_TIMES_SIZE`),
+//! ks = kn / 2, φ = 30°, c = 4 MPa, T = 2 MPa, contact tolerance 0.1 g (rigid grains in a force chain
+//! press their corners 2–3 % of g into their neighbours); σ3 = 1 MPa on the sides (starting from a
+//! hydrostatic 1 MPa), the base on rollers, the top a smooth platen driven down at a constant rate
+//! (or servo-controlled to keep the unbalanced-force ratio near a target: slower, quasi-static). In
+//! mass-scaled relaxation the platen's rate per cycle is not free: the grains' inertial number
+//! (scaled masses) is at most a few 1e-5, yet the peak falls as the platen slows, most likely
+//! because failure spreads from bond to bond over cycles and a fast platen outruns it (the report
+//! runs the coarse specimen at three rates and servo-controlled). The grains are rigid (3 DOF each),
+//! except those within 2g of the platens, which are deformable so that the platens can drive their
+//! nodes. The axial stress is the platen's reaction over W (`Cycle::node_force` at its nodes). No
+//! closed form: the run must stay stable through the peak and the softening that follows, and it
+//! reports the peak strength.
 
 use std::time::Instant;
 
@@ -30,18 +30,24 @@ use crate::report::{CaseReport, StepInfo};
 /// Confining stress σ3, Pa (compression).
 pub const CONFINING: f64 = 1e6;
 
+/// Grain-boundary normal stiffness times the grain size, Pa: kn = 1e11 Pa / g (1e12 Pa/m for
+/// 0.1 m grains, about 3.3 E / g), so that a contact's overlap stays the same fraction of its grain
+/// at every grain size (UDEC's guidance ties kn to E over the zone or block size).
+pub const GRAIN_KN_TIMES_SIZE: f64 = 1e11;
+
 /// The specimen: `across` grains of size `size` m across, twice as many up.
 pub fn scene(across: usize, size: f64) -> anyhow::Result<Scene> {
     let (w, h) = (across as f64 * size, 2.0 * across as f64 * size);
     let band = 2.0 * size;
     let (wo, ho) = (w + 1.0, h + 1.0);
+    let kn = GRAIN_KN_TIMES_SIZE / size;
     let text = serde_json::json!({
         "name": "grains",
         "materials": { "rock": { "density": 2600, "young": 30e9, "poisson": 0.2 } },
         "region": { "polygon": [[0, 0], [w, 0], [w, h], [0, h]],
                     "edge_names": ["base", "right", "top", "left"], "material": "rock" },
         "zoning": { "edge_at_excavation": size, "edge_far": size, "min_angle": 20 },
-        "joint_materials": { "grain": { "normal_stiffness": 1e12, "shear_stiffness": 5e11,
+        "joint_materials": { "grain": { "normal_stiffness": kn, "shear_stiffness": 0.5 * kn,
                                         "friction": 30, "cohesion": 4e6, "tensile_strength": 2e6 } },
         "voronoi": { "size": size, "seed": 11, "material": "grain" },
         "contacts": { "tolerance": 0.1 * size },
