@@ -88,70 +88,7 @@ impl Solver {
     /// Set nodal masses and the time step for the solve mode: static runs scale masses so that
     /// Δt = 1 s is stable; dynamic runs keep real masses and take Δt = s·Δt_crit.
     pub fn new(model: &mut Model, spec: &SolveSpec, output_every: u64) -> Solver {
-        let zones_only = zone_stiffness(model);
-        let mut stiffness = nodal_stiffness(model);
-        let with_contacts = stiffness.clone();
-        let s = spec.safety_factor;
-        let scaled = (spec.mode == SolveMode::Static).then_some(s);
-        let support_dt = model
-            .supports
-            .set_masses(&mut stiffness, scaled, spec.damping);
-        let real = lumped_masses(model);
-        let mut step = critical_step(&stiffness, &real);
-        // Name the largest share of the limiting node's stiffness.
-        let n = step.limiting_node.0 as usize;
-        let (zones, contacts) = (zones_only[n], with_contacts[n] - zones_only[n]);
-        let supports = stiffness[n] - with_contacts[n];
-        step.by = if support_dt < step.dt_critical || supports > zones.max(contacts) {
-            Limiter::Supports
-        } else if contacts > zones {
-            Limiter::Contacts
-        } else {
-            Limiter::Zones
-        };
-        step.dt_critical = step.dt_critical.min(support_dt);
-        let body_k = body_stiffness(model, &stiffness);
-        let body_real = body_masses(model);
-        body_step(model, &body_k, &body_real, &mut step);
-        let dt = match spec.mode {
-            SolveMode::Static => {
-                model.nodes.mass = scaled_masses(&stiffness, s, spec.damping);
-                model.bodies.mass = body_k
-                    .iter()
-                    .map(|d| {
-                        d.map(|k| {
-                            if k > 0.0 {
-                                k * damped_margin(s, spec.damping) / (4.0 * s * s)
-                            } else {
-                                1.0
-                            }
-                        })
-                    })
-                    .collect();
-                1.0
-            }
-            SolveMode::Dynamic => {
-                model.nodes.mass = real;
-                model.bodies.mass = body_real;
-                s * step.dt_critical
-            }
-        };
-        let bodies = &mut model.bodies;
-        bodies.projector = (0..bodies.len())
-            .map(|k| {
-                projector(
-                    &bodies.constraint[k],
-                    &bodies.mass[k],
-                    bodies.mode[k].dofs(),
-                )
-            })
-            .collect();
-        // Body nodes move with their body and carry no mass of their own.
-        for (m, &b) in model.nodes.mass.iter_mut().zip(&model.bodies.of_node) {
-            if b != NO_BODY {
-                *m = 0.0;
-            }
-        }
+        let (dt, step) = derive_masses(model, spec);
         Solver {
             cycle: Cycle::new(model),
             params: CycleParams {
@@ -182,8 +119,14 @@ impl Solver {
         let every = self.spec.monitor_every;
         let mut cycle = 0u64;
         let status = loop {
+            let detections = self.cycle.detections;
             self.cycle.run(model, &self.params);
             cycle += 1;
+            // New contacts add stiffness at their nodes: static masses follow (FLAC rescales its
+            // masses as the stiffness changes), or a node that gains a contact can go unstable.
+            if self.cycle.detections != detections && self.spec.mode == SolveMode::Static {
+                self.step = derive_masses(model, &self.spec).1;
+            }
             let jump = self.cycle.jump;
             if jump > UNSTABLE_JUMP && jump > UNSTABLE_GROWTH * self.cycle.last_jump {
                 let reason = self.cycle.unstable(model, self.params.dt);
@@ -222,4 +165,75 @@ impl Solver {
             final_ratio: last.ratio,
         }
     }
+}
+
+/// Nodal and body masses and the time step for the solve mode, from the stiffness of the zones,
+/// the current contacts and the supports (`cycle::timestep`); returns Δt, s, and the step limit
+/// with real masses.
+pub fn derive_masses(model: &mut Model, spec: &SolveSpec) -> (f64, StepLimit) {
+    let zones_only = zone_stiffness(model);
+    let mut stiffness = nodal_stiffness(model);
+    let with_contacts = stiffness.clone();
+    let s = spec.safety_factor;
+    let scaled = (spec.mode == SolveMode::Static).then_some(s);
+    let support_dt = model
+        .supports
+        .set_masses(&mut stiffness, scaled, spec.damping);
+    let real = lumped_masses(model);
+    let mut step = critical_step(&stiffness, &real);
+    // Name the largest share of the limiting node's stiffness.
+    let n = step.limiting_node.0 as usize;
+    let (zones, contacts) = (zones_only[n], with_contacts[n] - zones_only[n]);
+    let supports = stiffness[n] - with_contacts[n];
+    step.by = if support_dt < step.dt_critical || supports > zones.max(contacts) {
+        Limiter::Supports
+    } else if contacts > zones {
+        Limiter::Contacts
+    } else {
+        Limiter::Zones
+    };
+    step.dt_critical = step.dt_critical.min(support_dt);
+    let body_k = body_stiffness(model, &stiffness);
+    let body_real = body_masses(model);
+    body_step(model, &body_k, &body_real, &mut step);
+    let dt = match spec.mode {
+        SolveMode::Static => {
+            model.nodes.mass = scaled_masses(&stiffness, s, spec.damping);
+            model.bodies.mass = body_k
+                .iter()
+                .map(|d| {
+                    d.map(|k| {
+                        if k > 0.0 {
+                            k * damped_margin(s, spec.damping) / (4.0 * s * s)
+                        } else {
+                            1.0
+                        }
+                    })
+                })
+                .collect();
+            1.0
+        }
+        SolveMode::Dynamic => {
+            model.nodes.mass = real;
+            model.bodies.mass = body_real;
+            s * step.dt_critical
+        }
+    };
+    let bodies = &mut model.bodies;
+    bodies.projector = (0..bodies.len())
+        .map(|k| {
+            projector(
+                &bodies.constraint[k],
+                &bodies.mass[k],
+                bodies.mode[k].dofs(),
+            )
+        })
+        .collect();
+    // Body nodes move with their body and carry no mass of their own.
+    for (m, &b) in model.nodes.mass.iter_mut().zip(&model.bodies.of_node) {
+        if b != NO_BODY {
+            *m = 0.0;
+        }
+    }
+    (dt, step)
 }

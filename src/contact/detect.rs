@@ -155,13 +155,13 @@ fn node_to_edge(d: &Detection, a: usize, b: usize) -> Vec<Found> {
             if gap > tol || gap < -0.5 * len {
                 continue;
             }
-            // Deeper than the tolerance behind the edge's line is an overlap only if the node is
-            // inside b, and no deeper than b's boundary is near (within the tolerance): a node
-            // beside a narrow block, behind the line of its far edge, is not in it, and a node
-            // just inside a corner of b is not deep behind the line of the corner's far edge.
+            // Deeper than the tolerance behind the edge's line is an overlap only if the node (its
+            // rounding centre) is inside b and b's boundary is no nearer elsewhere: a node beside
+            // a narrow block, behind the line of its far edge, is not in it, and a node just inside
+            // a corner of b is not deep behind the line of the corner's other edge.
             if gap < -tol {
-                let depth = *depth.get_or_insert_with(|| depth_in_block(d, b, p));
-                if depth.is_none_or(|depth| -gap > depth + tol) {
+                let depth = *depth.get_or_insert_with(|| depth_in_block(d, b, c));
+                if depth.is_none_or(|depth| -(gap + r) > depth + 1e-9 * len) {
                     continue;
                 }
             }

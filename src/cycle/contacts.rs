@@ -39,6 +39,7 @@ impl Cycle {
         self.contact_force
             .resize(3 * model.contacts.len(), [0.0; 2]);
         self.moved = 0.0;
+        self.detections += 1;
     }
 
     /// Contact stage: relative velocity of the node against the point ξ of the edge, projected on the

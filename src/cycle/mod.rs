@@ -63,6 +63,8 @@ pub struct Cycle {
     pub zone_strain: Vec<StrainIncrement>,
     pub node_volumetric: Vec<f64>,
     pub seconds: StageSeconds,
+    /// Contact detections so far (the solver re-derives static masses after each).
+    pub detections: u64,
 }
 
 impl Cycle {
