@@ -10,7 +10,11 @@ use crate::model::{Gather, Model};
 
 impl Cycle {
     /// Detect stage: re-detect contacts at the current positions. Persisting contacts keep their
-    /// joint state; new ones start failed (no cohesion or tensile strength) at their current gap.
+    /// joint state; new ones start failed (no cohesion or tensile strength) at their current gap,
+    /// or at zero overlap if they turn up deeper than a tenth of the contact tolerance, their force
+    /// then growing from zero as in UDEC's incremental contacts: a node found behind an edge by a
+    /// changed facing (below the toe of a neighbour's corner, say) must not get the whole overlap's
+    /// force in one cycle.
     pub fn detect(&mut self, model: &mut Model) {
         let x: Vec<[f64; 2]> = model
             .nodes
@@ -26,8 +30,9 @@ impl Cycle {
             joint_material: &model.joint_material,
             hole_material: &model.hole_material,
         };
+        let shallow = -0.1 * model.contact_tolerance;
         let fresh = |t: &Touch| JointState {
-            normal_displacement: t.gap,
+            normal_displacement: if t.gap >= shallow { t.gap } else { 0.0 },
             flags: FAILED,
             ..Default::default()
         };

@@ -88,6 +88,8 @@ pub struct GrainsResult {
     pub broken: f64,
     /// (axial strain, axial stress Pa) along the test.
     pub curve: Vec<(f64, f64)>,
+    /// Why the run stopped early (a NaN, runaway, overlap or unstable-step check), if it did.
+    pub stopped: Option<String>,
     pub step: StepInfo,
 }
 
@@ -110,7 +112,10 @@ impl GrainsResult {
                 self.end_strain,
                 100.0 * self.broken,
                 self.contacts
-            ),
+            ) + &self
+                .stopped
+                .as_ref()
+                .map_or(String::new(), |r| format!("; STOPPED {r}")),
             self.zones,
             self.cycles,
             self.wall_s,
@@ -160,7 +165,7 @@ pub fn run(across: usize, size: f64, loading: &Loading) -> anyhow::Result<Grains
         .impose_velocity_gradient([[0.0, 0.0], [0.0, -speed / h]], [0.0, 0.0]);
     solver.spec.max_cycles = 200;
     solver.spec.ratio = 0.0;
-    let (mut cycles, mut curve) = (0u64, Vec::new());
+    let (mut cycles, mut curve, mut stopped) = (0u64, Vec::new(), None);
     let (mut peak, mut peak_strain) = (0.0f64, 0.0);
     loop {
         for &n in &top {
@@ -171,10 +176,11 @@ pub fn run(across: usize, size: f64, loading: &Loading) -> anyhow::Result<Grains
             let factor = if sol.final_ratio > target { 0.7 } else { 1.1 };
             speed = (factor * speed).clamp(0.01 * rate, rate);
         }
-        if let Status::Failed(reason) = &sol.status {
-            anyhow::bail!("grains failed after {cycles} cycles: {reason}");
-        }
         cycles += sol.cycles;
+        if let Status::Failed(reason) = &sol.status {
+            stopped = Some(format!("after {cycles} cycles: {reason}"));
+            break;
+        }
         let m = &b.model;
         let load: f64 = top
             .iter()
@@ -198,7 +204,7 @@ pub fn run(across: usize, size: f64, loading: &Loading) -> anyhow::Result<Grains
     let (all, failed) = faces.fold((0usize, 0usize), |(a, f), s| {
         (a + 1, f + (s.flags & FAILED != 0) as usize)
     });
-    let &(end_strain, end) = curve.last().expect("at least one chunk");
+    let &(end_strain, end) = curve.last().unwrap_or(&(0.0, 0.0));
     Ok(GrainsResult {
         loading: *loading,
         grains: m.blocks.len(),
@@ -213,6 +219,7 @@ pub fn run(across: usize, size: f64, loading: &Loading) -> anyhow::Result<Grains
         end_strain,
         broken: failed as f64 / all.max(1) as f64,
         curve,
+        stopped,
         step: StepInfo::of(&solver),
     })
 }
@@ -260,6 +267,7 @@ mod tests {
         };
         let r = run(10, 0.1, &loading).unwrap();
         eprintln!("{:?}", r.report());
+        assert!(r.stopped.is_none(), "{:?}", r.stopped);
         assert!(r.grains > 150, "{} grains", r.grains);
         assert!(r.peak > 3.0 * CONFINING, "peak {}", r.peak);
         assert!(
