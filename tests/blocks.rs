@@ -306,3 +306,41 @@ fn confined_voronoi_grains_carry_the_confining_stress() {
         );
     }
 }
+
+/// A contact found for the first time deeper than a tenth of the contact tolerance starts at zero
+/// overlap (its force grows from there, as in UDEC's incremental contacts); a shallower one starts
+/// at its overlap. The column's top block is sunk into the middle one with no contacts known.
+#[test]
+fn fresh_contacts_found_deep_start_at_zero_overlap() {
+    for (sink, deep) in [(0.5, true), (0.05, false)] {
+        let scene = column(30.0, "deformable");
+        let mut b = build(&scene).unwrap();
+        let m = &mut b.model;
+        let tol = m.contact_tolerance;
+        let top = (0..m.blocks.len())
+            .find(|&k| {
+                (m.blocks.node_start[k]..m.blocks.node_start[k + 1])
+                    .all(|n| m.nodes.pos[n as usize][1] > 2.0 - 1e-9)
+            })
+            .expect("a top block");
+        for n in m.blocks.node_start[top]..m.blocks.node_start[top + 1] {
+            m.nodes.disp[n as usize][1] = -sink * tol;
+        }
+        m.contacts = Default::default();
+        let mut cycle = adit::cycle::Cycle::new(m);
+        cycle.detect(m);
+        let c = &m.contacts;
+        let sunk: Vec<usize> = (0..c.len())
+            .filter(|&k| m.blocks.block_of_node(c.node[k]) == top)
+            .collect();
+        assert!(!sunk.is_empty());
+        for k in sunk {
+            let un = c.state[k].normal_displacement;
+            let want = if deep { 0.0 } else { -sink * tol };
+            assert!(
+                (un - want).abs() < 1e-9 * tol,
+                "sink {sink}: un {un}, want {want}"
+            );
+        }
+    }
+}
