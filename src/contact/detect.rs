@@ -415,6 +415,14 @@ mod tests {
             [2.0, 1.0],
             [1.0, 1.0],
         ];
+        let mut blocks = two_quadrilaterals(EdgeKind::Region(0));
+        blocks.edge_kind[1] = EdgeKind::Joint(0);
+        blocks.edge_kind[7] = EdgeKind::Joint(0);
+        (blocks, x)
+    }
+
+    /// Two blocks of four nodes each (0–3 and 4–7), each a ring of 4 edges of `kind`.
+    fn two_quadrilaterals(kind: EdgeKind) -> Blocks {
         let edges = vec![
             [0, 1],
             [1, 2],
@@ -430,20 +438,16 @@ mod tests {
             node_edges[a as usize][1] = e as u32;
             node_edges[b as usize][0] = e as u32;
         }
-        let mut edge_kind = vec![EdgeKind::Region(0); 8];
-        edge_kind[1] = EdgeKind::Joint(0);
-        edge_kind[7] = EdgeKind::Joint(0);
-        let blocks = Blocks {
+        Blocks {
             node_start: vec![0, 4, 8],
             zone_start: vec![0, 2, 4],
             edge_start: vec![0, 4, 8],
             edges,
-            edge_kind,
+            edge_kind: vec![kind; 8],
             node_edges,
             round: vec![],
             removed: vec![],
-        };
-        (blocks, x)
+        }
     }
 
     /// Detection over the squares at positions `x`, 1 mm tolerance.
@@ -506,31 +510,7 @@ mod tests {
             [1.2, 2.8],
             [1.2, 3.0],
         ];
-        let edges = vec![
-            [0, 1],
-            [1, 2],
-            [2, 3],
-            [3, 0],
-            [4, 5],
-            [5, 6],
-            [6, 7],
-            [7, 4],
-        ];
-        let mut node_edges = vec![[NO_EDGE; 2]; 8];
-        for (e, &[a, b]) in edges.iter().enumerate() {
-            node_edges[a as usize][1] = e as u32;
-            node_edges[b as usize][0] = e as u32;
-        }
-        let blocks = Blocks {
-            node_start: vec![0, 4, 8],
-            zone_start: vec![0, 2, 4],
-            edge_start: vec![0, 4, 8],
-            edges,
-            edge_kind: vec![EdgeKind::Joint(0); 8],
-            node_edges,
-            round: vec![],
-            removed: vec![],
-        };
+        let blocks = two_quadrilaterals(EdgeKind::Joint(0));
         let c = detect(&at(&blocks, &x), &Contacts::default(), &|_: &Touch| {
             JointState::default()
         });
