@@ -2,8 +2,8 @@
 //! history, and report intermediate output steps to an observer.
 
 use crate::cycle::timestep::{
-    Limiter, StepLimit, body_masses, body_step, body_stiffness, critical_step, damped_margin,
-    lumped_masses, nodal_stiffness, scaled_masses, zone_stiffness,
+    Limiter, StepLimit, add_contact_stiffness, body_masses, body_step, body_stiffness,
+    critical_step, damped_margin, lumped_masses, scaled_masses, zone_stiffness,
 };
 use crate::cycle::{Cycle, CycleParams, Monitor};
 use crate::model::Model;
@@ -172,7 +172,8 @@ impl Solver {
 /// with real masses.
 pub fn derive_masses(model: &mut Model, spec: &SolveSpec) -> (f64, StepLimit) {
     let zones_only = zone_stiffness(model);
-    let mut stiffness = nodal_stiffness(model);
+    let mut stiffness = zones_only.clone();
+    add_contact_stiffness(model, &mut stiffness);
     let with_contacts = stiffness.clone();
     let s = spec.safety_factor;
     let scaled = (spec.mode == SolveMode::Static).then_some(s);

@@ -70,13 +70,6 @@ fn zone_row_sums(grad: &[f64; 6], area: f64, a1: f64, a2: f64, g: f64) -> [[f64;
     })
 }
 
-/// Gershgorin stiffness bound R_i per node (zones and contacts), N/m.
-pub fn nodal_stiffness(model: &Model) -> Vec<f64> {
-    let mut r = zone_stiffness(model);
-    add_contact_stiffness(model, &mut r);
-    r
-}
-
 /// Gershgorin stiffness bound R_i per node from the zones alone, N/m.
 pub fn zone_stiffness(model: &Model) -> Vec<f64> {
     let Zones {
@@ -107,7 +100,7 @@ pub fn zone_stiffness(model: &Model) -> Vec<f64> {
 /// weights w = (1, −(1 − ξ), −ξ) on its node and edge nodes adds to node a's row at most
 /// |w_a| Σ|w| Lc (kn + ks) (1 + √2)/2 = (1 + √2) |w_a| Lc (kn + ks) (the largest row of
 /// n nᵀ + t tᵀ-weighted springs over all normals n).
-fn add_contact_stiffness(model: &Model, r: &mut [f64]) {
+pub(crate) fn add_contact_stiffness(model: &Model, r: &mut [f64]) {
     if model.blocks.len() < 2 {
         return;
     }
