@@ -60,16 +60,20 @@ pub fn settle(model: &mut Model, spec: &SolveSpec, what: &str) -> anyhow::Result
     Ok((solver, sol.cycles))
 }
 
+/// Radial displacement of each of `nodes` about the origin, m (outward positive).
+pub fn radial_displacements<'a>(
+    model: &'a Model,
+    nodes: &'a [u32],
+) -> impl Iterator<Item = f64> + 'a {
+    nodes.iter().map(|&n| {
+        let (p, u) = (model.nodes.pos[n as usize], model.nodes.disp[n as usize]);
+        (u[0] * p[0] + u[1] * p[1]) / p[0].hypot(p[1])
+    })
+}
+
 /// Mean radial displacement of `nodes` about the origin, m (outward positive).
 pub fn mean_radial_displacement(model: &Model, nodes: &[u32]) -> f64 {
-    nodes
-        .iter()
-        .map(|&n| {
-            let (p, u) = (model.nodes.pos[n as usize], model.nodes.disp[n as usize]);
-            (u[0] * p[0] + u[1] * p[1]) / p[0].hypot(p[1])
-        })
-        .sum::<f64>()
-        / nodes.len() as f64
+    radial_displacements(model, nodes).sum::<f64>() / nodes.len() as f64
 }
 
 /// Largest deviation of a zone's in-plane stress (`stresses`, Pa) from the uniform `target`

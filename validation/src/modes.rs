@@ -42,12 +42,8 @@ pub struct ModeRun {
 
 /// Inward radial displacements of the nodes of `wall`, about the origin, m, in increasing order.
 fn closures(model: &Model, wall: &[u32]) -> Vec<f64> {
-    let mut c: Vec<f64> = wall
-        .iter()
-        .map(|&n| {
-            let (p, u) = (model.nodes.pos[n as usize], model.nodes.disp[n as usize]);
-            -(u[0] * p[0] + u[1] * p[1]) / p[0].hypot(p[1])
-        })
+    let mut c: Vec<f64> = crate::radial_displacements(model, wall)
+        .map(|u| -u)
         .collect();
     c.sort_by(f64::total_cmp);
     c
