@@ -13,14 +13,19 @@ use crate::scene::{Scene, Stage};
 #[derive(Debug, Clone, Default)]
 pub struct Staging {
     /// Support fraction now applied on the walls of each excavation (index as in the scene), or
-    /// `None` while it is filled.
+    /// `None` while it is filled; an excavation open from the start begins at 0.
     support: Vec<Option<f64>>,
 }
 
 impl Staging {
+    /// Excavations that no stage names are open from the start, unsupported.
     pub fn new(scene: &Scene) -> Staging {
         Staging {
-            support: vec![None; scene.excavations.len()],
+            support: scene
+                .excavations
+                .iter()
+                .map(|e| (!scene.is_staged(&e.name)).then_some(0.0))
+                .collect(),
         }
     }
 

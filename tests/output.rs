@@ -210,6 +210,34 @@ print("meshio ok")
     run_python(&script, path);
 }
 
+/// A staged excavation without joints drops every contact (the fill's glue goes with it): the
+/// contacts file of that step has no cells and says so (`NumberOfCells="0"`), which VTK's reader
+/// needs (checked here with vtkio; VTK 9.7's `vtkXMLUnstructuredGridReader` reads it too). meshio
+/// 5.3 reads no `.vtu` without cells, not even one it wrote itself, so it is not asked here.
+#[test]
+fn a_contacts_file_without_contacts_reads() {
+    let mut s = small_scene();
+    s.output.every = 0;
+    s.stages = vec![
+        serde_json::from_value(serde_json::json!({ "name": "excavate", "excavate": ["tunnel"] }))
+            .unwrap(),
+    ];
+    let dir = out_dir("empty-contacts");
+    let r = run_scene(&s, &dir, &mut Quiet).unwrap();
+    assert_eq!(r.summary.contacts, 0);
+    let path = dir.join("kirsch_contacts_0000.vtu");
+    let text = std::fs::read_to_string(&path).unwrap();
+    assert!(text.contains("NumberOfCells=\"0\""), "{text}");
+    let vtk = Vtk::import(&path).unwrap();
+    let DataSet::UnstructuredGrid { pieces, .. } = vtk.data else {
+        panic!("not an unstructured grid")
+    };
+    let Piece::Inline(piece) = &pieces[0] else {
+        panic!("piece not inline")
+    };
+    assert_eq!((piece.num_points(), piece.cells.types.len()), (0, 0));
+}
+
 /// Read a contacts file with meshio: vertex cells with the contract's point data.
 fn check_contacts_with_meshio(path: &Path, contacts: usize) {
     let script = format!(

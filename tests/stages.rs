@@ -135,3 +135,26 @@ fn tunnel_model_converges_through_its_stages() {
     );
     assert!(out.join("tunnel_supports_0002.vtu").exists());
 }
+
+/// `support_fraction` acts on an excavation that is open from the start (no stage excavates it):
+/// half the in-situ traction left on the wall halves the elastic closure, and the summary says so.
+#[test]
+fn support_fraction_holds_an_excavation_open_from_the_start() {
+    let mut sc = scene();
+    sc.stages = vec![
+        serde_json::from_value(serde_json::json!({ "name": "half", "support_fraction": 0.5 }))
+            .unwrap(),
+        serde_json::from_value(serde_json::json!({ "name": "none", "support_fraction": 0.0 }))
+            .unwrap(),
+    ];
+    let out = std::env::temp_dir().join("adit_open_support_test");
+    let _ = std::fs::remove_dir_all(&out);
+    let r = adit::run_scene(&sc, &out, &mut Quiet).unwrap();
+    let stages = &r.summary.stages;
+    assert_eq!(stages[0].support_fraction, 0.5);
+    let (half, none) = (stages[0].closure["tunnel"], stages[1].closure["tunnel"]);
+    // Elastic closure of the wall: Δp a/(2G) with Δp = 5 and then 10 MPa, G = 4 GPa.
+    let full = 10e6 * 1.0 / (2.0 * 4e9);
+    assert!((half / (0.5 * full) - 1.0).abs() < 0.05, "{half} vs {}", 0.5 * full);
+    assert!((none / full - 1.0).abs() < 0.05, "{none} vs {full}");
+}

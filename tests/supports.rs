@@ -94,6 +94,16 @@ fn support_input_errors_name_the_field() {
         &|v| v["stages"][0]["install"] = serde_json::json!(["no such support"]),
         "stages[0].install[0]",
     );
+    // A support on a wall that a stage makes must be installed by a stage: one that no stage
+    // installs would be there from the start, carrying load in the rock before its wall exists.
+    bad(
+        &|v| v["stages"][2]["install"] = serde_json::json!(["crown bolts"]),
+        "liners[0].name: 'shotcrete' is on the wall of 'tunnel', which stage 'excavate, 25 % support' excavates, but no stage installs it",
+    );
+    bad(
+        &|v| v["stages"][2]["install"] = serde_json::json!(["shotcrete"]),
+        "bolts[0].name: 'crown bolts' is on the wall of 'tunnel'",
+    );
 }
 
 #[test]

@@ -175,7 +175,31 @@ pub(super) fn xml_of(piece: UnstructuredGridPiece) -> Result<Vec<u8>, vtkio::Err
     };
     let mut xml = Vec::new();
     vtk.write_xml(&mut xml)?;
-    Ok(with_field_data(xml))
+    Ok(with_cell_count(with_field_data(xml)))
+}
+
+/// vtkio writes a piece without cells with the polydata counts (`NumberOfVerts`, `NumberOfLines`,
+/// …) instead of `NumberOfCells`, which VTK's reader requires of an unstructured grid and meshio
+/// looks up: write that piece's header as `NumberOfPoints`, `NumberOfCells="0"`.
+fn with_cell_count(xml: Vec<u8>) -> Vec<u8> {
+    const OPEN: &[u8] = b"<Piece ";
+    let Some(at) = xml.windows(OPEN.len()).position(|w| w == OPEN) else {
+        return xml;
+    };
+    let Some(len) = xml[at..].iter().position(|&b| b == b'>') else {
+        return xml;
+    };
+    let header = String::from_utf8_lossy(&xml[at..at + len]).into_owned();
+    if header.contains("NumberOfCells") {
+        return xml;
+    }
+    let points = header
+        .split("NumberOfPoints=\"")
+        .nth(1)
+        .and_then(|rest| rest.split('"').next())
+        .unwrap_or("0");
+    let fixed = format!("<Piece NumberOfPoints=\"{points}\" NumberOfCells=\"0\"");
+    [&xml[..at], fixed.as_bytes(), &xml[at + len..]].concat()
 }
 
 /// vtkio writes no field data; add `deformed_positions = 0` (cells are drawn at original positions)
@@ -195,6 +219,32 @@ fn with_field_data(xml: Vec<u8>) -> Vec<u8> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A grid without cells (a contacts file once every contact is gone) still says
+    /// `NumberOfCells="0"`, which VTK's reader and meshio require.
+    #[test]
+    fn a_piece_without_cells_names_its_cell_count() {
+        let piece = UnstructuredGridPiece {
+            points: Vec::<f64>::new().into(),
+            cells: Cells {
+                cell_verts: VertexNumbers::XML {
+                    connectivity: vec![],
+                    offsets: vec![],
+                },
+                types: vec![],
+            },
+            data: Attributes {
+                point: vec![Attribute::generic("state", 1).with_data(Vec::<i32>::new())],
+                cell: vec![],
+            },
+        };
+        let xml = String::from_utf8(xml_of(piece).unwrap()).unwrap();
+        assert!(
+            xml.contains("<Piece NumberOfPoints=\"0\" NumberOfCells=\"0\">"),
+            "{xml}"
+        );
+        assert!(!xml.contains("NumberOfVerts"), "{xml}");
+    }
 
     #[test]
     fn principal_stresses_order_compression_first() {

@@ -180,6 +180,7 @@ impl Scene {
                 }
                 (None, Some(pat)) => {
                     excavation(format!("{p}.pattern.excavation"), &pat.excavation)?;
+                    self.installed_after_its_wall(&format!("{p}.name"), &b.name, &pat.excavation)?;
                     positive(format!("{p}.pattern.length"), pat.length)?;
                     if pat.count == 0 {
                         return Err(invalid(format!("{p}.pattern.count"), "must be at least 1"));
@@ -201,6 +202,7 @@ impl Scene {
             }
             names.push(&l.name);
             excavation(format!("{p}.excavation"), &l.excavation)?;
+            self.installed_after_its_wall(&format!("{p}.name"), &l.name, &l.excavation)?;
             for (f, v) in [
                 ("young", l.young),
                 ("area", l.area),
@@ -218,6 +220,26 @@ impl Scene {
             }
         }
         Ok(())
+    }
+
+    /// A support `name` (path `p`) on the wall of excavation `wall`: if a stage makes that wall,
+    /// a stage must install the support (one that no stage installs is there from the start,
+    /// and would carry load in the rock before its wall exists).
+    fn installed_after_its_wall(&self, p: &str, name: &str, wall: &str) -> Result<(), SceneError> {
+        let Some(made) = self.stages.iter().find(|s| s.excavate.iter().any(|x| x == wall)) else {
+            return Ok(());
+        };
+        if self.stages.iter().any(|s| s.install.iter().any(|n| n == name)) {
+            return Ok(());
+        }
+        Err(invalid(
+            p,
+            format!(
+                "'{name}' is on the wall of '{wall}', which stage '{}' excavates, but no stage \
+                 installs it: name it in the `install` of that stage or a later one",
+                made.name
+            ),
+        ))
     }
 
     /// A stage's `install` entry `name` (path `p`), with `excavated` the excavations made by this
