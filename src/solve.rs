@@ -93,7 +93,7 @@ impl Solver {
             cycle: Cycle::new(model),
             params: CycleParams {
                 dt,
-                damping: spec.damping,
+                damping: damping(model, spec),
                 large_strain: spec.large_strain,
             },
             step,
@@ -167,19 +167,25 @@ impl Solver {
     }
 }
 
+/// The local damping coefficient of `spec` on `model` (`SolveSpec::damping_for`: stronger for static
+/// solves of mixed zones that can yield).
+pub fn damping(model: &Model, spec: &SolveSpec) -> f64 {
+    let mixed_plastic = model.mixed.is_some() && model.laws.iter().any(|l| l.yields());
+    spec.damping_for(mixed_plastic)
+}
+
 /// Nodal and body masses and the time step for the solve mode, from the stiffness of the zones,
 /// the current contacts and the supports (`cycle::timestep`); returns Δt, s, and the step limit
 /// with real masses.
 pub fn derive_masses(model: &mut Model, spec: &SolveSpec) -> (f64, StepLimit) {
+    let alpha = damping(model, spec);
     let zones_only = zone_stiffness(model);
     let mut stiffness = zones_only.clone();
     add_contact_stiffness(model, &mut stiffness);
     let with_contacts = stiffness.clone();
     let s = spec.safety_factor;
     let scaled = (spec.mode == SolveMode::Static).then_some(s);
-    let support_dt = model
-        .supports
-        .set_masses(&mut stiffness, scaled, spec.damping);
+    let support_dt = model.supports.set_masses(&mut stiffness, scaled, alpha);
     let real = lumped_masses(model);
     let mut step = critical_step(&stiffness, &real);
     // Name the largest share of the limiting node's stiffness.
@@ -199,13 +205,13 @@ pub fn derive_masses(model: &mut Model, spec: &SolveSpec) -> (f64, StepLimit) {
     body_step(model, &body_k, &body_real, &mut step);
     let dt = match spec.mode {
         SolveMode::Static => {
-            model.nodes.mass = scaled_masses(&stiffness, s, spec.damping);
+            model.nodes.mass = scaled_masses(&stiffness, s, alpha);
             model.bodies.mass = body_k
                 .iter()
                 .map(|d| {
                     d.map(|k| {
                         if k > 0.0 {
-                            k * damped_margin(s, spec.damping) / (4.0 * s * s)
+                            k * damped_margin(s, alpha) / (4.0 * s * s)
                         } else {
                             1.0
                         }

@@ -155,6 +155,10 @@ fn support_fraction_holds_an_excavation_open_from_the_start() {
     let (half, none) = (stages[0].closure["tunnel"], stages[1].closure["tunnel"]);
     // Elastic closure of the wall: Δp a/(2G) with Δp = 5 and then 10 MPa, G = 4 GPa.
     let full = 10e6 * 1.0 / (2.0 * 4e9);
-    assert!((half / (0.5 * full) - 1.0).abs() < 0.05, "{half} vs {}", 0.5 * full);
+    assert!(
+        (half / (0.5 * full) - 1.0).abs() < 0.05,
+        "{half} vs {}",
+        0.5 * full
+    );
     assert!((none / full - 1.0).abs() < 0.05, "{none} vs {full}");
 }

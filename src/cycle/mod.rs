@@ -58,10 +58,12 @@ pub struct Cycle {
     /// and that of the cycle before.
     pub jump: f64,
     pub last_jump: f64,
-    /// Mixed discretization scratch: each zone's strain increment, and each node's
-    /// area-averaged volumetric strain increment.
+    /// Mixed discretization scratch: each zone's strain increment, each node's area-averaged
+    /// volumetric strain increment (then its averaged plastic change of mean stress, Pa), and each
+    /// zone's plastic change of mean stress, Pa.
     pub zone_strain: Vec<StrainIncrement>,
     pub node_volumetric: Vec<f64>,
+    pub zone_plastic_mean: Vec<f64>,
     pub seconds: StageSeconds,
     /// Contact detections so far (the solver re-derives static masses after each).
     pub detections: u64,
@@ -76,6 +78,7 @@ impl Cycle {
             inv_size: inverse_zone_size(model),
             zone_strain: vec![[0.0; 3]; model.mixed.as_ref().map_or(0, |_| model.zones.len())],
             node_volumetric: vec![0.0; model.mixed.as_ref().map_or(0, |_| model.nodes.len())],
+            zone_plastic_mean: vec![0.0; model.mixed.as_ref().map_or(0, |_| model.zones.len())],
             ..Default::default()
         }
     }

@@ -226,10 +226,18 @@ impl Scene {
     /// a stage must install the support (one that no stage installs is there from the start,
     /// and would carry load in the rock before its wall exists).
     fn installed_after_its_wall(&self, p: &str, name: &str, wall: &str) -> Result<(), SceneError> {
-        let Some(made) = self.stages.iter().find(|s| s.excavate.iter().any(|x| x == wall)) else {
+        let Some(made) = self
+            .stages
+            .iter()
+            .find(|s| s.excavate.iter().any(|x| x == wall))
+        else {
             return Ok(());
         };
-        if self.stages.iter().any(|s| s.install.iter().any(|n| n == name)) {
+        if self
+            .stages
+            .iter()
+            .any(|s| s.install.iter().any(|n| n == name))
+        {
             return Ok(());
         }
         Err(invalid(

@@ -93,7 +93,7 @@ pub fn run(
         *v = [0.0; 6];
     }
     sc.solve.mode = adit::scene::SolveMode::Dynamic;
-    sc.solve.damping = 0.0;
+    sc.solve.damping = Some(0.0);
     let mut dynamic = Solver::new(&mut b.model, &sc.solve, 0);
     let dt = dynamic.params.dt;
     let mean_x = |m: &adit::model::Model| {

@@ -1,6 +1,7 @@
 //! Validation of adit against closed forms: each case runs the engine, measures its error against
 //! the exact solution and its cost, and is run in full by the report binary and coarsely by tests.
 
+pub mod axisymmetric;
 pub mod corners;
 pub mod direct_shear;
 pub mod drop;
@@ -19,6 +20,7 @@ pub mod patch;
 pub mod plot;
 pub mod pullout;
 pub mod random_scenes;
+pub mod readme;
 pub mod render;
 pub mod report;
 pub mod rotation;

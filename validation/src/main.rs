@@ -10,8 +10,8 @@ use adit_validation::plot::{Curve, Series, curves, speed_and_convergence};
 use adit_validation::report::{CaseReport, StepInfo, fitted_order, observed_order};
 use adit_validation::{
     corners, direct_shear, drop, glued, grains, gravity, impact, incline, inclusion,
-    incompressible, lined, modes, patch, pullout, random_scenes, rotation, salencon, scaling,
-    slivers, softening, stiff_joints, unstable,
+    incompressible, lined, modes, patch, pullout, random_scenes, readme, rotation, salencon,
+    scaling, slivers, softening, stiff_joints, unstable,
 };
 use plotters::style::RGBColor;
 
@@ -182,6 +182,67 @@ fn table(md: &mut String, rows: &[CaseReport]) {
     }
 }
 
+/// The Salençon sweep (issue 13): rocks and meshes other than the validation's, plain and mixed.
+fn salencon_sweep_section(md: &mut String, rows: &[salencon::SweepRow]) {
+    let _ = writeln!(
+        md,
+        "\n### Salençon sweep: other rocks, plain and mixed zones (issue 13)\n\n\
+         The hole of the cases above (E = 10 GPa, ψ = 0) in four other rocks, on the shipped mesh (×1) and \
+         one with zones half the size (×0.5), with plain triangles and with `zoning.mixed`. Closure: \
+         u_h / u − 1 at the wall (positive: too much closure) against Salençon's closed form; plastic \
+         radius as above. The last columns check the closed form itself: the one-dimensional \
+         axisymmetric solve of the same rock with adit's own Mohr–Coulomb law (`validation/src/axisymmetric.rs`, \
+         1 200 elements, 60 unloading steps) against it, and whether that solve yields out of plane \
+         (σzz the major or minor stress, outside the closed form's assumption). Static solves of mixed \
+         plastic zones relax with local damping {} (`PLASTIC_MIXED_DAMPING`), plain ones with {}.\n",
+        adit::scene::PLASTIC_MIXED_DAMPING,
+        adit::scene::DEFAULT_DAMPING
+    );
+    let _ = writeln!(
+        md,
+        "| rock | mesh | zones | closure plain | closure mixed | Rp plain | Rp mixed | cycles plain / mixed | s plain / mixed | 1D reference vs closed form | out of plane |"
+    );
+    let _ = writeln!(md, "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|");
+    for r in rows {
+        let _ = writeln!(
+            md,
+            "| {} | ×{} | {} | {:+.2} % | {:+.2} % | {:.2} % | {:.2} % | {} / {} | {:.1} / {:.1} | {:+.2} % | {} |",
+            r.rock,
+            r.factor,
+            r.zones,
+            100.0 * r.closure_plain,
+            100.0 * r.closure_mixed,
+            100.0 * r.radius_plain,
+            100.0 * r.radius_mixed,
+            r.cycles_plain,
+            r.cycles_mixed,
+            r.seconds_plain,
+            r.seconds_mixed,
+            100.0 * r.reference_vs_closed,
+            if r.out_of_plane { "yes" } else { "no" }
+        );
+    }
+    // Say, from the rows, where mixed zones do not yet improve with refinement.
+    let growing: Vec<&str> = rows
+        .chunks(2)
+        .filter(|p| p.len() == 2 && p[1].closure_mixed.abs() > p[0].closure_mixed.abs())
+        .map(|p| p[0].rock.as_str())
+        .collect();
+    let _ = writeln!(
+        md,
+        "\nMixed closure errors that grow from ×1 to ×0.5: {}. Where they grow the cause is not found: the \
+         stresses of the mixed zones match the closed form (on the ×0.5 mesh of the first rock within a \
+         few per cent from the wall to 1.7 a) while their plastic strain is larger and varies around the \
+         hole; our reading, not proven, is that the unlocked zones follow a non-axisymmetric (localized) \
+         branch of this non-associated problem. Open (issue 13, defect 1).\n",
+        if growing.is_empty() {
+            "none".to_string()
+        } else {
+            growing.join("; ")
+        }
+    );
+}
+
 fn main() -> anyhow::Result<()> {
     let root = adit_validation::repository_root();
     let scene = adit_validation::shipped_kirsch()?;
@@ -242,6 +303,33 @@ fn main() -> anyhow::Result<()> {
     ];
     for r in &salencon_cases {
         print_row(r);
+    }
+    let sweep_rocks = [
+        (1e6, 25.0, 0.3, 15e6),
+        (1e6, 25.0, 0.45, 15e6),
+        (3e6, 30.0, 0.3, 10e6),
+        (2e6, 35.0, 0.4, 10e6),
+    ]
+    .map(|(cohesion, friction_deg, poisson, p0)| salencon::Rock {
+        cohesion,
+        friction_deg,
+        dilation_deg: 0.0,
+        young: 10e9,
+        poisson,
+        p0,
+        mixed: false,
+    });
+    let salencon_sweep = salencon::sweep(&scene, &sweep_rocks, &[1.0, 0.5])?;
+    for r in &salencon_sweep {
+        println!(
+            "salencon sweep {} ×{}: closure plain {:+.2} %, mixed {:+.2} % ({:.0} s, {:.0} s)",
+            r.rock,
+            r.factor,
+            100.0 * r.closure_plain,
+            100.0 * r.closure_mixed,
+            r.seconds_plain,
+            r.seconds_mixed
+        );
     }
     let (grc, grc_report) =
         salencon::ground_reaction(&scene, 1.0, &[0.8, 0.6, 0.5, 0.4, 0.3, 0.2, 0.1, 0.05, 0.0])?;
@@ -664,6 +752,7 @@ fn main() -> anyhow::Result<()> {
             / 4.0
     );
     table(&mut md, std::slice::from_ref(&grc_report));
+    salencon_sweep_section(&mut md, &salencon_sweep);
     let _ = writeln!(
         md,
         "\n| pi (MPa) | wall displacement, adit (mm) | Salençon (mm) |"
@@ -1110,9 +1199,60 @@ fn main() -> anyhow::Result<()> {
          velocities to 0.09 %; a free rigid block spun through 3 turns keeps its shape to 1e-12 m.\n"
     );
     std::fs::write(root.join("docs/validation.md"), md)?;
+    let closure = tunnel
+        .summary
+        .stages
+        .last()
+        .and_then(|s| s.closure.values().next().copied())
+        .unwrap_or(f64::NAN);
+    let jointed_row = |r: &modes::ModeRun, file: &str| readme::ModelRow {
+        file: file.into(),
+        zones: r.zones,
+        blocks: r.blocks,
+        cycles: r.cycles,
+        seconds: r.wall_s,
+        result: format!(
+            "median wall closure {:.2} mm, largest {:.1} mm",
+            1e3 * r.closure,
+            1e3 * r.largest
+        ),
+    };
+    let rows = [
+        readme::ModelRow {
+            file: "models/tunnel.json".into(),
+            zones: tunnel.summary.zones,
+            blocks: tunnel.summary.blocks,
+            cycles: tunnel.summary.cycles,
+            seconds: tunnel.summary.wall_seconds,
+            result: format!(
+                "mean wall closure {:.2} mm supported ({:.2} mm with nothing installed)",
+                1e3 * closure,
+                1e3 * unsupported
+            ),
+        },
+        readme::ModelRow {
+            file: "models/kirsch.json".into(),
+            zones: model.zones,
+            blocks: 1,
+            cycles: model.cycles,
+            seconds: model.wall_s,
+            result: format!(
+                "zone stress within {:.2} % of Kirsch (L2)",
+                100.0 * model.stress_l2
+            ),
+        },
+        jointed_row(&mode_runs[0], "models/jointed_tunnel.json"),
+        jointed_row(&mode_runs[4], "models/jointed_tunnel_mixed.json"),
+    ];
+    let readme_path = root.join("README.md");
+    let text = std::fs::read_to_string(&readme_path)?;
+    std::fs::write(
+        &readme_path,
+        readme::replace_block(&text, &readme::models_table(&rows, threads))?,
+    )?;
     println!(
         "wrote target/validation/report.json, docs/validation.md, docs/img/kirsch_convergence.png, \
-         docs/img/bolt_pullout.png, docs/img/tunnel.png, docs/img/softening.png"
+         docs/img/bolt_pullout.png, docs/img/tunnel.png, docs/img/softening.png, README.md (models table)"
     );
     anyhow::ensure!(pass, "the shipped Kirsch model misses its accuracy bar");
     Ok(())

@@ -127,21 +127,57 @@ impl Salencon {
     }
 }
 
+/// Rock and load of one Salençon case (the validation's own: c = 5 MPa, φ = 30°, ψ = 0, ν = 0.25,
+/// p0 = 30 MPa, E = 10 GPa; the sweep varies them).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Rock {
+    /// Cohesion c, Pa.
+    pub cohesion: f64,
+    /// Friction angle φ, degrees.
+    pub friction_deg: f64,
+    /// Dilation angle ψ, degrees.
+    pub dilation_deg: f64,
+    /// Young's modulus, Pa.
+    pub young: f64,
+    /// Poisson's ratio.
+    pub poisson: f64,
+    /// In-situ pressure p0 (compression positive), Pa.
+    pub p0: f64,
+    /// `zoning.mixed`.
+    pub mixed: bool,
+}
+
+impl Rock {
+    /// The shipped case's rock and load.
+    pub const SHIPPED: Rock = Rock {
+        cohesion: 5e6,
+        friction_deg: 30.0,
+        dilation_deg: 0.0,
+        young: 10e9,
+        poisson: 0.25,
+        p0: 30e6,
+        mixed: false,
+    };
+}
+
 /// The shipped Kirsch geometry (a = 1 m in a 40 m square, graded zoning scaled by `factor`) in
-/// Mohr–Coulomb rock (E = 10 GPa, ν = 0.25, c = 5 MPa, φ = 30°, ψ = 0) under p0 = 30 MPa, with a
-/// support pressure `pi` (Pa) on the wall.
-fn scene(kirsch: &Scene, factor: f64, pi: f64) -> (Scene, Salencon) {
+/// Mohr–Coulomb `rock` under its p0, with a support pressure `pi` (Pa) on the wall.
+pub fn scene(kirsch: &Scene, factor: f64, pi: f64, rock: &Rock) -> (Scene, Salencon) {
     let mut s = scaled(kirsch, factor);
     s.name = "salencon".into();
+    s.zoning.mixed = rock.mixed;
     let m = s
         .materials
         .get_mut(&s.region.material)
         .expect("region material");
     m.law = ZoneLawKind::MohrCoulomb;
-    m.cohesion = Some(5e6);
-    m.friction = Some(30.0);
+    m.cohesion = Some(rock.cohesion);
+    m.friction = Some(rock.friction_deg);
+    m.dilation = rock.dilation_deg;
+    m.young = rock.young;
+    m.poisson = rock.poisson;
     let (young, poisson) = (m.young, m.poisson);
-    let p0 = 30e6;
+    let p0 = rock.p0;
     s.in_situ.sxx = -p0;
     s.in_situ.syy = -p0;
     s.in_situ.szz = Some(-p0);
@@ -163,9 +199,9 @@ fn scene(kirsch: &Scene, factor: f64, pi: f64) -> (Scene, Salencon) {
         radius,
         p0,
         pi,
-        cohesion: 5e6,
-        friction: 30f64.to_radians(),
-        dilation: 0.0,
+        cohesion: rock.cohesion,
+        friction: rock.friction_deg.to_radians(),
+        dilation: rock.dilation_deg.to_radians(),
         shear: young / (2.0 * (1.0 + poisson)),
         poisson,
     };
@@ -177,8 +213,18 @@ fn scene(kirsch: &Scene, factor: f64, pi: f64) -> (Scene, Salencon) {
 /// r ≤ 3Rp, relative to the exact norm there) and `wall_displacement` (mean radial displacement of
 /// the wall nodes against u(a)).
 pub fn run(kirsch: &Scene, factor: f64, pi: f64) -> anyhow::Result<CaseReport> {
+    run_rock(kirsch, factor, pi, &Rock::SHIPPED)
+}
+
+/// [`run`] for another rock and load.
+pub fn run_rock(kirsch: &Scene, factor: f64, pi: f64, rock: &Rock) -> anyhow::Result<CaseReport> {
+    Ok(measure(kirsch, factor, pi, rock)?.0)
+}
+
+/// [`run_rock`], with the wall displacement over the closed form's, u_h / u.
+fn measure(kirsch: &Scene, factor: f64, pi: f64, rock: &Rock) -> anyhow::Result<(CaseReport, f64)> {
     let start = Instant::now();
-    let (sc, exact) = scene(kirsch, factor, pi);
+    let (sc, exact) = scene(kirsch, factor, pi, rock);
     let mut b = build(&sc)?;
     let mut solver = Solver::new(&mut b.model, &sc.solve, 0);
     let sol = solver.solve(&mut b.model, &mut Quiet);
@@ -219,11 +265,23 @@ pub fn run(kirsch: &Scene, factor: f64, pi: f64) -> anyhow::Result<CaseReport> {
     let u_wall = crate::mean_radial_displacement(m, wall);
     let u_exact = exact.wall_displacement();
     let h = (h2 / count).sqrt();
-    Ok(CaseReport::new(
-        format!(
-            "Salençon: hole in Mohr–Coulomb rock, p0 = 30 MPa, pi = {} MPa, Rp = {rp:.3} m (×{factor})",
-            pi / 1e6
-        ),
+    let report = CaseReport::new(
+        if *rock == Rock::SHIPPED {
+            format!(
+                "Salençon: hole in Mohr–Coulomb rock, p0 = 30 MPa, pi = {} MPa, Rp = {rp:.3} m (×{factor})",
+                pi / 1e6
+            )
+        } else {
+            format!(
+                "Salençon c = {} MPa, φ = {}°, ψ = {}°, ν = {}, p0 = {} MPa{}, Rp = {rp:.3} m (×{factor})",
+                rock.cohesion / 1e6,
+                rock.friction_deg,
+                rock.dilation_deg,
+                rock.poisson,
+                rock.p0 / 1e6,
+                if rock.mixed { ", mixed" } else { "" }
+            )
+        },
         z.len(),
         sol.cycles,
         start.elapsed().as_secs_f64(),
@@ -236,7 +294,103 @@ pub fn run(kirsch: &Scene, factor: f64, pi: f64) -> anyhow::Result<CaseReport> {
                 (u_wall - u_exact).abs() / u_exact.abs(),
             ),
         ],
-    ))
+    );
+    Ok((report, u_wall / u_exact))
+}
+
+/// One row of the Salençon sweep: a rock and mesh, plain and mixed, against the closed form and the
+/// one-dimensional axisymmetric reference (`crate::axisymmetric`).
+#[derive(Debug, Clone, serde::Serialize)]
+pub struct SweepRow {
+    pub rock: String,
+    /// Zone size factor of the shipped Kirsch mesh (< 1 finer).
+    pub factor: f64,
+    pub zones: usize,
+    /// Closure u_h / u − 1 at the wall, plain and mixed (signed: positive is too much closure).
+    pub closure_plain: f64,
+    pub closure_mixed: f64,
+    /// Plastic radius error |Rp_h − Rp| / Rp, plain and mixed.
+    pub radius_plain: f64,
+    pub radius_mixed: f64,
+    pub cycles_plain: u64,
+    pub cycles_mixed: u64,
+    pub seconds_plain: f64,
+    pub seconds_mixed: f64,
+    /// The axisymmetric reference's wall displacement over the closed form's, minus 1.
+    pub reference_vs_closed: f64,
+    /// Whether the reference yields out of plane (σzz the major or minor stress: outside the closed
+    /// form's assumption).
+    pub out_of_plane: bool,
+}
+
+/// Signed closure error u_h / u − 1 and plastic radius error of one run (see `run`), with its cost.
+fn closure_and_radius(
+    kirsch: &Scene,
+    factor: f64,
+    rock: &Rock,
+) -> anyhow::Result<(f64, f64, CaseReport)> {
+    let (report, ratio) = measure(kirsch, factor, 0.0, rock)?;
+    let radius = report.errors["plastic_radius"];
+    Ok((ratio - 1.0, radius, report))
+}
+
+/// The sweep: each rock at each mesh factor, plain and mixed.
+pub fn sweep(kirsch: &Scene, rocks: &[Rock], factors: &[f64]) -> anyhow::Result<Vec<SweepRow>> {
+    let mut rows = Vec::new();
+    for rock in rocks {
+        let reference = crate::axisymmetric::solve(&crate::axisymmetric::Hole {
+            radius: 1.0,
+            young: rock.young,
+            poisson: rock.poisson,
+            cohesion: rock.cohesion,
+            friction_deg: rock.friction_deg,
+            dilation_deg: rock.dilation_deg,
+            p0: rock.p0,
+            pi: 0.0,
+        })?;
+        let closed = scene(kirsch, 1.0, 0.0, rock).1;
+        for &factor in factors {
+            let (cp, rp, plain) = closure_and_radius(
+                kirsch,
+                factor,
+                &Rock {
+                    mixed: false,
+                    ..*rock
+                },
+            )?;
+            let (cm, rm, mixed) = closure_and_radius(
+                kirsch,
+                factor,
+                &Rock {
+                    mixed: true,
+                    ..*rock
+                },
+            )?;
+            rows.push(SweepRow {
+                rock: format!(
+                    "c = {} MPa, φ = {}°, ν = {}, p0 = {} MPa (Rp = {:.2} a)",
+                    rock.cohesion / 1e6,
+                    rock.friction_deg,
+                    rock.poisson,
+                    rock.p0 / 1e6,
+                    closed.plastic_radius() / closed.radius
+                ),
+                factor,
+                zones: plain.zones,
+                closure_plain: cp,
+                closure_mixed: cm,
+                radius_plain: rp,
+                radius_mixed: rm,
+                cycles_plain: plain.cycles,
+                cycles_mixed: mixed.cycles,
+                seconds_plain: plain.wall_s,
+                seconds_mixed: mixed.wall_s,
+                reference_vs_closed: reference.wall_displacement / closed.wall_displacement() - 1.0,
+                out_of_plane: reference.out_of_plane_yield,
+            });
+        }
+    }
+    Ok(rows)
 }
 
 /// One point of a ground reaction curve: support pressure (Pa), wall displacement computed and
@@ -259,8 +413,18 @@ pub fn ground_reaction(
     factor: f64,
     fractions: &[f64],
 ) -> anyhow::Result<(Vec<GrcPoint>, CaseReport)> {
+    ground_reaction_rock(kirsch, factor, fractions, &Rock::SHIPPED)
+}
+
+/// [`ground_reaction`] for another rock and load.
+pub fn ground_reaction_rock(
+    kirsch: &Scene,
+    factor: f64,
+    fractions: &[f64],
+    rock: &Rock,
+) -> anyhow::Result<(Vec<GrcPoint>, CaseReport)> {
     let start = Instant::now();
-    let (mut sc, exact) = scene(kirsch, factor, 0.0);
+    let (mut sc, exact) = scene(kirsch, factor, 0.0, rock);
     let hole = sc.excavations[0].name.clone();
     let stage = |name: String, excavate: Vec<String>, support_fraction: f64| Stage {
         name,
@@ -333,7 +497,7 @@ mod tests {
     /// The closed form is continuous at Rp and meets the wall condition σr(a) = −pi.
     #[test]
     fn closed_form_is_consistent() {
-        let (_, s) = scene(&crate::shipped_kirsch().unwrap(), 1.0, 0.0);
+        let (_, s) = scene(&crate::shipped_kirsch().unwrap(), 1.0, 0.0, &Rock::SHIPPED);
         let rp = s.plastic_radius();
         assert!(rp > 1.4 && rp < 1.6, "{rp}");
         let (a, b) = (s.stress(rp * (1.0 - 1e-9)), s.stress(rp * (1.0 + 1e-9)));
@@ -363,6 +527,60 @@ mod tests {
             eprintln!("{p:?}");
         }
         assert!(r.errors["grc"] < 0.05, "{r:?}");
+    }
+
+    /// The rock of issue 13's report: a plastic zone almost three hole radii deep.
+    const WEAK: Rock = Rock {
+        cohesion: 1e6,
+        friction_deg: 25.0,
+        dilation_deg: 0.0,
+        young: 10e9,
+        poisson: 0.3,
+        p0: 15e6,
+        mixed: false,
+    };
+
+    /// Coarse twin of the sweep: on zones twice the shipped size, plain triangles lock (closure
+    /// 17 % short) and mixed ones must meet Salençon's closure within 3 % (they closed 18 % too
+    /// much on the shipped mesh before static solves of mixed plastic zones were damped enough to
+    /// stay quasi-static).
+    #[test]
+    fn mixed_zones_meet_salencon_where_plain_ones_lock() {
+        let kirsch = crate::shipped_kirsch().unwrap();
+        let (plain, _, _) = closure_and_radius(&kirsch, 2.0, &WEAK).unwrap();
+        let mixed_rock = Rock {
+            mixed: true,
+            ..WEAK
+        };
+        let (mixed, radius, r) = closure_and_radius(&kirsch, 2.0, &mixed_rock).unwrap();
+        eprintln!("plain {plain:+.4}, mixed {mixed:+.4}, {r:?}");
+        assert!(mixed.abs() < 0.03, "mixed closure error {mixed}");
+        assert!(
+            mixed.abs() <= plain.abs() + 0.01,
+            "mixed {mixed} vs plain {plain}"
+        );
+        assert!(radius < 0.05, "{r:?}");
+    }
+
+    /// With the plastic change of mean stress averaged like the volumetric strain, mixed zones
+    /// with associated flow (ψ = φ = 30°) converge; left local, the run ran away within 500
+    /// cycles. (Scenes refuse `zoning.mixed` with dilatant rock for now: the closure is still
+    /// too large.)
+    #[test]
+    fn dilatant_mixed_zones_converge() {
+        let kirsch = crate::shipped_kirsch().unwrap();
+        let rock = Rock {
+            cohesion: 3e6,
+            friction_deg: 30.0,
+            dilation_deg: 30.0,
+            young: 10e9,
+            poisson: 0.3,
+            p0: 10e6,
+            mixed: true,
+        };
+        let r = run_rock(&kirsch, 2.0, 0.0, &rock).unwrap();
+        eprintln!("{r:?}");
+        assert!(r.errors["plastic_radius"] < 0.1, "{r:?}");
     }
 
     /// Coarse twin (zones twice the shipped size), without and with a support pressure.
