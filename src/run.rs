@@ -71,6 +71,7 @@ pub fn run_scene(
         excavate: vec![],
         support_fraction: 0.0,
         install: vec![],
+        joint_materials: Default::default(),
         reset_displacements: false,
         solve: None,
     }];

@@ -1,10 +1,10 @@
-//! Stages: what changes between the solves of a staged run — excavations removed, supports
-//! installed, the support pressure left on their walls (convergence–confinement), displacements
-//! reset.
+//! Stages: what changes between the solves of a staged run — excavations removed, joint materials
+//! changed, supports installed, the support pressure left on their walls (convergence–confinement),
+//! displacements reset.
 
 use adit_meshing::BoundaryEdge;
 
-use crate::build::{Built, NOT_FILL, add_tractions, in_situ_stress, rock_walls};
+use crate::build::{Built, NOT_FILL, add_tractions, in_situ_stress, joint_law, rock_walls};
 use crate::contact::Contacts;
 use crate::model::{FIX_X, FIX_Y, Gather, Model, traction};
 use crate::scene::{Scene, Stage};
@@ -30,7 +30,7 @@ impl Staging {
     }
 
     /// Apply `stage` to the model before its solve: remove the rock of the excavations it names,
-    /// install the bolts and liners it names, set the support pressure of every excavation made so
+    /// give the joint materials it names their new properties, install the bolts and liners it names, set the support pressure of every excavation made so
     /// far to `support_fraction` × the in-situ traction on its walls, and reset displacements if
     /// asked.
     pub fn apply(&mut self, stage: &Stage, scene: &Scene, built: &mut Built) {
@@ -43,6 +43,15 @@ impl Staging {
             // The rock's contacts go with it: the wall is unsupported until a pressure is set.
             remove_fill(&mut built.model, j as u32);
             self.support[j] = Some(0.0);
+        }
+        for (name, spec) in &stage.joint_materials {
+            // Joint laws are indexed in the order of the scene's `joint_materials` (sorted names).
+            let k = scene
+                .joint_materials
+                .keys()
+                .position(|n| n == name)
+                .expect("validated: a joint material of the scene");
+            built.model.joint_laws[k] = joint_law(spec);
         }
         for name in &stage.install {
             let model = &mut built.model;

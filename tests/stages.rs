@@ -162,3 +162,56 @@ fn support_fraction_holds_an_excavation_open_from_the_start() {
     );
     assert!((none / full - 1.0).abs() < 0.05, "{none} vs {full}");
 }
+
+/// A block on a 30° slope (gravity tilted) settles on a joint that cannot slip; the next stage gives
+/// the joint a friction angle below the slope and the block slides; a stage naming an unknown joint
+/// material is an error naming it.
+#[test]
+fn a_stage_changes_a_joint_material() {
+    let a = 30f64.to_radians();
+    let text = format!(
+        r#"{{
+        "name": "slope",
+        "materials": {{ "rock": {{ "density": 2500, "young": 10e9, "poisson": 0.25 }} }},
+        "region": {{ "polygon": [[0, 0], [4, 0], [4, 1], [2, 1], [2, 1.5], [1, 1.5], [1, 1], [0, 1]],
+                    "edge_names": ["bottom", "e1", "e2", "e3", "e4", "e5", "e6", "e7"], "material": "rock" }},
+        "zoning": {{ "edge_at_excavation": 0.25, "edge_far": 0.25 }},
+        "joint_materials": {{ "plane": {{ "normal_stiffness": 1e11, "shear_stiffness": 1e11, "friction": 80 }} }},
+        "joints": [{{ "from": [1, 1], "to": [2, 1], "material": "plane" }}],
+        "gravity": [{gx}, {gy}],
+        "boundary": [{{ "part": "bottom", "fix": "xy" }}],
+        "solve": {{ "ratio": 1e-6, "max_cycles": 20000 }},
+        "stages": [
+            {{ "name": "settle" }},
+            {{ "name": "weaken", "joint_materials": {{ "plane": {{ "normal_stiffness": 1e11, "shear_stiffness": 1e11, "friction": 20 }} }} }}
+        ]
+    }}"#,
+        gx = 9.81 * a.sin(),
+        gy = -9.81 * a.cos()
+    );
+    let sc = Scene::from_json(&text, "slope").unwrap();
+    let out = std::env::temp_dir().join("adit_joint_change_test");
+    let _ = std::fs::remove_dir_all(&out);
+    let r = adit::run_scene(&sc, &out, &mut Quiet).unwrap();
+    let stages = &r.summary.stages;
+    assert_eq!(stages[0].status, "converged", "{stages:?}");
+    // Sliding: no equilibrium, and the block has moved down the slope by far more than the
+    // elastic settling.
+    assert_ne!(stages[1].status, "converged", "{stages:?}");
+    let m = &r.built.model;
+    let top = (0..m.nodes.len())
+        .filter(|&n| m.nodes.pos[n][1] > 1.4)
+        .map(|n| m.nodes.disp[n][0])
+        .fold(f64::INFINITY, f64::min);
+    assert!(top > 1e-3, "the block moved {top} m down the slope");
+
+    let bad = text.replace(
+        r#""weaken", "joint_materials": { "plane""#,
+        r#""weaken", "joint_materials": { "nope""#,
+    );
+    let msg = Scene::from_json(&bad, "slope").unwrap_err().to_string();
+    assert!(
+        msg.contains("stages[1].joint_materials.nope: no joint material named 'nope'"),
+        "{msg}"
+    );
+}

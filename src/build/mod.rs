@@ -24,7 +24,7 @@ use crate::joint::{
 use crate::law::{Elastic, MohrCoulomb, Null, ZoneLaw};
 use crate::model::blocks::{Blocks, NO_EDGE};
 use crate::model::{Gather, MaterialId, Model, Nodes, Zones, traction};
-use crate::scene::{BlockMode, InSitu, JointLawKind, Scene, ZoneLawKind};
+use crate::scene::{BlockMode, InSitu, JointLawKind, JointMaterial, Scene, ZoneLawKind};
 
 /// A model ready to cycle, with what was learnt while building it.
 pub struct Built {
@@ -129,6 +129,32 @@ fn assemble(meshed: &Meshed) -> Assembled {
         outline_block,
         blocks,
         boundary,
+    }
+}
+
+/// The joint law of a joint material (scene-validated).
+pub fn joint_law(j: &JointMaterial) -> Box<dyn JointLaw> {
+    let (normal_stiffness, shear_stiffness) = (j.normal_stiffness, j.shear_stiffness);
+    match j.law {
+        JointLawKind::Glued => Box::new(Glued {
+            normal_stiffness,
+            shear_stiffness,
+        }),
+        JointLawKind::Coulomb => Box::new(CoulombSlip {
+            normal_stiffness,
+            shear_stiffness,
+            tan_friction: tan_deg(j.friction),
+            cohesion: j.cohesion,
+            tensile_strength: j.tensile_strength,
+            tan_dilation: tan_deg(j.dilation),
+        }),
+        JointLawKind::ContinuouslyYielding => Box::new(ContinuouslyYielding {
+            normal_stiffness,
+            shear_stiffness,
+            friction: j.friction.to_radians(),
+            initial_friction: j.initial_friction.unwrap_or(j.friction).to_radians(),
+            roughness: j.roughness.expect("validated"),
+        }),
     }
 }
 
@@ -266,34 +292,8 @@ pub fn build(scene: &Scene) -> anyhow::Result<Built> {
 
     // Joint laws, and the material of each joint feature (sets first, then explicit joints).
     let mut joint_material_names: Vec<String> = scene.joint_materials.keys().cloned().collect();
-    let mut joint_laws: Vec<Box<dyn JointLaw>> = scene
-        .joint_materials
-        .values()
-        .map(|j| -> Box<dyn JointLaw> {
-            let (normal_stiffness, shear_stiffness) = (j.normal_stiffness, j.shear_stiffness);
-            match j.law {
-                JointLawKind::Glued => Box::new(Glued {
-                    normal_stiffness,
-                    shear_stiffness,
-                }),
-                JointLawKind::Coulomb => Box::new(CoulombSlip {
-                    normal_stiffness,
-                    shear_stiffness,
-                    tan_friction: tan_deg(j.friction),
-                    cohesion: j.cohesion,
-                    tensile_strength: j.tensile_strength,
-                    tan_dilation: tan_deg(j.dilation),
-                }),
-                JointLawKind::ContinuouslyYielding => Box::new(ContinuouslyYielding {
-                    normal_stiffness,
-                    shear_stiffness,
-                    friction: j.friction.to_radians(),
-                    initial_friction: j.initial_friction.unwrap_or(j.friction).to_radians(),
-                    roughness: j.roughness.expect("validated"),
-                }),
-            }
-        })
-        .collect();
+    let mut joint_laws: Vec<Box<dyn JointLaw>> =
+        scene.joint_materials.values().map(joint_law).collect();
     let material_index = |name: &str| {
         joint_material_names
             .iter()

@@ -86,6 +86,11 @@ pub struct Stage {
     /// excavations.
     #[serde(default)]
     pub install: Vec<String>,
+    /// Joint materials changed at the start of this stage (by name, each given whole, as in
+    /// `joint_materials`): every contact of that material takes the new properties and keeps its
+    /// state (stresses, displacements, whether it has failed), as UDEC's `change` between solves.
+    #[serde(default)]
+    pub joint_materials: BTreeMap<String, JointMaterial>,
     /// Measure displacements from the start of this stage on (default false).
     #[serde(default)]
     pub reset_displacements: bool,

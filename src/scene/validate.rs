@@ -2,7 +2,9 @@
 
 use thiserror::Error;
 
-use super::{BoundaryCondition, JointLawKind, Material, Scene, SolveSpec, ZoneLawKind};
+use super::{
+    BoundaryCondition, JointLawKind, JointMaterial, Material, Scene, SolveSpec, ZoneLawKind,
+};
 
 /// Why a scene cannot be used.
 #[derive(Debug, Error)]
@@ -99,6 +101,60 @@ fn validate_strength(p: &str, m: &Material) -> Result<(), SceneError> {
             Ok(())
         }
     }
+}
+
+/// A joint material at `p` (top level or a stage's change).
+fn validate_joint_material(p: &str, j: &JointMaterial) -> Result<(), SceneError> {
+    positive(&format!("{p}.normal_stiffness"), j.normal_stiffness)?;
+    positive(&format!("{p}.shear_stiffness"), j.shear_stiffness)?;
+    if !(0.0..90.0).contains(&j.friction) {
+        return Err(invalid(
+            format!("{p}.friction"),
+            format!("must be in [0, 90) degrees, got {}", j.friction),
+        ));
+    }
+    if !(0.0..90.0).contains(&j.dilation) {
+        return Err(invalid(
+            format!("{p}.dilation"),
+            format!("must be in [0, 90) degrees, got {}", j.dilation),
+        ));
+    }
+    if j.law == JointLawKind::ContinuouslyYielding {
+        match j.roughness {
+            Some(r) => positive(&format!("{p}.roughness"), r)?,
+            None => {
+                return Err(invalid(
+                    format!("{p}.roughness"),
+                    "required by the continuously yielding law",
+                ));
+            }
+        }
+        if let Some(f) = j.initial_friction
+            && !(f >= j.friction && f < 90.0)
+        {
+            return Err(invalid(
+                format!("{p}.initial_friction"),
+                format!("must be in [friction, 90) degrees, got {f}"),
+            ));
+        }
+    } else if j.roughness.is_some() || j.initial_friction.is_some() {
+        return Err(invalid(
+            p,
+            "`roughness` and `initial_friction` belong to the continuously yielding law",
+        ));
+    }
+    for (f, v) in [
+        ("cohesion", j.cohesion),
+        ("tensile_strength", j.tensile_strength),
+    ] {
+        if !(v >= 0.0 && v.is_finite()) {
+            return Err(invalid(
+                format!("{p}.{f}"),
+                format!("must be zero or positive, got {v}"),
+            ));
+        }
+    }
+    Ok(())
 }
 
 /// A solve specification at `p`.
@@ -243,56 +299,7 @@ impl Scene {
             ));
         }
         for (name, j) in &self.joint_materials {
-            let p = format!("joint_materials.{name}");
-            positive(&format!("{p}.normal_stiffness"), j.normal_stiffness)?;
-            positive(&format!("{p}.shear_stiffness"), j.shear_stiffness)?;
-            if !(0.0..90.0).contains(&j.friction) {
-                return Err(invalid(
-                    format!("{p}.friction"),
-                    format!("must be in [0, 90) degrees, got {}", j.friction),
-                ));
-            }
-            if !(0.0..90.0).contains(&j.dilation) {
-                return Err(invalid(
-                    format!("{p}.dilation"),
-                    format!("must be in [0, 90) degrees, got {}", j.dilation),
-                ));
-            }
-            if j.law == JointLawKind::ContinuouslyYielding {
-                match j.roughness {
-                    Some(r) => positive(&format!("{p}.roughness"), r)?,
-                    None => {
-                        return Err(invalid(
-                            format!("{p}.roughness"),
-                            "required by the continuously yielding law",
-                        ));
-                    }
-                }
-                if let Some(f) = j.initial_friction
-                    && !(f >= j.friction && f < 90.0)
-                {
-                    return Err(invalid(
-                        format!("{p}.initial_friction"),
-                        format!("must be in [friction, 90) degrees, got {f}"),
-                    ));
-                }
-            } else if j.roughness.is_some() || j.initial_friction.is_some() {
-                return Err(invalid(
-                    &p,
-                    "`roughness` and `initial_friction` belong to the continuously yielding law",
-                ));
-            }
-            for (f, v) in [
-                ("cohesion", j.cohesion),
-                ("tensile_strength", j.tensile_strength),
-            ] {
-                if !(v >= 0.0 && v.is_finite()) {
-                    return Err(invalid(
-                        format!("{p}.{f}"),
-                        format!("must be zero or positive, got {v}"),
-                    ));
-                }
-            }
+            validate_joint_material(&format!("joint_materials.{name}"), j)?;
         }
         let joint_material = |path: String, name: &str| {
             if self.joint_materials.contains_key(name) {
@@ -409,6 +416,16 @@ impl Scene {
             for (k, name) in st.install.iter().enumerate() {
                 let q = format!("{p}.install[{k}]");
                 self.validate_install(&q, name, &done)?;
+            }
+            for (name, j) in &st.joint_materials {
+                let q = format!("{p}.joint_materials.{name}");
+                if !self.joint_materials.contains_key(name) {
+                    return Err(invalid(
+                        q,
+                        format!("no joint material named '{name}' in joint_materials to change"),
+                    ));
+                }
+                validate_joint_material(&q, j)?;
             }
             if !(0.0..=1.0).contains(&st.support_fraction) {
                 return Err(invalid(

@@ -431,6 +431,7 @@ pub fn ground_reaction_rock(
         excavate,
         support_fraction,
         install: vec![],
+        joint_materials: Default::default(),
         reset_displacements: false,
         solve: None,
     };
