@@ -71,6 +71,8 @@ pub fn run_scene(
         excavate: vec![],
         support_fraction: 0.0,
         install: vec![],
+        materials: Default::default(),
+        gravity: None,
         joint_materials: Default::default(),
         reset_displacements: false,
         solve: None,

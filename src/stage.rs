@@ -1,10 +1,13 @@
-//! Stages: what changes between the solves of a staged run — excavations removed, joint materials
-//! changed, supports installed, the support pressure left on their walls (convergence–confinement),
+//! Stages: what changes between the solves of a staged run — excavations removed, zone and joint
+//! materials and gravity changed, supports installed, the support pressure left on their walls (convergence–confinement),
 //! displacements reset.
 
 use adit_meshing::BoundaryEdge;
 
-use crate::build::{Built, NOT_FILL, add_tractions, in_situ_stress, joint_law, rock_walls};
+use crate::build::{
+    Built, NOT_FILL, add_tractions, add_zone_weight, in_situ_stress, joint_law, rock_walls,
+    zone_law,
+};
 use crate::contact::Contacts;
 use crate::model::{FIX_X, FIX_Y, Gather, Model, traction};
 use crate::scene::{Scene, Stage};
@@ -15,6 +18,8 @@ pub struct Staging {
     /// Support fraction now applied on the walls of each excavation (index as in the scene), or
     /// `None` while it is filled; an excavation open from the start begins at 0.
     support: Vec<Option<f64>>,
+    /// Gravitational acceleration now, m/s².
+    gravity: [f64; 2],
 }
 
 impl Staging {
@@ -26,11 +31,12 @@ impl Staging {
                 .iter()
                 .map(|e| (!scene.is_staged(&e.name)).then_some(0.0))
                 .collect(),
+            gravity: scene.gravity,
         }
     }
 
     /// Apply `stage` to the model before its solve: remove the rock of the excavations it names,
-    /// give the joint materials it names their new properties, install the bolts and liners it names, set the support pressure of every excavation made so
+    /// give the zone and joint materials it names their new properties, change gravity, install the bolts and liners it names, set the support pressure of every excavation made so
     /// far to `support_fraction` × the in-situ traction on its walls, and reset displacements if
     /// asked.
     pub fn apply(&mut self, stage: &Stage, scene: &Scene, built: &mut Built) {
@@ -43,6 +49,28 @@ impl Staging {
             // The rock's contacts go with it: the wall is unsupported until a pressure is set.
             remove_fill(&mut built.model, j as u32);
             self.support[j] = Some(0.0);
+        }
+        for (name, spec) in &stage.materials {
+            // Zone laws are indexed in the order of the scene's `materials` (sorted names).
+            let k = scene
+                .materials
+                .keys()
+                .position(|n| n == name)
+                .expect("validated: a material of the scene");
+            built.model.laws[k] = zone_law(spec);
+        }
+        if let Some(g) = stage.gravity {
+            let now = self.gravity;
+            let model = &mut built.model;
+            let change = [g[0] - now[0], g[1] - now[1]];
+            add_zone_weight(&mut model.nodes, &model.zones, &model.laws, change);
+            let bodies = &mut model.bodies;
+            for k in 0..bodies.len() {
+                let mass = model.laws[bodies.material[k].0 as usize].density() * bodies.area[k];
+                bodies.weight[k][0] += mass * change[0];
+                bodies.weight[k][1] += mass * change[1];
+            }
+            self.gravity = g;
         }
         for (name, spec) in &stage.joint_materials {
             // Joint laws are indexed in the order of the scene's `joint_materials` (sorted names).

@@ -6,8 +6,7 @@ use adit::solve::Quiet;
 
 /// Elastic rock (E = 10 GPa, ν = 0.25) under hydrostatic 10 MPa with a 1 m tunnel excavated in
 /// the second stage with half the in-situ traction left on the wall, and released in the third.
-fn scene() -> Scene {
-    let text = r#"{
+const SCENE_TEXT: &str = r#"{
         "name": "staged",
         "materials": { "rock": { "density": 2500, "young": 10e9, "poisson": 0.25 } },
         "region": { "polygon": [[-12, -12], [12, -12], [12, 12], [-12, 12]], "material": "rock" },
@@ -24,7 +23,9 @@ fn scene() -> Scene {
             { "name": "release", "support_fraction": 0.0 }
         ]
     }"#;
-    Scene::from_json(text, "staged").unwrap()
+
+fn scene() -> Scene {
+    Scene::from_json(SCENE_TEXT, "staged").unwrap()
 }
 
 #[test]
@@ -212,6 +213,105 @@ fn a_stage_changes_a_joint_material() {
     let msg = Scene::from_json(&bad, "slope").unwrap_err().to_string();
     assert!(
         msg.contains("stages[1].joint_materials.nope: no joint material named 'nope'"),
+        "{msg}"
+    );
+}
+
+/// Gravity turned on by a stage loads a column of three blocks with its weight: the normal force
+/// across each joint is the weight above it, for deformable blocks (zone weights at the nodes) and
+/// rigid ones (block weights).
+#[test]
+fn a_stage_turns_gravity_on() {
+    for mode in ["deformable", "rigid"] {
+        let text = format!(
+            r#"{{
+            "name": "column",
+            "materials": {{ "rock": {{ "density": 2500, "young": 10e9, "poisson": 0.25 }} }},
+            "region": {{ "polygon": [[0, 0], [1, 0], [1, 3], [0, 3]], "edge_names": ["base", "right", "top", "left"],
+                        "material": "rock" }},
+            "zoning": {{ "edge_at_excavation": 0.25, "edge_far": 0.25 }},
+            "joint_materials": {{ "bedding": {{ "normal_stiffness": 1e11, "shear_stiffness": 1e11, "friction": 30 }} }},
+            "joint_sets": [{{ "dip": 0, "spacing": 1, "material": "bedding" }}],
+            "blocks": {{ "mode": "{mode}" }},
+            "boundary": [{{ "part": "base", "fix": "xy" }}, {{ "part": "left", "fix": "x" }}, {{ "part": "right", "fix": "x" }}],
+            "solve": {{ "ratio": 1e-7 }},
+            "stages": [ {{ "name": "weightless" }}, {{ "name": "gravity on", "gravity": [0, -9.81] }} ]
+        }}"#
+        );
+        let sc = Scene::from_json(&text, "column").unwrap();
+        let out = std::env::temp_dir().join(format!("adit_gravity_stage_{mode}"));
+        let _ = std::fs::remove_dir_all(&out);
+        let r = adit::run_scene(&sc, &out, &mut Quiet).unwrap();
+        assert!(
+            r.summary.stages.iter().all(|s| s.status == "converged"),
+            "{mode}: {:?}",
+            r.summary.stages
+        );
+        let (m, c) = (&r.built.model, &r.built.model.contacts);
+        for (joint_y, depth) in [(1.0, 2.0), (2.0, 1.0)] {
+            let force: f64 = (0..c.len())
+                .filter(|&k| (m.nodes.pos[c.node[k] as usize][1] - joint_y).abs() < 1e-9)
+                .map(|k| c.state[k].normal * c.length[k])
+                .sum();
+            let weight = 2500.0 * 9.81 * depth;
+            assert!(
+                (-force / weight - 1.0).abs() < 0.02,
+                "{mode}: joint at {joint_y}: {force} N/m against {weight}"
+            );
+        }
+    }
+}
+
+/// A stage can weaken the rock: the elastic rock around the open tunnel becomes Mohr–Coulomb and
+/// yields; a stage cannot change a density, nor name a material the scene does not have.
+#[test]
+fn a_stage_changes_a_zone_material() {
+    let mut sc = scene();
+    sc.stages = vec![
+        serde_json::from_value(serde_json::json!({ "name": "elastic" })).unwrap(),
+        serde_json::from_value(
+            serde_json::json!({ "name": "weakened", "materials": { "rock": {
+            "density": 2500, "young": 10e9, "poisson": 0.25, "law": "mohr_coulomb",
+            "cohesion": 2e6, "friction": 30 } } }),
+        )
+        .unwrap(),
+    ];
+    let out = std::env::temp_dir().join("adit_material_stage_test");
+    let _ = std::fs::remove_dir_all(&out);
+    let r = adit::run_scene(&sc, &out, &mut Quiet).unwrap();
+    let stages = &r.summary.stages;
+    assert!(stages.iter().all(|s| s.status == "converged"), "{stages:?}");
+    let yielded = r
+        .built
+        .model
+        .zones
+        .state
+        .iter()
+        .filter(|&&s| s != 0)
+        .count();
+    assert!(yielded > 0, "no zone yielded after weakening");
+    assert!(
+        stages[1].closure["tunnel"] > 1.2 * stages[0].closure["tunnel"],
+        "{stages:?}"
+    );
+    let mut v: serde_json::Value = serde_json::json!({ "name": "heavier", "materials": { "rock": {
+        "density": 3000, "young": 10e9, "poisson": 0.25 } } });
+    // Through the loader, as a user's file would be.
+    let text = |stages: &serde_json::Value| {
+        let mut s: serde_json::Value = serde_json::from_str(SCENE_TEXT).unwrap();
+        s["stages"] = serde_json::json!([stages]);
+        s.to_string()
+    };
+    let msg = Scene::from_json(&text(&v), "t").unwrap_err().to_string();
+    assert!(
+        msg.starts_with("stages[0].materials.rock.density: a stage cannot change the density"),
+        "{msg}"
+    );
+    v["materials"] =
+        serde_json::json!({ "granite": { "density": 2500, "young": 1e9, "poisson": 0.2 } });
+    let msg = Scene::from_json(&text(&v), "t").unwrap_err().to_string();
+    assert!(
+        msg.starts_with("stages[0].materials.granite: no material named 'granite'"),
         "{msg}"
     );
 }

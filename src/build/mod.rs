@@ -24,7 +24,7 @@ use crate::joint::{
 use crate::law::{Elastic, MohrCoulomb, Null, ZoneLaw};
 use crate::model::blocks::{Blocks, NO_EDGE};
 use crate::model::{Gather, MaterialId, Model, Nodes, Zones, traction};
-use crate::scene::{BlockMode, InSitu, JointLawKind, JointMaterial, Scene, ZoneLawKind};
+use crate::scene::{BlockMode, InSitu, JointLawKind, JointMaterial, Material, Scene, ZoneLawKind};
 
 /// A model ready to cycle, with what was learnt while building it.
 pub struct Built {
@@ -132,6 +132,41 @@ fn assemble(meshed: &Meshed) -> Assembled {
     }
 }
 
+/// The zone law of a material (scene-validated).
+pub fn zone_law(m: &Material) -> Box<dyn ZoneLaw> {
+    let elastic = Elastic::from_young(m.young, m.poisson, m.density);
+    match m.law {
+        ZoneLawKind::Elastic => Box::new(elastic),
+        ZoneLawKind::MohrCoulomb => {
+            let c = m.cohesion.expect("validated");
+            let phi = m.friction.expect("validated");
+            let tension = m.tensile_strength.unwrap_or(f64::INFINITY);
+            let mut law = MohrCoulomb::new(elastic, c, phi, m.dilation, tension);
+            law.softening = m
+                .softening
+                .iter()
+                .map(|p| (p.plastic_strain, p.cohesion, p.friction.to_radians()))
+                .collect();
+            Box::new(law)
+        }
+    }
+}
+
+/// Add the weight of the zones under gravity `g` (m/s²) to their corners' applied loads: ρ g A / 3
+/// on each corner (lumped), N/m.
+pub fn add_zone_weight(nodes: &mut Nodes, zones: &Zones, laws: &[Box<dyn ZoneLaw>], g: [f64; 2]) {
+    if g == [0.0, 0.0] {
+        return;
+    }
+    for z in 0..zones.len() {
+        let w = laws[zones.material[z].0 as usize].density() * zones.area[z] / 3.0;
+        for &n in &zones.nodes[z] {
+            nodes.applied[n as usize][0] += w * g[0];
+            nodes.applied[n as usize][1] += w * g[1];
+        }
+    }
+}
+
 /// The joint law of a joint material (scene-validated).
 pub fn joint_law(j: &JointMaterial) -> Box<dyn JointLaw> {
     let (normal_stiffness, shear_stiffness) = (j.normal_stiffness, j.shear_stiffness);
@@ -176,28 +211,7 @@ pub fn build(scene: &Scene) -> anyhow::Result<Built> {
     zones.block = zone_block;
 
     let mut material_names: Vec<String> = scene.materials.keys().cloned().collect();
-    let mut laws: Vec<Box<dyn ZoneLaw>> = scene
-        .materials
-        .values()
-        .map(|m| -> Box<dyn ZoneLaw> {
-            let elastic = Elastic::from_young(m.young, m.poisson, m.density);
-            match m.law {
-                ZoneLawKind::Elastic => Box::new(elastic),
-                ZoneLawKind::MohrCoulomb => {
-                    let c = m.cohesion.expect("validated");
-                    let phi = m.friction.expect("validated");
-                    let tension = m.tensile_strength.unwrap_or(f64::INFINITY);
-                    let mut law = MohrCoulomb::new(elastic, c, phi, m.dilation, tension);
-                    law.softening = m
-                        .softening
-                        .iter()
-                        .map(|p| (p.plastic_strain, p.cohesion, p.friction.to_radians()))
-                        .collect();
-                    Box::new(law)
-                }
-            }
-        })
-        .collect();
+    let mut laws: Vec<Box<dyn ZoneLaw>> = scene.materials.values().map(zone_law).collect();
     let region_mat = material_names
         .iter()
         .position(|n| *n == scene.region.material)
@@ -235,15 +249,7 @@ pub fn build(scene: &Scene) -> anyhow::Result<Built> {
     }
 
     // Gravity: body force ρ g A / 3 on each corner (lumped).
-    if scene.gravity != [0.0, 0.0] {
-        for z in 0..zones.len() {
-            let w = laws[zones.material[z].0 as usize].density() * zones.area[z] / 3.0;
-            for &n in &zones.nodes[z] {
-                nodes.applied[n as usize][0] += w * scene.gravity[0];
-                nodes.applied[n as usize][1] += w * scene.gravity[1];
-            }
-        }
-    }
+    add_zone_weight(&mut nodes, &zones, &laws, scene.gravity);
 
     let domain = &meshed.domain;
     let names = &domain.outer_edge_names;

@@ -86,6 +86,14 @@ pub struct Stage {
     /// excavations.
     #[serde(default)]
     pub install: Vec<String>,
+    /// Zone materials changed at the start of this stage (by name, each given whole, as in
+    /// `materials`; the density must stay): every zone, rigid and simple block of that material
+    /// takes the new law and keeps its stress, yield state and plastic strain.
+    #[serde(default)]
+    pub materials: BTreeMap<String, Material>,
+    /// Gravitational acceleration from this stage on, m/s² (default: unchanged).
+    #[serde(default)]
+    pub gravity: Option<[f64; 2]>,
     /// Joint materials changed at the start of this stage (by name, each given whole, as in
     /// `joint_materials`): every contact of that material takes the new properties and keeps its
     /// state (stresses, displacements, whether it has failed), as UDEC's `change` between solves.

@@ -31,6 +31,22 @@ pub(super) fn invalid(path: impl Into<String>, reason: impl Into<String>) -> Sce
     }
 }
 
+/// A zone material at `p` (top level or a stage's change).
+fn validate_material(p: &str, m: &Material) -> Result<(), SceneError> {
+    positive(&format!("{p}.density"), m.density)?;
+    positive(&format!("{p}.young"), m.young)?;
+    if !(m.poisson > -1.0 && m.poisson < 0.5) {
+        return Err(invalid(
+            format!("{p}.poisson"),
+            format!(
+                "must satisfy -1 < ν < 0.5 (0.5 is incompressible), got {}",
+                m.poisson
+            ),
+        ));
+    }
+    validate_strength(p, m)
+}
+
 /// The Mohr–Coulomb fields of material `m` (path `p`): required and in range for that law, absent
 /// for the elastic one.
 fn validate_strength(p: &str, m: &Material) -> Result<(), SceneError> {
@@ -207,19 +223,7 @@ impl Scene {
             return Err(invalid("materials", "at least one material is needed"));
         }
         for (name, m) in &self.materials {
-            let p = format!("materials.{name}");
-            positive(&format!("{p}.density"), m.density)?;
-            positive(&format!("{p}.young"), m.young)?;
-            if !(m.poisson > -1.0 && m.poisson < 0.5) {
-                return Err(invalid(
-                    format!("{p}.poisson"),
-                    format!(
-                        "must satisfy -1 < ν < 0.5 (0.5 is incompressible), got {}",
-                        m.poisson
-                    ),
-                ));
-            }
-            validate_strength(&p, m)?;
+            validate_material(&format!("materials.{name}"), m)?;
         }
         if !self.materials.contains_key(&self.region.material) {
             return Err(invalid(
@@ -375,10 +379,12 @@ impl Scene {
                 "the mixed discretization is not available with `large_strain` yet",
             ));
         }
+        let staged = self.stages.iter().flat_map(|st| &st.materials);
         if self.zoning.mixed
             && let Some((name, m)) = self
                 .materials
                 .iter()
+                .chain(staged)
                 .find(|(_, m)| m.law == ZoneLawKind::MohrCoulomb && m.dilation > 0.0)
         {
             return Err(invalid(
@@ -416,6 +422,31 @@ impl Scene {
             for (k, name) in st.install.iter().enumerate() {
                 let q = format!("{p}.install[{k}]");
                 self.validate_install(&q, name, &done)?;
+            }
+            for (name, m) in &st.materials {
+                let q = format!("{p}.materials.{name}");
+                let Some(before) = self.materials.get(name) else {
+                    return Err(invalid(
+                        q,
+                        format!("no material named '{name}' in materials to change"),
+                    ));
+                };
+                validate_material(&q, m)?;
+                if m.density != before.density {
+                    return Err(invalid(
+                        format!("{q}.density"),
+                        format!(
+                            "a stage cannot change the density yet (it sets the masses of rigid \
+                             and simple blocks): keep {}",
+                            before.density
+                        ),
+                    ));
+                }
+            }
+            if let Some(g) = st.gravity
+                && !g.iter().all(|v| v.is_finite())
+            {
+                return Err(invalid(format!("{p}.gravity"), "must be finite"));
             }
             for (name, j) in &st.joint_materials {
                 let q = format!("{p}.joint_materials.{name}");

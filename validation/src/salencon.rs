@@ -431,6 +431,8 @@ pub fn ground_reaction_rock(
         excavate,
         support_fraction,
         install: vec![],
+        materials: Default::default(),
+        gravity: None,
         joint_materials: Default::default(),
         reset_displacements: false,
         solve: None,
