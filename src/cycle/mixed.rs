@@ -22,7 +22,7 @@
 use rayon::prelude::*;
 
 use super::{Cycle, CycleParams, corner_forces, strain_increment, velocity_gradient};
-use crate::model::Model;
+use crate::model::{Gather, Model};
 
 impl Cycle {
     /// The zone stage with the volumetric strain averaged over node patches (see the module).
@@ -46,21 +46,9 @@ impl Cycle {
                 *de = strain_increment(&velocity_gradient(g, t.map(|n| vel[n as usize])), dt)
             });
         let (strain, area) = (&self.zone_strain, &zones.area);
-        self.node_volumetric
-            .par_iter_mut()
-            .enumerate()
-            .with_min_len(1024)
-            .for_each(|(n, v)| {
-                let sum: f64 = gather
-                    .of(n)
-                    .iter()
-                    .map(|&s| {
-                        let z = s as usize / 3;
-                        area[z] * (strain[z][0] + strain[z][1])
-                    })
-                    .sum();
-                *v = sum * inv_patch[n];
-            });
+        patch_average(&mut self.node_volumetric, gather, area, inv_patch, |z| {
+            strain[z][0] + strain[z][1]
+        });
         let node_vol = &self.node_volumetric;
         zones
             .stress
@@ -82,21 +70,9 @@ impl Cycle {
                 *dp = mean_stress(s) - before - law.moduli().0 * averaged;
             });
         let zone_plastic = &self.zone_plastic_mean;
-        self.node_volumetric
-            .par_iter_mut()
-            .enumerate()
-            .with_min_len(1024)
-            .for_each(|(n, v)| {
-                let sum: f64 = gather
-                    .of(n)
-                    .iter()
-                    .map(|&s| {
-                        let z = s as usize / 3;
-                        area[z] * zone_plastic[z]
-                    })
-                    .sum();
-                *v = sum * inv_patch[n];
-            });
+        patch_average(&mut self.node_volumetric, gather, area, inv_patch, |z| {
+            zone_plastic[z]
+        });
         let node_plastic = &self.node_volumetric;
         zones
             .stress
@@ -118,6 +94,31 @@ impl Cycle {
                 corner_forces(s, g, area, f);
             });
     }
+}
+
+/// The area-weighted average over each node's patch of a zone quantity, Σ_z∋n A_z q_z / Σ_z∋n A_z,
+/// into `out` (one per node; `inv_patch` is 1 / Σ_z∋n A_z).
+fn patch_average(
+    out: &mut [f64],
+    gather: &Gather,
+    area: &[f64],
+    inv_patch: &[f64],
+    q: impl Fn(usize) -> f64 + Sync,
+) {
+    out.par_iter_mut()
+        .enumerate()
+        .with_min_len(1024)
+        .for_each(|(n, v)| {
+            let sum: f64 = gather
+                .of(n)
+                .iter()
+                .map(|&s| {
+                    let z = s as usize / 3;
+                    area[z] * q(z)
+                })
+                .sum();
+            *v = sum * inv_patch[n];
+        });
 }
 
 /// Mean stress (σxx + σyy + σzz)/3 of a zone, Pa.
