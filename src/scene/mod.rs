@@ -821,6 +821,18 @@ mod tests {
         );
         let s = Scene::from_json(&mixed(0.0), "t").unwrap();
         assert!(s.zoning.mixed && s.solve.damping.is_none());
+        // A stage cannot bring the dilation in either.
+        let staged = mixed(0.0).replace(
+            "\"zoning\"",
+            r#""stages": [{ "name": "dilatant", "materials": { "rock": { "density": 2500, "young": 1e9,
+                "poisson": 0.2, "law": "mohr_coulomb", "cohesion": 1e6, "friction": 30, "dilation": 5 } } }],
+               "zoning""#,
+        );
+        let msg = error_of(&staged);
+        assert!(
+            msg.starts_with("zoning.mixed: ") && msg.contains("= 5°"),
+            "{msg}"
+        );
     }
 
     #[test]
