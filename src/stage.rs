@@ -1,6 +1,6 @@
 //! Stages: what changes between the solves of a staged run — excavations removed, zone and joint
-//! materials and gravity changed, supports installed, the support pressure left on their walls (convergence–confinement),
-//! displacements reset.
+//! materials and gravity changed, supports installed, the support pressure left on their walls
+//! (convergence–confinement), displacements reset.
 
 use adit_meshing::BoundaryEdge;
 
@@ -36,9 +36,9 @@ impl Staging {
     }
 
     /// Apply `stage` to the model before its solve: remove the rock of the excavations it names,
-    /// give the zone and joint materials it names their new properties, change gravity, install the bolts and liners it names, set the support pressure of every excavation made so
-    /// far to `support_fraction` × the in-situ traction on its walls, and reset displacements if
-    /// asked.
+    /// give the zone and joint materials it names their new properties, change gravity, install
+    /// the bolts and liners it names, set the support pressure of every excavation made so far to
+    /// `support_fraction` × the in-situ traction on its walls, and reset displacements if asked.
     pub fn apply(&mut self, stage: &Stage, scene: &Scene, built: &mut Built) {
         for name in &stage.excavate {
             let j = scene
