@@ -5,8 +5,8 @@
 use adit_meshing::BoundaryEdge;
 
 use crate::build::{
-    Built, NOT_FILL, add_tractions, add_zone_weight, in_situ_stress, joint_law, rock_walls,
-    zone_law,
+    Built, NOT_FILL, add_body_weight, add_tractions, add_zone_weight, in_situ_stress, joint_law,
+    rock_walls, zone_law,
 };
 use crate::contact::Contacts;
 use crate::model::{FIX_X, FIX_Y, Gather, Model, traction};
@@ -64,12 +64,7 @@ impl Staging {
             let model = &mut built.model;
             let change = [g[0] - now[0], g[1] - now[1]];
             add_zone_weight(&mut model.nodes, &model.zones, &model.laws, change);
-            let bodies = &mut model.bodies;
-            for k in 0..bodies.len() {
-                let mass = model.laws[bodies.material[k].0 as usize].density() * bodies.area[k];
-                bodies.weight[k][0] += mass * change[0];
-                bodies.weight[k][1] += mass * change[1];
-            }
+            add_body_weight(&mut model.bodies, &model.laws, change);
             self.gravity = g;
         }
         for (name, spec) in &stage.joint_materials {

@@ -55,7 +55,6 @@ pub fn bodies(
             out.of_node[n] = k;
         }
         let law = laws[material[b].0 as usize].as_ref();
-        let mass = law.density() * m.area;
         out.block.push(b as u32);
         out.mode.push(mode);
         out.nodes.push(range);
@@ -63,7 +62,7 @@ pub fn bodies(
         out.velocity.push([0.0; DOFS]);
         out.mass.push(m.masses(law.density()));
         out.force.push([0.0; DOFS]);
-        out.weight.push([mass * gravity[0], mass * gravity[1]]);
+        out.weight.push([0.0; 2]);
         out.area.push(m.area);
         out.radius.push(radius);
         out.material.push(material[b]);
@@ -77,7 +76,17 @@ pub fn bodies(
         out.projector.push(None);
         out.step.push((c, c, [1.0, 0.0, 0.0, 1.0]));
     }
+    add_body_weight(&mut out, laws, gravity);
     out
+}
+
+/// Add the weight ρ A g of each rigid or simple block under gravity `g` (m/s²) to its load, N/m.
+pub fn add_body_weight(bodies: &mut Bodies, laws: &[Box<dyn ZoneLaw>], g: [f64; 2]) {
+    for k in 0..bodies.len() {
+        let mass = laws[bodies.material[k].0 as usize].density() * bodies.area[k];
+        bodies.weight[k][0] += mass * g[0];
+        bodies.weight[k][1] += mass * g[1];
+    }
 }
 
 /// Rounding radius of every node: `blocks.round` (default 1 % of the bodies' mean radius) at the

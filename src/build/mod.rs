@@ -3,6 +3,7 @@
 //! the contacts along the joints.
 
 mod bodies;
+pub use bodies::add_body_weight;
 mod boundary;
 mod geometry;
 mod supports;

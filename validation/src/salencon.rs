@@ -413,18 +413,8 @@ pub fn ground_reaction(
     factor: f64,
     fractions: &[f64],
 ) -> anyhow::Result<(Vec<GrcPoint>, CaseReport)> {
-    ground_reaction_rock(kirsch, factor, fractions, &Rock::SHIPPED)
-}
-
-/// [`ground_reaction`] for another rock and load.
-pub fn ground_reaction_rock(
-    kirsch: &Scene,
-    factor: f64,
-    fractions: &[f64],
-    rock: &Rock,
-) -> anyhow::Result<(Vec<GrcPoint>, CaseReport)> {
     let start = Instant::now();
-    let (mut sc, exact) = scene(kirsch, factor, 0.0, rock);
+    let (mut sc, exact) = scene(kirsch, factor, 0.0, &Rock::SHIPPED);
     let hole = sc.excavations[0].name.clone();
     let stage = |name: String, excavate: Vec<String>, support_fraction: f64| Stage {
         name,
