@@ -5,6 +5,7 @@ pub mod axisymmetric;
 pub mod corners;
 pub mod direct_shear;
 pub mod drop;
+pub mod flutter;
 pub mod glued;
 pub mod grains;
 pub mod gravity;
