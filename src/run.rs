@@ -68,14 +68,7 @@ pub fn run_scene(
     let mut writer = OutputWriter::new(out_dir, &scene.name)?;
     let single = [Stage {
         name: "solve".into(),
-        excavate: vec![],
-        support_fraction: 0.0,
-        install: vec![],
-        materials: Default::default(),
-        gravity: None,
-        joint_materials: Default::default(),
-        reset_displacements: false,
-        solve: None,
+        ..Default::default()
     }];
     let stages = if scene.stages.is_empty() {
         &single[..]

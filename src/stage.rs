@@ -1,16 +1,16 @@
 //! Stages: what changes between the solves of a staged run — excavations removed, zone and joint
-//! materials and gravity changed, supports installed, the support pressure left on their walls
-//! (convergence–confinement), displacements reset.
+//! materials, gravity and boundary conditions changed, supports installed, the support pressure
+//! left on their walls (convergence–confinement), displacements reset.
 
 use adit_meshing::BoundaryEdge;
 
 use crate::build::{
-    Built, NOT_FILL, add_body_weight, add_tractions, add_zone_weight, in_situ_stress, joint_law,
-    rock_walls, zone_law,
+    Built, NOT_FILL, add_body_weight, add_tractions, add_zone_weight, boundary_effect,
+    in_situ_stress, joint_law, rock_walls, zone_law,
 };
 use crate::contact::Contacts;
 use crate::model::{FIX_X, FIX_Y, Gather, Model, traction};
-use crate::scene::{Scene, Stage};
+use crate::scene::{BoundaryCondition, Scene, Stage};
 
 /// What the stages so far have done.
 #[derive(Debug, Clone, Default)]
@@ -20,6 +20,8 @@ pub struct Staging {
     support: Vec<Option<f64>>,
     /// Gravitational acceleration now, m/s².
     gravity: [f64; 2],
+    /// Boundary conditions now in force.
+    boundary: Vec<BoundaryCondition>,
 }
 
 impl Staging {
@@ -32,11 +34,13 @@ impl Staging {
                 .map(|e| (!scene.is_staged(&e.name)).then_some(0.0))
                 .collect(),
             gravity: scene.gravity,
+            boundary: scene.boundary.clone(),
         }
     }
 
     /// Apply `stage` to the model before its solve: remove the rock of the excavations it names,
-    /// give the zone and joint materials it names their new properties, change gravity, install
+    /// give the zone and joint materials it names their new properties, change gravity and the
+    /// boundary conditions, install
     /// the bolts and liners it names, set the support pressure of every excavation made so far to
     /// `support_fraction` × the in-situ traction on its walls, and reset displacements if asked.
     pub fn apply(&mut self, stage: &Stage, scene: &Scene, built: &mut Built) {
@@ -76,6 +80,9 @@ impl Staging {
                 .expect("validated: a joint material of the scene");
             built.model.joint_laws[k] = joint_law(spec);
         }
+        if let Some(list) = &stage.boundary {
+            self.change_boundary(list, scene, built);
+        }
         for name in &stage.install {
             let model = &mut built.model;
             let known = model.supports.install(name, &model.nodes.disp);
@@ -99,6 +106,44 @@ impl Staging {
         if stage.reset_displacements {
             built.model.nodes.origin.clone_from(&built.model.nodes.disp);
         }
+    }
+
+    /// Replace the boundary conditions in force by `list`: fixities only the old list set are
+    /// released, new ones hold their components still, and the loads change by the new list's
+    /// minus the old one's. Nodes of removed rock stay held; `build` refused a change of fixity at a
+    /// rigid or simple block's node.
+    fn change_boundary(&mut self, list: &[BoundaryCondition], scene: &Scene, built: &mut Built) {
+        let effect = |conditions: &[BoundaryCondition]| {
+            boundary_effect(
+                conditions,
+                scene,
+                &built.boundary,
+                &built.domain,
+                &built.part_nodes,
+                &built.model.nodes.pos,
+            )
+        };
+        let (old_fixed, old_load) = effect(&self.boundary);
+        let (new_fixed, new_load) = effect(list);
+        let model = &mut built.model;
+        let nodes = &mut model.nodes;
+        for n in 0..nodes.len() {
+            if model
+                .blocks
+                .is_removed(model.blocks.block_of_node(n as u32))
+            {
+                continue;
+            }
+            let released = old_fixed[n] & !new_fixed[n];
+            for (d, flag) in [(0, FIX_X), (1, FIX_Y)] {
+                if new_fixed[n] & flag != 0 {
+                    nodes.vel[n][d] = 0.0;
+                }
+                nodes.applied[n][d] += new_load[n][d] - old_load[n][d];
+            }
+            nodes.fixed[n] = (nodes.fixed[n] & !released) | new_fixed[n];
+        }
+        self.boundary = list.to_vec();
     }
 
     /// Mean closure (m, inward positive) of the wall of each excavation made so far: the

@@ -315,3 +315,107 @@ fn a_stage_changes_a_zone_material() {
         "{msg}"
     );
 }
+
+/// A stage replaces the boundary conditions: a block held fixed on every side under 10 MPa is put
+/// on rollers (left, base) with the in-situ stress as traction on the other two sides, and nothing
+/// moves; a later stage lowers the stress on the right to 5 MPa and the block stretches by the
+/// plane-strain Δσ (1 − ν²) L / E; held fixed again, it stays where it is.
+#[test]
+fn a_stage_switches_a_boundary_from_fixed_to_stress() {
+    let stages = [
+        r#"{ "name": "held" }"#,
+        r#"{ "name": "on stress", "boundary": [ { "part": "left", "fix": "x" }, { "part": "base", "fix": "y" },
+             { "part": "right", "normal_stress": -10e6 }, { "part": "top", "in_situ_traction": true } ] }"#,
+        r#"{ "name": "unload", "boundary": [ { "part": "left", "fix": "x" }, { "part": "base", "fix": "y" },
+             { "part": "right", "normal_stress": -5e6 }, { "part": "top", "normal_stress": -10e6 } ] }"#,
+        r#"{ "name": "held again", "boundary": [ { "part": "outer", "fix": "xy" } ] }"#,
+    ];
+    let run = |count: usize| {
+        let text = format!(
+            r#"{{
+            "name": "box",
+            "materials": {{ "rock": {{ "density": 2500, "young": 10e9, "poisson": 0.25 }} }},
+            "region": {{ "polygon": [[0, 0], [2, 0], [2, 1], [0, 1]], "edge_names": ["base", "right", "top", "left"],
+                        "material": "rock" }},
+            "zoning": {{ "edge_at_excavation": 0.25, "edge_far": 0.25 }},
+            "in_situ": {{ "sxx": -10e6, "syy": -10e6 }},
+            "boundary": [{{ "part": "outer", "fix": "xy" }}],
+            "solve": {{ "ratio": 1e-8 }},
+            "stages": [{}]
+        }}"#,
+            stages[..count].join(",")
+        );
+        let sc = Scene::from_json(&text, "box").unwrap();
+        let out = std::env::temp_dir().join(format!("adit_boundary_stage_{count}"));
+        let _ = std::fs::remove_dir_all(&out);
+        let r = adit::run_scene(&sc, &out, &mut Quiet).unwrap();
+        assert!(
+            r.summary.stages.iter().all(|s| s.status == "converged"),
+            "{:?}",
+            r.summary.stages
+        );
+        let m = &r.built.model.nodes;
+        let right: Vec<f64> = (0..m.len())
+            .filter(|&n| m.pos[n][0] == 2.0)
+            .map(|n| m.disp[n][0])
+            .collect();
+        let largest = m.disp.iter().map(|u| u[0].hypot(u[1])).fold(0.0, f64::max);
+        (right.iter().sum::<f64>() / right.len() as f64, largest)
+    };
+    let (_, at_rest) = run(2);
+    assert!(
+        at_rest < 1e-9,
+        "moved {at_rest} m on its own in-situ traction"
+    );
+    let stretch = 5e6 * (1.0 - 0.25f64.powi(2)) * 2.0 / 10e9;
+    let (unloaded, _) = run(3);
+    assert!(
+        (unloaded / stretch - 1.0).abs() < 0.01,
+        "{unloaded} m against {stretch} m"
+    );
+    let (held, _) = run(4);
+    assert!(
+        (held - unloaded).abs() < 1e-3 * stretch,
+        "{held} m after {unloaded} m"
+    );
+}
+
+/// A rigid block's fixities are folded into its constraint once: a stage that changes them is an
+/// error naming the field; a stage that changes only loads on it is fine.
+#[test]
+fn a_stage_cannot_change_the_fixity_of_a_rigid_block() {
+    let text = |boundary: &str| {
+        format!(
+            r#"{{
+            "name": "rigid",
+            "materials": {{ "rock": {{ "density": 2500, "young": 10e9, "poisson": 0.25 }} }},
+            "region": {{ "polygon": [[0, 0], [1, 0], [1, 2], [0, 2]], "edge_names": ["base", "right", "top", "left"],
+                        "material": "rock" }},
+            "zoning": {{ "edge_at_excavation": 0.25, "edge_far": 0.25 }},
+            "joint_materials": {{ "bedding": {{ "normal_stiffness": 1e10, "shear_stiffness": 1e10, "friction": 30 }} }},
+            "joint_sets": [{{ "dip": 0, "spacing": 1, "material": "bedding" }}],
+            "blocks": {{ "mode": "rigid" }},
+            "boundary": [{{ "part": "base", "fix": "xy" }}],
+            "stages": [ {{ "name": "first" }}, {{ "name": "second", "boundary": {boundary} }} ]
+        }}"#
+        )
+    };
+    let freed = Scene::from_json(&text(r#"[{ "part": "left", "fix": "x" }]"#), "rigid").unwrap();
+    let msg = adit::build::build(&freed)
+        .err()
+        .expect("refused")
+        .to_string();
+    assert!(
+        msg.starts_with("stages[1].boundary: changes the fixity"),
+        "{msg}"
+    );
+    let loaded =
+        text(r#"[{ "part": "base", "fix": "xy" }, { "part": "top", "normal_stress": -1e5 }]"#);
+    let sc = Scene::from_json(&loaded, "rigid").unwrap();
+    assert!(adit::build::build(&sc).is_ok());
+    let bad = text(r#"[{ "part": "nowhere", "fix": "x" }]"#);
+    let msg = Scene::from_json(&bad, "rigid")
+        .expect_err("refused")
+        .to_string();
+    assert!(msg.contains("stages[1].boundary[0].part"), "{msg}");
+}

@@ -2,11 +2,41 @@
 
 use std::collections::BTreeMap;
 
-use adit_meshing::{BoundaryEdge, EdgeKind};
+use adit_meshing::{BoundaryEdge, Domain, EdgeKind};
 
 use super::in_situ_stress;
 use crate::model::{FIX_X, FIX_Y, Nodes, traction};
 use crate::scene::{BoundaryCondition, Fix, Scene};
+
+/// Whether a boundary edge of `kind` belongs to the part `name`: `outer` takes every region edge,
+/// a region edge name its own, an excavation name its walls.
+pub fn edge_in_part(domain: &Domain, kind: EdgeKind, name: &str) -> bool {
+    match kind {
+        EdgeKind::Region(i) => name == "outer" || domain.outer_edge_names[i as usize] == name,
+        EdgeKind::Excavation(j) => domain.holes[j as usize].name == name,
+        EdgeKind::Joint(_) => false,
+    }
+}
+
+/// Fixity flags and consistent nodal loads (N/m) of the boundary conditions `conditions` alone, on
+/// nodes at `pos`, as `build` applies them.
+pub fn boundary_effect(
+    conditions: &[BoundaryCondition],
+    scene: &Scene,
+    boundary: &[BoundaryEdge],
+    domain: &Domain,
+    part_nodes: &BTreeMap<String, Vec<u32>>,
+    pos: &[[f64; 2]],
+) -> (Vec<u8>, Vec<[f64; 2]>) {
+    let mut scratch = Nodes::at(pos.to_vec());
+    for bc in conditions {
+        let part = bc.part.as_deref().unwrap_or("");
+        apply_condition(bc, scene, boundary, &mut scratch, part_nodes, &|k| {
+            edge_in_part(domain, k, part)
+        });
+    }
+    (scratch.fixed, scratch.applied)
+}
 
 fn fix_flags(f: Fix) -> u8 {
     match f {
@@ -17,7 +47,7 @@ fn fix_flags(f: Fix) -> u8 {
 }
 
 /// Apply one boundary condition: fixities on nodes, tractions as consistent nodal loads.
-pub(super) fn apply_condition(
+fn apply_condition(
     bc: &BoundaryCondition,
     scene: &Scene,
     boundary: &[BoundaryEdge],

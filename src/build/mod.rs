@@ -14,7 +14,7 @@ use std::collections::BTreeMap;
 
 use adit_meshing::{BoundaryEdge, Domain, EdgeKind, MeshStats};
 
-pub use boundary::add_tractions;
+pub use boundary::{add_tractions, boundary_effect, edge_in_part};
 pub use geometry::{Meshed, NOT_FILL, domain, joint_segments, mesh, zoning};
 
 use crate::contact::Contacts;
@@ -24,8 +24,10 @@ use crate::joint::{
 };
 use crate::law::{Elastic, MohrCoulomb, Null, ZoneLaw};
 use crate::model::blocks::{Blocks, NO_EDGE};
-use crate::model::{Gather, MaterialId, Model, Nodes, Zones, traction};
-use crate::scene::{BlockMode, InSitu, JointLawKind, JointMaterial, Material, Scene, ZoneLawKind};
+use crate::model::{BODY, Gather, MaterialId, Model, Nodes, Zones, traction};
+use crate::scene::{
+    BlockMode, BoundaryCondition, InSitu, JointLawKind, JointMaterial, Material, Scene, ZoneLawKind,
+};
 
 /// A model ready to cycle, with what was learnt while building it.
 pub struct Built {
@@ -253,27 +255,27 @@ pub fn build(scene: &Scene) -> anyhow::Result<Built> {
     add_zone_weight(&mut nodes, &zones, &laws, scene.gravity);
 
     let domain = &meshed.domain;
-    let names = &domain.outer_edge_names;
-    let edge_in_part = |kind: EdgeKind, name: &str| match kind {
-        EdgeKind::Region(i) => name == "outer" || names[i as usize] == name,
-        EdgeKind::Excavation(j) => domain.holes[j as usize].name == name,
-        EdgeKind::Joint(_) => false,
-    };
     let mut part_nodes = BTreeMap::new();
     for name in scene.part_names() {
         let mut list: Vec<u32> = boundary
             .iter()
-            .filter(|e| edge_in_part(e.kind, &name))
+            .filter(|e| edge_in_part(domain, e.kind, &name))
             .flat_map(|e| e.nodes)
             .collect();
         list.sort_unstable();
         list.dedup();
         part_nodes.insert(name, list);
     }
-    for bc in &scene.boundary {
-        boundary::apply_condition(bc, scene, &boundary, &mut nodes, &part_nodes, &|k| {
-            edge_in_part(k, bc.part.as_deref().unwrap_or(""))
-        });
+    let effect = |conditions: &[BoundaryCondition], pos: &[[f64; 2]]| {
+        boundary_effect(conditions, scene, &boundary, domain, &part_nodes, pos)
+    };
+    let (fixed, applied) = effect(&scene.boundary, &nodes.pos);
+    for n in 0..nodes.len() {
+        nodes.fixed[n] |= fixed[n];
+        nodes.applied[n] = [
+            nodes.applied[n][0] + applied[n][0],
+            nodes.applied[n][1] + applied[n][1],
+        ];
     }
 
     let mut bodies = bodies::bodies(
@@ -295,6 +297,28 @@ pub fn build(scene: &Scene) -> anyhow::Result<Built> {
         .map(|(k, &b)| (b, k as u32))
         .collect();
     bodies.outline = outline;
+    // A stage's boundary conditions change node fixities and loads; the fixities of a rigid or
+    // simple block's nodes are folded into its constraint here, once, so they cannot change.
+    let mut before = fixed;
+    for (i, stage) in scene.stages.iter().enumerate() {
+        let Some(list) = &stage.boundary else {
+            continue;
+        };
+        let (after, _) = effect(list, &nodes.pos);
+        let body_node =
+            (0..nodes.len()).find(|&n| nodes.fixed[n] & BODY != 0 && before[n] != after[n]);
+        if let Some(n) = body_node {
+            let p = nodes.pos[n];
+            anyhow::bail!(
+                "stages[{i}].boundary: changes the fixity of a node of a rigid or simple block at \
+                 ({:.3}, {:.3}) m, which is set once when the block is built; fix that block in the \
+                 top-level `boundary`, or make it deformable",
+                p[0],
+                p[1]
+            );
+        }
+        before = after;
+    }
     bodies.outline_body = outline_block.iter().map(|b| body_of_block[b]).collect();
 
     // Joint laws, and the material of each joint feature (sets first, then explicit joints).

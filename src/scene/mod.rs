@@ -70,7 +70,7 @@ pub struct Scene {
 }
 
 /// One stage: what changes, then a solve; each stage ends with an output step.
-#[derive(Debug, Clone, Deserialize)]
+#[derive(Debug, Clone, Default, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Stage {
     /// Name, reported in the summary.
@@ -99,6 +99,11 @@ pub struct Stage {
     /// state (stresses, displacements, whether it has failed), as UDEC's `change` between solves.
     #[serde(default)]
     pub joint_materials: BTreeMap<String, JointMaterial>,
+    /// The boundary conditions from this stage on, given whole as the top-level `boundary`, which
+    /// they replace (default: unchanged): fixities the new list drops are released, loads it drops
+    /// are removed, and its own applied.
+    #[serde(default)]
+    pub boundary: Option<Vec<BoundaryCondition>>,
     /// Measure displacements from the start of this stage on (default false).
     #[serde(default)]
     pub reset_displacements: bool,

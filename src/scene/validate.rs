@@ -365,7 +365,7 @@ impl Scene {
             }
         }
         for (i, bc) in self.boundary.iter().enumerate() {
-            self.validate_boundary(i, bc)?;
+            self.validate_boundary(&format!("boundary[{i}]"), bc)?;
         }
         validate_solve("solve", &self.solve)?;
         let large = self.solve.large_strain
@@ -424,6 +424,9 @@ impl Scene {
             }
             if let Some(spec) = &st.solve {
                 validate_solve(&format!("{p}.solve"), spec)?;
+            }
+            for (k, bc) in st.boundary.iter().flatten().enumerate() {
+                self.validate_boundary(&format!("{p}.boundary[{k}]"), bc)?;
             }
             for (k, name) in st.install.iter().enumerate() {
                 let q = format!("{p}.install[{k}]");
@@ -528,8 +531,7 @@ impl Scene {
         }
     }
 
-    fn validate_boundary(&self, i: usize, bc: &BoundaryCondition) -> Result<(), SceneError> {
-        let p = format!("boundary[{i}]");
+    fn validate_boundary(&self, p: &str, bc: &BoundaryCondition) -> Result<(), SceneError> {
         match (&bc.part, &bc.at) {
             (Some(name), None) => {
                 if !self.part_names().contains(name) {
@@ -545,22 +547,22 @@ impl Scene {
             (None, Some(_)) => {
                 if bc.load_kinds() > 0 {
                     return Err(invalid(
-                        &p,
+                        p,
                         "a point condition (`at`) can only fix velocities",
                     ));
                 }
             }
-            _ => return Err(invalid(&p, "give exactly one of `part` and `at`")),
+            _ => return Err(invalid(p, "give exactly one of `part` and `at`")),
         }
         let loads = bc.load_kinds();
         if loads > 1 {
             return Err(invalid(
-                &p,
+                p,
                 "give at most one of `stress`, `in_situ_traction`, `normal_stress`/`shear_stress`",
             ));
         }
         if loads == 0 && bc.fix.is_none() {
-            return Err(invalid(&p, "neither a fixity nor a load is given"));
+            return Err(invalid(p, "neither a fixity nor a load is given"));
         }
         for (f, v) in [
             ("normal_stress", bc.normal_stress),

@@ -420,12 +420,7 @@ pub fn ground_reaction(
         name,
         excavate,
         support_fraction,
-        install: vec![],
-        materials: Default::default(),
-        gravity: None,
-        joint_materials: Default::default(),
-        reset_displacements: false,
-        solve: None,
+        ..Default::default()
     };
     sc.stages = std::iter::once(stage("excavate, supported".into(), vec![hole.clone()], 1.0))
         .chain(
