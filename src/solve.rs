@@ -117,8 +117,12 @@ impl Solver {
             max_force: 0.0,
         };
         let every = self.spec.monitor_every;
+        let ramp = Ramp::start(self.spec.ramp, model, &mut self.cycle, &self.params);
         let mut cycle = 0u64;
         let status = loop {
+            if let Some(ramp) = &ramp {
+                ramp.apply(cycle, model);
+            }
             let detections = self.cycle.detections;
             self.cycle.run(model, &self.params);
             cycle += 1;
@@ -147,7 +151,7 @@ impl Solver {
                 };
                 history.push(row);
                 observer.monitored(&row);
-                if last.ratio <= self.spec.ratio {
+                if last.ratio <= self.spec.ratio && cycle > self.spec.ramp {
                     break Status::Converged;
                 }
             }
@@ -163,6 +167,57 @@ impl Solver {
             cycles: cycle,
             history,
             final_ratio: last.ratio,
+        }
+    }
+}
+
+/// Gradual release of the out-of-balance forces F0 a static solve starts with (`solve.ramp`):
+/// at cycle c < N the nodes carry their applied loads minus (1 − c/N) F0, so the net force starts
+/// at zero and grows linearly to the true one, as when a load is applied slowly (FLAC's gradual
+/// relaxation of an excavation's forces works the same way). F0 is the nodal force of the zones,
+/// contacts and supports in the state the solve starts from, with the loads; a rigid or simple
+/// block's own weight and stress terms are not ramped.
+struct Ramp {
+    cycles: u64,
+    applied: Vec<[f64; 2]>,
+    unbalanced: Vec<[f64; 2]>,
+}
+
+impl Ramp {
+    fn start(
+        cycles: u64,
+        model: &mut Model,
+        cycle: &mut Cycle,
+        params: &CycleParams,
+    ) -> Option<Ramp> {
+        if cycles == 0 {
+            return None;
+        }
+        cycle.prime(model, params);
+        let unbalanced = (0..model.nodes.len())
+            .map(|n| cycle.node_force(model, n))
+            .collect();
+        Some(Ramp {
+            cycles,
+            applied: model.nodes.applied.clone(),
+            unbalanced,
+        })
+    }
+
+    /// Set the loads for cycle `c` (the applied loads themselves from cycle N on).
+    fn apply(&self, c: u64, model: &mut Model) {
+        if c > self.cycles {
+            return;
+        }
+        let held = 1.0 - c as f64 / self.cycles as f64;
+        for ((a, full), f0) in model
+            .nodes
+            .applied
+            .iter_mut()
+            .zip(&self.applied)
+            .zip(&self.unbalanced)
+        {
+            *a = [full[0] - held * f0[0], full[1] - held * f0[1]];
         }
     }
 }

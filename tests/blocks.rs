@@ -344,3 +344,71 @@ fn fresh_contacts_found_deep_start_at_zero_overlap() {
         }
     }
 }
+
+/// A column cut by a joint at 25° (φ = 30°: it holds) on rollers under 1 MPa on its top (issue 13,
+/// defect 7): the joint carries σn = cos²25° and τ = sin25° cos25° MPa (0.383 MPa) along its
+/// length, and the top settles by the joint's closure and shear, (σn cos25° + τ sin25°)/k, plus
+/// the blocks' own plane-strain shortening (1 − ν²) σ H / E (none for rigid blocks). Rigid blocks
+/// get it at once. Simple blocks, released at once, strain before the load reaches the block below,
+/// and their joint's ends slipped on the way (τ from 0.368 to 0.400 MPa); a ramp of the solve's
+/// out-of-balance forces over 5 000 cycles (`solve.ramp`) takes the path of a slow load.
+#[test]
+fn column_cut_by_an_inclined_joint_holds_without_slipping() {
+    let t = 25f64.to_radians();
+    for (mode, ramp) in [("rigid", 0), ("simple", 5000)] {
+        let text = format!(
+            r#"{{
+            "name": "inclined",
+            "materials": {{ "rock": {{ "density": 2500, "young": 10e9, "poisson": 0.25 }} }},
+            "region": {{ "polygon": [[0, 0], [1, 0], [1, 3], [0, 3]], "edge_names": ["base", "right", "top", "left"],
+                        "material": "rock" }},
+            "zoning": {{ "edge_at_excavation": 0.25, "edge_far": 0.25 }},
+            "joint_materials": {{ "j": {{ "normal_stiffness": 1e10, "shear_stiffness": 1e10, "friction": 30 }} }},
+            "joints": [{{ "from": [0, {y0}], "to": [1, {y1}], "material": "j" }}],
+            "blocks": {{ "mode": "{mode}" }},
+            "boundary": [{{ "part": "base", "fix": "y" }}, {{ "at": [0, 0], "fix": "x" }},
+                         {{ "part": "top", "normal_stress": -1e6 }}],
+            "solve": {{ "ratio": 1e-8, "ramp": {ramp} }}
+        }}"#,
+            y0 = 1.5 - 0.5 * t.tan(),
+            y1 = 1.5 + 0.5 * t.tan()
+        );
+        let scene = Scene::from_json(&text, "inclined").unwrap();
+        let mut b = build(&scene).unwrap();
+        let mut solver = Solver::new(&mut b.model, &scene.solve, 0);
+        let sol = solver.solve(&mut b.model, &mut Quiet);
+        assert_eq!(sol.status, Status::Converged, "{mode}: {:?}", sol.status);
+        let (sn, tau) = (t.cos().powi(2) * 1e6, t.sin() * t.cos() * 1e6);
+        let c = &b.model.contacts;
+        assert!(!c.is_empty());
+        for k in 0..c.len() {
+            let s = &c.state[k];
+            assert!(
+                (s.shear.abs() / tau - 1.0).abs() < 1e-2,
+                "{mode}: τ {}",
+                s.shear
+            );
+            assert!(
+                (-s.normal / sn - 1.0).abs() < 2e-2,
+                "{mode}: σn {}",
+                s.normal
+            );
+        }
+        let m = &b.model.nodes;
+        let top: Vec<f64> = (0..m.len())
+            .filter(|&n| m.pos[n][1] == 3.0)
+            .map(|n| -m.disp[n][1])
+            .collect();
+        let settlement = top.iter().sum::<f64>() / top.len() as f64;
+        let blocks = if mode == "rigid" {
+            0.0
+        } else {
+            (1.0 - 0.0625) * 1e6 * 3.0 / 10e9
+        };
+        let exact = (sn * t.cos() + tau * t.sin()) / 1e10 + blocks;
+        assert!(
+            (settlement / exact - 1.0).abs() < 5e-3,
+            "{mode}: {settlement} m against {exact} m"
+        );
+    }
+}

@@ -106,6 +106,16 @@ impl Cycle {
         self.seconds.motion += (t5 - t4).as_secs_f64();
     }
 
+    /// Fill the zone, contact and support forces of the state as it is, without moving it: the
+    /// force stages with a zero step (zero strain and displacement increments), so `node_force`
+    /// gives the out-of-balance force of a state before its first cycle.
+    pub fn prime(&mut self, model: &mut Model, p: &CycleParams) {
+        let still = CycleParams { dt: 0.0, ..*p };
+        self.contact_forces(model, &still);
+        self.zone_forces(model, &still);
+        self.structural_forces(model, &still);
+    }
+
     /// Structural stage: bolts and liners take the rock's displacements, push back on the rock
     /// through the support slots, and move their own nodes (`support::Supports::cycle`).
     pub fn structural_forces(&mut self, model: &mut Model, p: &CycleParams) {

@@ -561,6 +561,11 @@ pub struct SolveSpec {
     /// rate), for large rotations and displacements; default false (small strain: zones keep
     /// their original shape, exact for small rotations and cheaper).
     pub large_strain: bool,
+    /// Cycles over which a static solve releases the out-of-balance forces it starts with
+    /// (default 0: at once). The model then passes through near-equilibrium states, the path a
+    /// slowly applied change takes, which friction and plasticity remember; the solve cannot
+    /// converge before the ramp ends.
+    pub ramp: u64,
 }
 
 /// Solution mode.
@@ -605,6 +610,7 @@ impl Default for SolveSpec {
             safety_factor: 0.8,
             monitor_every: 10,
             large_strain: false,
+            ramp: 0,
         }
     }
 }
@@ -837,6 +843,30 @@ mod tests {
         assert!(
             msg.starts_with("zoning.mixed: ") && msg.contains("= 5°"),
             "{msg}"
+        );
+    }
+
+    /// A ramp is for static solves and must leave cycles to converge in.
+    #[test]
+    fn ramp_is_static_and_shorter_than_the_cycle_limit() {
+        let with = |solve: &str| {
+            let text = format!(
+                r#"{{ "name": "r", "materials": {{ "rock": {{ "density": 2500, "young": 1e9, "poisson": 0.2 }} }},
+                    "region": {{ "polygon": [[0, 0], [1, 0], [1, 1], [0, 1]], "material": "rock" }},
+                    "zoning": {{ "edge_at_excavation": 0.25, "edge_far": 0.25 }}, "solve": {solve} }}"#
+            );
+            Scene::from_json(&text, "r").err().map(|e| e.to_string())
+        };
+        assert_eq!(with(r#"{ "ramp": 1000 }"#), None);
+        let dynamic = with(r#"{ "mode": "dynamic", "ramp": 1000 }"#).unwrap();
+        assert!(
+            dynamic.starts_with("solve.ramp: only a static solve"),
+            "{dynamic}"
+        );
+        let long = with(r#"{ "ramp": 1000, "max_cycles": 1000 }"#).unwrap();
+        assert!(
+            long.starts_with("solve.ramp: 1000 cycles leave none"),
+            "{long}"
         );
     }
 

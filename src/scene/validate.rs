@@ -3,7 +3,8 @@
 use thiserror::Error;
 
 use super::{
-    BoundaryCondition, JointLawKind, JointMaterial, Material, Scene, SolveSpec, ZoneLawKind,
+    BoundaryCondition, JointLawKind, JointMaterial, Material, Scene, SolveMode, SolveSpec,
+    ZoneLawKind,
 };
 
 /// Why a scene cannot be used.
@@ -195,6 +196,21 @@ fn validate_solve(p: &str, v: &SolveSpec) -> Result<(), SceneError> {
     }
     if v.monitor_every == 0 {
         return Err(invalid(format!("{p}.monitor_every"), "must be at least 1"));
+    }
+    if v.ramp > 0 && v.mode == SolveMode::Dynamic {
+        return Err(invalid(
+            format!("{p}.ramp"),
+            "only a static solve ramps its out-of-balance forces (a dynamic run follows real time)",
+        ));
+    }
+    if v.ramp >= v.max_cycles {
+        return Err(invalid(
+            format!("{p}.ramp"),
+            format!(
+                "{} cycles leave none of max_cycles = {} to converge in",
+                v.ramp, v.max_cycles
+            ),
+        ));
     }
     Ok(())
 }
