@@ -218,13 +218,32 @@ pub fn run(kirsch: &Scene, factor: f64, pi: f64) -> anyhow::Result<CaseReport> {
 
 /// [`run`] for another rock and load.
 pub fn run_rock(kirsch: &Scene, factor: f64, pi: f64, rock: &Rock) -> anyhow::Result<CaseReport> {
-    Ok(measure(kirsch, factor, pi, rock)?.0)
+    Ok(measure(kirsch, factor, pi, rock, 0)?.0)
+}
+
+/// [`run_rock`] with the hole's out-of-balance forces released over `ramp` cycles
+/// (`solve.ramp`: the quasi-static path of a slow excavation).
+pub fn run_rock_ramped(
+    kirsch: &Scene,
+    factor: f64,
+    rock: &Rock,
+    ramp: u64,
+) -> anyhow::Result<CaseReport> {
+    Ok(measure(kirsch, factor, 0.0, rock, ramp)?.0)
 }
 
 /// [`run_rock`], with the wall displacement over the closed form's, u_h / u.
-fn measure(kirsch: &Scene, factor: f64, pi: f64, rock: &Rock) -> anyhow::Result<(CaseReport, f64)> {
+fn measure(
+    kirsch: &Scene,
+    factor: f64,
+    pi: f64,
+    rock: &Rock,
+    ramp: u64,
+) -> anyhow::Result<(CaseReport, f64)> {
     let start = Instant::now();
-    let (sc, exact) = scene(kirsch, factor, pi, rock);
+    let (mut sc, exact) = scene(kirsch, factor, pi, rock);
+    sc.solve.ramp = ramp;
+    sc.solve.max_cycles += ramp;
     let mut b = build(&sc)?;
     let mut solver = Solver::new(&mut b.model, &sc.solve, 0);
     let sol = solver.solve(&mut b.model, &mut Quiet);
@@ -329,7 +348,7 @@ fn closure_and_radius(
     factor: f64,
     rock: &Rock,
 ) -> anyhow::Result<(f64, f64, CaseReport)> {
-    let (report, ratio) = measure(kirsch, factor, 0.0, rock)?;
+    let (report, ratio) = measure(kirsch, factor, 0.0, rock, 0)?;
     let radius = report.errors["plastic_radius"];
     Ok((ratio - 1.0, radius, report))
 }
