@@ -9,7 +9,7 @@ use crate::build::{
     in_situ_stress, joint_law, rock_walls, zone_law,
 };
 use crate::contact::Contacts;
-use crate::model::{FIX_X, FIX_Y, Gather, Model, traction};
+use crate::model::{FIX_X, FIX_Y, Gather, MaterialId, Model, traction};
 use crate::scene::{BoundaryCondition, Scene, Stage};
 
 /// What the stages so far have done.
@@ -22,6 +22,8 @@ pub struct Staging {
     gravity: [f64; 2],
     /// Boundary conditions now in force.
     boundary: Vec<BoundaryCondition>,
+    /// Stages applied so far.
+    applied: usize,
 }
 
 impl Staging {
@@ -35,6 +37,7 @@ impl Staging {
                 .collect(),
             gravity: scene.gravity,
             boundary: scene.boundary.clone(),
+            applied: 0,
         }
     }
 
@@ -62,6 +65,16 @@ impl Staging {
                 .position(|n| n == name)
                 .expect("validated: a material of the scene");
             built.model.laws[k] = zone_law(spec);
+        }
+        // The stage's regions, resolved when the model was built (none for a scene without stages).
+        let regions = built
+            .stage_materials
+            .get(self.applied)
+            .cloned()
+            .unwrap_or_default();
+        self.applied += 1;
+        for (b, m) in regions {
+            set_block_material(&mut built.model, b as usize, m);
         }
         if let Some(g) = stage.gravity {
             let now = self.gravity;
@@ -180,6 +193,21 @@ impl Staging {
     /// The support fraction now applied (that of the last stage).
     pub fn support_fraction(&self) -> f64 {
         self.support.iter().flatten().copied().next().unwrap_or(0.0)
+    }
+}
+
+/// Give block `b` zone material `m`, keeping its stress, yield state and plastic strain; removed
+/// rock keeps its null law.
+fn set_block_material(model: &mut Model, b: usize, m: MaterialId) {
+    if model.blocks.is_removed(b) {
+        return;
+    }
+    let (z0, z1) = (model.blocks.zone_start[b], model.blocks.zone_start[b + 1]);
+    for z in z0 as usize..z1 as usize {
+        model.zones.material[z] = m;
+    }
+    if let Some(k) = model.bodies.block.iter().position(|&bb| bb as usize == b) {
+        model.bodies.material[k] = m;
     }
 }
 

@@ -419,3 +419,78 @@ fn a_stage_cannot_change_the_fixity_of_a_rigid_block() {
         .to_string();
     assert!(msg.contains("stages[1].boundary[0].part"), "{msg}");
 }
+
+/// A stage gives the top block of a confined column of three another material (UDEC's
+/// `change mat` over a range) and loads the column: it shortens by σ h / M per block with
+/// M = E(1 − ν)/((1 + ν)(1 − 2ν)) of each block's material, plus σ/kn per joint. A region
+/// reaching a block of another density, or naming no material, is refused naming the field.
+#[test]
+fn a_stage_gives_a_region_another_material() {
+    let text = |region: &str| {
+        format!(
+            r#"{{
+            "name": "column",
+            "materials": {{ "rock": {{ "density": 2500, "young": 10e9, "poisson": 0.25 }},
+                            "stiff": {{ "density": 2500, "young": 40e9, "poisson": 0.25 }},
+                            "heavy": {{ "density": 3000, "young": 40e9, "poisson": 0.25 }} }},
+            "region": {{ "polygon": [[0, 0], [1, 0], [1, 3], [0, 3]], "edge_names": ["base", "right", "top", "left"],
+                        "material": "rock" }},
+            "zoning": {{ "edge_at_excavation": 0.25, "edge_far": 0.25 }},
+            "joint_materials": {{ "bedding": {{ "normal_stiffness": 1e11, "shear_stiffness": 1e11, "friction": 30 }} }},
+            "joint_sets": [{{ "dip": 0, "spacing": 1, "material": "bedding" }}],
+            "boundary": [{{ "part": "base", "fix": "y" }}, {{ "part": "left", "fix": "x" }}, {{ "part": "right", "fix": "x" }}],
+            "solve": {{ "ratio": 1e-8 }},
+            "stages": [ {{ "name": "as built" }},
+                        {{ "name": "stiff top, loaded", "regions": [{region}],
+                           "boundary": [{{ "part": "base", "fix": "y" }}, {{ "part": "left", "fix": "x" }},
+                                        {{ "part": "right", "fix": "x" }}, {{ "part": "top", "normal_stress": -1e6 }}] }} ]
+        }}"#
+        )
+    };
+    let sc = Scene::from_json(
+        &text(r#"{ "at": [0.5, 2.5], "material": "stiff" }"#),
+        "column",
+    )
+    .unwrap();
+    let out = std::env::temp_dir().join("adit_region_stage");
+    let _ = std::fs::remove_dir_all(&out);
+    let r = adit::run_scene(&sc, &out, &mut Quiet).unwrap();
+    assert!(
+        r.summary.stages.iter().all(|s| s.status == "converged"),
+        "{:?}",
+        r.summary.stages
+    );
+    let m = &r.built.model.nodes;
+    let top: Vec<f64> = (0..m.len())
+        .filter(|&n| m.pos[n][1] == 3.0)
+        .map(|n| -m.disp[n][1])
+        .collect();
+    let settlement = top.iter().sum::<f64>() / top.len() as f64;
+    let modulus = |e: f64| e * 0.75 / (1.25 * 0.5);
+    let exact = 1e6 * (2.0 / modulus(10e9) + 1.0 / modulus(40e9) + 2.0 / 1e11);
+    assert!(
+        (settlement / exact - 1.0).abs() < 5e-3,
+        "{settlement} m against {exact} m"
+    );
+    let heavy = Scene::from_json(
+        &text(r#"{ "polygon": [[0, 2], [1, 2], [1, 3], [0, 3]], "material": "heavy" }"#),
+        "column",
+    )
+    .unwrap();
+    let msg = adit::build::build(&heavy)
+        .err()
+        .expect("refused")
+        .to_string();
+    assert!(
+        msg.starts_with("stages[1].regions[0].material: 'heavy' has density 3000"),
+        "{msg}"
+    );
+    let unknown = text(r#"{ "at": [0.5, 2.5], "material": "granite" }"#);
+    let msg = Scene::from_json(&unknown, "column")
+        .expect_err("refused")
+        .to_string();
+    assert!(
+        msg.contains("stages[1].regions[0].material: no material named 'granite'"),
+        "{msg}"
+    );
+}

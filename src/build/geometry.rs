@@ -231,25 +231,27 @@ fn mesh_blocks(scene: &Scene) -> Result<Meshed, MeshError> {
     })
 }
 
-/// Mode of each block: the scene's `blocks.mode`, overridden by the regions in order (a polygon
-/// takes the blocks whose centroid lies inside it, a point the block containing it).
+/// Whether a region selects block `b`: a polygon the blocks whose centroid lies inside it, a
+/// point the block containing it.
+pub fn selects(b: &Block, polygon: &Option<Vec<[f64; 2]>>, at: Option<[f64; 2]>) -> bool {
+    match (polygon, at) {
+        (Some(poly), _) => Polygon::new(poly.clone()).contains(b.outer.centroid()),
+        (None, Some(p)) => b.outer.contains(p) && !b.holes.iter().any(|h| h.contains(p)),
+        (None, None) => false,
+    }
+}
+
+/// Mode of each block: the scene's `blocks.mode`, overridden by the regions in order.
 pub fn block_modes(scene: &Scene, blocks: &[Block]) -> Vec<BlockMode> {
-    let inside =
-        |b: &Block, p: [f64; 2]| b.outer.contains(p) && !b.holes.iter().any(|h| h.contains(p));
     blocks
         .iter()
         .map(|b| {
-            let c = b.outer.centroid();
             scene
                 .blocks
                 .regions
                 .iter()
                 .rev()
-                .find(|r| match (&r.polygon, r.at) {
-                    (Some(poly), _) => Polygon::new(poly.clone()).contains(c),
-                    (None, Some(p)) => inside(b, p),
-                    (None, None) => false,
-                })
+                .find(|r| selects(b, &r.polygon, r.at))
                 .map_or(scene.blocks.mode, |r| r.mode)
         })
         .collect()

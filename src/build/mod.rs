@@ -6,6 +6,7 @@ mod bodies;
 pub use bodies::add_body_weight;
 mod boundary;
 mod geometry;
+mod stage_regions;
 mod supports;
 #[cfg(test)]
 mod tests;
@@ -39,6 +40,8 @@ pub struct Built {
     pub boundary: Vec<BoundaryEdge>,
     /// The validated domain the blocks cover.
     pub domain: Domain,
+    /// For each stage, the blocks its `regions` give another zone material, with that material.
+    pub stage_materials: Vec<Vec<(u32, MaterialId)>>,
     /// Things worth a warning: sliver blocks, joints absorbed into blocks.
     pub warnings: Vec<String>,
 }
@@ -242,6 +245,12 @@ pub fn build(scene: &Scene) -> anyhow::Result<Built> {
             None => MaterialId(region_mat as u32),
         })
         .collect();
+    let stage_materials = stage_regions::stage_materials(
+        scene,
+        &meshed.blocking.blocks,
+        &block_material,
+        &material_id,
+    )?;
     let poisson: Vec<f64> = scene.materials.values().map(|m| m.poisson).collect();
     let stress_at =
         |c: [f64; 2], m: MaterialId| in_situ_stress(&scene.in_situ, c[1], poisson[m.0 as usize]);
@@ -505,6 +514,7 @@ pub fn build(scene: &Scene) -> anyhow::Result<Built> {
         part_nodes,
         boundary,
         domain: meshed.domain,
+        stage_materials,
         warnings,
     })
 }

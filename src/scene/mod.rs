@@ -99,6 +99,10 @@ pub struct Stage {
     /// state (stresses, displacements, whether it has failed), as UDEC's `change` between solves.
     #[serde(default)]
     pub joint_materials: BTreeMap<String, JointMaterial>,
+    /// Blocks that take another zone material at the start of this stage (UDEC's `change mat`
+    /// over a range), in order: later regions override earlier ones.
+    #[serde(default)]
+    pub regions: Vec<MaterialRegion>,
     /// The boundary conditions from this stage on, given whole as the top-level `boundary`, which
     /// they replace (default: unchanged): fixities the new list drops are released, loads it drops
     /// are removed, and its own applied.
@@ -409,6 +413,20 @@ pub struct ModeRegion {
     #[serde(default)]
     pub polygon: Option<Vec<[f64; 2]>>,
     /// Point (m): the block containing it takes the mode.
+    #[serde(default)]
+    pub at: Option<[f64; 2]>,
+}
+
+/// The blocks of one region, or the block at one point, that take another zone material.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct MaterialRegion {
+    /// Name of the material they take (one of `materials`).
+    pub material: String,
+    /// Polygon (m): blocks whose centroid lies inside.
+    #[serde(default)]
+    pub polygon: Option<Vec<[f64; 2]>>,
+    /// Point (m): the block containing it.
     #[serde(default)]
     pub at: Option<[f64; 2]>,
 }

@@ -215,6 +215,25 @@ fn validate_solve(p: &str, v: &SolveSpec) -> Result<(), SceneError> {
     Ok(())
 }
 
+/// A selection of blocks: exactly one of a polygon (at least 3 finite vertices) and a point.
+fn validate_selection(
+    p: &str,
+    polygon: &Option<Vec<[f64; 2]>>,
+    at: &Option<[f64; 2]>,
+) -> Result<(), SceneError> {
+    let finite = |v: &[f64; 2]| v.iter().all(|x| x.is_finite());
+    match (polygon, at) {
+        (Some(poly), None) if poly.len() >= 3 && poly.iter().all(finite) => Ok(()),
+        (Some(_), None) => Err(invalid(
+            format!("{p}.polygon"),
+            "needs at least 3 vertices, all finite",
+        )),
+        (None, Some(v)) if finite(v) => Ok(()),
+        (None, Some(_)) => Err(invalid(format!("{p}.at"), "must be finite")),
+        _ => Err(invalid(p, "give exactly one of `polygon` and `at`")),
+    }
+}
+
 fn positive(path: &str, v: f64) -> Result<(), SceneError> {
     if v > 0.0 && v.is_finite() {
         Ok(())
@@ -359,15 +378,7 @@ impl Scene {
             positive("blocks.round", r)?;
         }
         for (i, r) in self.blocks.regions.iter().enumerate() {
-            let p = format!("blocks.regions[{i}]");
-            match (&r.polygon, &r.at) {
-                (Some(poly), None) if poly.len() >= 3 => {}
-                (Some(_), None) => {
-                    return Err(invalid(format!("{p}.polygon"), "needs at least 3 vertices"));
-                }
-                (None, Some(_)) => {}
-                _ => return Err(invalid(p, "give exactly one of `polygon` and `at`")),
-            }
+            validate_selection(&format!("blocks.regions[{i}]"), &r.polygon, &r.at)?;
         }
         let s = &self.in_situ;
         for (f, v) in [
@@ -440,6 +451,16 @@ impl Scene {
             }
             if let Some(spec) = &st.solve {
                 validate_solve(&format!("{p}.solve"), spec)?;
+            }
+            for (k, r) in st.regions.iter().enumerate() {
+                let q = format!("{p}.regions[{k}]");
+                validate_selection(&q, &r.polygon, &r.at)?;
+                if !self.materials.contains_key(&r.material) {
+                    return Err(invalid(
+                        format!("{q}.material"),
+                        format!("no material named '{}' in materials", r.material),
+                    ));
+                }
             }
             for (k, bc) in st.boundary.iter().flatten().enumerate() {
                 self.validate_boundary(&format!("{p}.boundary[{k}]"), bc)?;
