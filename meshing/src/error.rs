@@ -23,4 +23,7 @@ pub enum MeshError {
     /// The triangulator failed or could not reach the requested quality.
     #[error("triangulation failed: {0}")]
     Triangulation(String),
+    /// Refinement at the requested minimum angle ran out of its vertex budget.
+    #[error("triangulation failed: {0}")]
+    Refinement(String),
 }

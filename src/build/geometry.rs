@@ -145,7 +145,9 @@ fn field_of(scene: &Scene, err: &MeshError) -> String {
         | MeshError::SelfIntersecting { shape, .. }
         | MeshError::HoleOutside { shape, .. } => shape.as_str(),
         MeshError::HolesOverlap { a, .. } => a.as_str(),
-        MeshError::Zoning(_) | MeshError::Triangulation(_) => return "zoning".into(),
+        MeshError::Zoning(_) | MeshError::Triangulation(_) | MeshError::Refinement(_) => {
+            return "zoning".into();
+        }
     };
     if let Some(i) = scene.excavations.iter().position(|e| e.name == shape) {
         return format!("excavations[{i}]");

@@ -452,6 +452,17 @@ pub fn build(scene: &Scene) -> anyhow::Result<Built> {
             blk.area()
         ));
     }
+    for (b, mesh) in meshed.meshes.iter().enumerate() {
+        if meshed.modes[b] == BlockMode::Deformable && mesh.angle_limit_deg < scene.zoning.min_angle
+        {
+            let c = meshed.blocking.blocks[b].outer.centroid();
+            warnings.push(format!(
+                "block {b} (centroid ({:.3}, {:.3}) m): refinement to zoning.min_angle = {}° did not \
+                 end (its constraints meet at small angles); zoned aiming at {}°",
+                c[0], c[1], scene.zoning.min_angle, mesh.angle_limit_deg
+            ));
+        }
+    }
     if meshed.blocking.absorbed_joint_length > 0.0 {
         warnings.push(format!(
             "{:.3} m of joint traces end inside blocks and were absorbed into them",
