@@ -42,10 +42,10 @@ impl Staging {
     }
 
     /// Apply `stage` to the model before its solve: remove the rock of the excavations it names,
-    /// give the zone and joint materials it names their new properties, change gravity and the
-    /// boundary conditions, install
-    /// the bolts and liners it names, set the support pressure of every excavation made so far to
-    /// `support_fraction` × the in-situ traction on its walls, and reset displacements if asked.
+    /// give the zone and joint materials it names their new properties and its regions their new
+    /// material, change gravity and the boundary conditions, install the bolts and liners it
+    /// names, set the support pressure of every excavation made so far to `support_fraction` × the
+    /// in-situ traction on its walls, and reset displacements if asked.
     pub fn apply(&mut self, stage: &Stage, scene: &Scene, built: &mut Built) {
         for name in &stage.excavate {
             let j = scene
