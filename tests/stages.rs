@@ -28,6 +28,19 @@ fn scene() -> Scene {
     Scene::from_json(SCENE_TEXT, "staged").unwrap()
 }
 
+/// Run `sc` into a fresh temporary folder named `folder`; every stage must converge.
+fn run_converged(sc: &Scene, folder: &str) -> adit::RunResult {
+    let out = std::env::temp_dir().join(folder);
+    let _ = std::fs::remove_dir_all(&out);
+    let r = adit::run_scene(sc, &out, &mut Quiet).unwrap();
+    let stages = &r.summary.stages;
+    assert!(
+        stages.iter().all(|s| s.status == "converged"),
+        "{folder}: {stages:?}"
+    );
+    r
+}
+
 #[test]
 fn staged_excavation_releases_the_wall_stage_by_stage() {
     let sc = scene();
@@ -239,14 +252,7 @@ fn a_stage_turns_gravity_on() {
         }}"#
         );
         let sc = Scene::from_json(&text, "column").unwrap();
-        let out = std::env::temp_dir().join(format!("adit_gravity_stage_{mode}"));
-        let _ = std::fs::remove_dir_all(&out);
-        let r = adit::run_scene(&sc, &out, &mut Quiet).unwrap();
-        assert!(
-            r.summary.stages.iter().all(|s| s.status == "converged"),
-            "{mode}: {:?}",
-            r.summary.stages
-        );
+        let r = run_converged(&sc, &format!("adit_gravity_stage_{mode}"));
         let (m, c) = (&r.built.model, &r.built.model.contacts);
         for (joint_y, depth) in [(1.0, 2.0), (2.0, 1.0)] {
             let force: f64 = (0..c.len())
@@ -276,11 +282,8 @@ fn a_stage_changes_a_zone_material() {
         )
         .unwrap(),
     ];
-    let out = std::env::temp_dir().join("adit_material_stage_test");
-    let _ = std::fs::remove_dir_all(&out);
-    let r = adit::run_scene(&sc, &out, &mut Quiet).unwrap();
+    let r = run_converged(&sc, "adit_material_stage_test");
     let stages = &r.summary.stages;
-    assert!(stages.iter().all(|s| s.status == "converged"), "{stages:?}");
     let yielded = r
         .built
         .model
@@ -346,14 +349,7 @@ fn a_stage_switches_a_boundary_from_fixed_to_stress() {
             stages[..count].join(",")
         );
         let sc = Scene::from_json(&text, "box").unwrap();
-        let out = std::env::temp_dir().join(format!("adit_boundary_stage_{count}"));
-        let _ = std::fs::remove_dir_all(&out);
-        let r = adit::run_scene(&sc, &out, &mut Quiet).unwrap();
-        assert!(
-            r.summary.stages.iter().all(|s| s.status == "converged"),
-            "{:?}",
-            r.summary.stages
-        );
+        let r = run_converged(&sc, &format!("adit_boundary_stage_{count}"));
         let m = &r.built.model.nodes;
         let right: Vec<f64> = (0..m.len())
             .filter(|&n| m.pos[n][0] == 2.0)
@@ -452,14 +448,7 @@ fn a_stage_gives_a_region_another_material() {
         "column",
     )
     .unwrap();
-    let out = std::env::temp_dir().join("adit_region_stage");
-    let _ = std::fs::remove_dir_all(&out);
-    let r = adit::run_scene(&sc, &out, &mut Quiet).unwrap();
-    assert!(
-        r.summary.stages.iter().all(|s| s.status == "converged"),
-        "{:?}",
-        r.summary.stages
-    );
+    let r = run_converged(&sc, "adit_region_stage");
     let m = &r.built.model.nodes;
     let top: Vec<f64> = (0..m.len())
         .filter(|&n| m.pos[n][1] == 3.0)

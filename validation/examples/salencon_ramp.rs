@@ -3,21 +3,13 @@
 //! (`solve.ramp`): whether the mixed zones' extra closure comes from the relaxation path.
 //! `cargo run --release -p adit-validation --example salencon_ramp` (about 4 min on 2 cores).
 
-use adit_validation::salencon::{Rock, run_rock_ramped};
+use adit_validation::salencon::{Rock, WEAK_ROCK, run_rock_ramped};
 
 fn main() -> anyhow::Result<()> {
     let kirsch = adit_validation::shipped_kirsch()?;
     for mixed in [false, true] {
         for ramp in [0, 20_000] {
-            let rock = Rock {
-                cohesion: 1e6,
-                friction_deg: 25.0,
-                dilation_deg: 0.0,
-                young: 10e9,
-                poisson: 0.3,
-                p0: 15e6,
-                mixed,
-            };
+            let rock = Rock { mixed, ..WEAK_ROCK };
             let r = run_rock_ramped(&kirsch, 0.5, &rock, ramp)?;
             println!(
                 "mixed {mixed:5} ramp {ramp:6}: |wall closure error| {:.2} %, plastic radius {:.2} %, {} cycles",

@@ -147,6 +147,18 @@ pub struct Rock {
     pub mixed: bool,
 }
 
+/// The rock of issue 13's report (c = 1 MPa, φ = 25°, ψ = 0, E = 10 GPa, ν = 0.3, p0 = 15 MPa,
+/// plain zones): a plastic zone almost three hole radii deep.
+pub const WEAK_ROCK: Rock = Rock {
+    cohesion: 1e6,
+    friction_deg: 25.0,
+    dilation_deg: 0.0,
+    young: 10e9,
+    poisson: 0.3,
+    p0: 15e6,
+    mixed: false,
+};
+
 impl Rock {
     /// The shipped case's rock and load.
     pub const SHIPPED: Rock = Rock {
@@ -536,17 +548,6 @@ mod tests {
         assert!(r.errors["grc"] < 0.05, "{r:?}");
     }
 
-    /// The rock of issue 13's report: a plastic zone almost three hole radii deep.
-    const WEAK: Rock = Rock {
-        cohesion: 1e6,
-        friction_deg: 25.0,
-        dilation_deg: 0.0,
-        young: 10e9,
-        poisson: 0.3,
-        p0: 15e6,
-        mixed: false,
-    };
-
     /// Coarse twin of the sweep: on zones twice the shipped size, plain triangles lock (closure
     /// 17 % short) and mixed ones must meet Salençon's closure within 3 % (they closed 18 % too
     /// much on the shipped mesh before static solves of mixed plastic zones were damped enough to
@@ -554,10 +555,10 @@ mod tests {
     #[test]
     fn mixed_zones_meet_salencon_where_plain_ones_lock() {
         let kirsch = crate::shipped_kirsch().unwrap();
-        let (plain, _, _) = closure_and_radius(&kirsch, 2.0, &WEAK).unwrap();
+        let (plain, _, _) = closure_and_radius(&kirsch, 2.0, &WEAK_ROCK).unwrap();
         let mixed_rock = Rock {
             mixed: true,
-            ..WEAK
+            ..WEAK_ROCK
         };
         let (mixed, radius, r) = closure_and_radius(&kirsch, 2.0, &mixed_rock).unwrap();
         eprintln!("plain {plain:+.4}, mixed {mixed:+.4}, {r:?}");
