@@ -64,9 +64,15 @@ pub struct Blocking {
     pub slivers: Vec<usize>,
 }
 
-/// Merges points closer than the tolerance (uniform hash grid).
+/// Merges points closer than the tolerance (uniform hash grid). A point merges into the nearest
+/// wall vertex within the tolerance (a region or excavation corner, or a point where a wall was
+/// split), else into the nearest other vertex: taking the first one found let a joint's crossing
+/// with a wall merge into a joint–joint crossing just off the wall while the wall's own split
+/// merged into its corner, and the joint piece then crossed the wall.
 struct VertexPool {
     pts: Vec<Point>,
+    /// Whether each vertex lies on a wall (inserted while the walls were split).
+    wall: Vec<bool>,
     grid: HashMap<(i64, i64), Vec<u32>>,
     tol: f64,
 }
@@ -79,21 +85,30 @@ impl VertexPool {
         )
     }
 
-    fn insert(&mut self, p: Point) -> u32 {
+    fn insert(&mut self, p: Point, on_wall: bool) -> u32 {
         let (cx, cy) = self.cell(p);
+        let mut best: Option<(bool, f64, u32)> = None;
         for dx in -1..=1 {
             for dy in -1..=1 {
-                let near = self.grid.get(&(cx + dx, cy + dy)).and_then(|list| {
-                    list.iter()
-                        .find(|&&v| distance(self.pts[v as usize], p) <= self.tol)
-                });
-                if let Some(&v) = near {
-                    return v;
+                for &v in self.grid.get(&(cx + dx, cy + dy)).into_iter().flatten() {
+                    let d = distance(self.pts[v as usize], p);
+                    if d > self.tol {
+                        continue;
+                    }
+                    // Wall vertices first, then the nearest; ties to the lower id (deterministic).
+                    let key = (!self.wall[v as usize], d, v);
+                    if best.is_none_or(|b| key < b) {
+                        best = Some(key);
+                    }
                 }
             }
         }
+        if let Some((_, _, v)) = best {
+            return v;
+        }
         let id = self.pts.len() as u32;
         self.pts.push(p);
+        self.wall.push(on_wall);
         self.grid.entry((cx, cy)).or_default().push(id);
         id
     }
@@ -179,6 +194,7 @@ pub fn cut_blocks_filled(
     // Split every segment at every meeting point; deduplicate edges, boundary kinds first.
     let mut pool = VertexPool {
         pts: Vec::new(),
+        wall: Vec::new(),
         grid: HashMap::new(),
         tol,
     };
@@ -186,7 +202,7 @@ pub fn cut_blocks_filled(
     // of a corner merges into it and never the corner into the crossing (which would tilt the
     // wall and could leave a block outside the region).
     for s in &segs[..walls] {
-        pool.insert(s.a);
+        pool.insert(s.a, true);
     }
     let mut edges: HashMap<(u32, u32), EdgeKind> = HashMap::new();
     let mut params = Vec::new();
@@ -201,10 +217,13 @@ pub fn cut_blocks_filled(
         params.sort_by(f64::total_cmp);
         let mut prev: Option<u32> = None;
         for &t in params.iter() {
-            let v = pool.insert([
-                s.a[0] + t * (s.b[0] - s.a[0]),
-                s.a[1] + t * (s.b[1] - s.a[1]),
-            ]);
+            let v = pool.insert(
+                [
+                    s.a[0] + t * (s.b[0] - s.a[0]),
+                    s.a[1] + t * (s.b[1] - s.a[1]),
+                ],
+                i < walls,
+            );
             if let Some(u) = prev.filter(|&u| u != v) {
                 let key = (u.min(v), u.max(v));
                 let kind = edges.entry(key).or_insert(s.kind);
