@@ -58,13 +58,7 @@ impl Staging {
             self.support[j] = Some(0.0);
         }
         for (name, spec) in &stage.materials {
-            // Zone laws are indexed in the order of the scene's `materials` (sorted names).
-            let k = scene
-                .materials
-                .keys()
-                .position(|n| n == name)
-                .expect("validated: a material of the scene");
-            built.model.laws[k] = zone_law(spec);
+            built.model.laws[index_of(&scene.materials, name)] = zone_law(spec);
         }
         // The stage's regions, resolved when the model was built (none for a scene without stages).
         let regions = built
@@ -85,13 +79,7 @@ impl Staging {
             self.gravity = g;
         }
         for (name, spec) in &stage.joint_materials {
-            // Joint laws are indexed in the order of the scene's `joint_materials` (sorted names).
-            let k = scene
-                .joint_materials
-                .keys()
-                .position(|n| n == name)
-                .expect("validated: a joint material of the scene");
-            built.model.joint_laws[k] = joint_law(spec);
+            built.model.joint_laws[index_of(&scene.joint_materials, name)] = joint_law(spec);
         }
         if let Some(list) = &stage.boundary {
             self.change_boundary(list, scene, built);
@@ -194,6 +182,15 @@ impl Staging {
     pub fn support_fraction(&self) -> f64 {
         self.support.iter().flatten().copied().next().unwrap_or(0.0)
     }
+}
+
+/// Index of the law of material `name`: zone and joint laws are indexed in the order of the
+/// scene's `materials` and `joint_materials` (sorted names).
+fn index_of<V>(materials: &std::collections::BTreeMap<String, V>, name: &str) -> usize {
+    materials
+        .keys()
+        .position(|n| n == name)
+        .expect("validated: a material of the scene")
 }
 
 /// Give block `b` zone material `m`, keeping its stress, yield state and plastic strain; removed

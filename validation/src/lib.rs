@@ -22,6 +22,7 @@ pub mod plot;
 pub mod pullout;
 pub mod random_scenes;
 pub mod readme;
+pub mod realizations;
 pub mod render;
 pub mod report;
 pub mod rotation;
