@@ -93,7 +93,7 @@ impl Solver {
             cycle: Cycle::new(model),
             params: CycleParams {
                 dt,
-                damping: damping(model, spec),
+                damping: spec.damping_coefficient(),
                 large_strain: spec.large_strain,
             },
             step,
@@ -222,18 +222,11 @@ impl Ramp {
     }
 }
 
-/// The local damping coefficient of `spec` on `model` (`SolveSpec::damping_for`: stronger for static
-/// solves of mixed zones that can yield).
-pub fn damping(model: &Model, spec: &SolveSpec) -> f64 {
-    let mixed_plastic = model.mixed.is_some() && model.laws.iter().any(|l| l.yields());
-    spec.damping_for(mixed_plastic)
-}
-
 /// Nodal and body masses and the time step for the solve mode, from the stiffness of the zones,
 /// the current contacts and the supports (`cycle::timestep`); returns Δt, s, and the step limit
 /// with real masses.
 pub fn derive_masses(model: &mut Model, spec: &SolveSpec) -> (f64, StepLimit) {
-    let alpha = damping(model, spec);
+    let alpha = spec.damping_coefficient();
     let zones_only = zone_stiffness(model);
     let mut stiffness = zones_only.clone();
     add_contact_stiffness(model, &mut stiffness);

@@ -19,10 +19,6 @@ pub trait ZoneLaw: Send + Sync {
     /// Advance `stress` (Pa), `state` (yield bit flags) and `plastic` (the accumulated plastic
     /// shear strain e^ps, dimensionless, for softening laws) by the strain increment `de`.
     fn update(&self, stress: &mut Stress, state: &mut u8, plastic: &mut f64, de: &StrainIncrement);
-    /// Whether the law can yield (its answer then depends on the loading path).
-    fn yields(&self) -> bool {
-        false
-    }
     /// Bulk and shear moduli (Pa) that bound the law's tangent stiffness, for the time step.
     fn moduli(&self) -> (f64, f64);
     /// Mass density, kg/m³.

@@ -178,10 +178,6 @@ impl ZoneLaw for MohrCoulomb {
         s[2] = by_origin[2];
     }
 
-    fn yields(&self) -> bool {
-        true
-    }
-
     fn moduli(&self) -> (f64, f64) {
         (self.elastic.bulk, self.elastic.shear)
     }

@@ -406,31 +406,6 @@ impl Scene {
                 "the mixed discretization is not available with `large_strain` yet",
             ));
         }
-        let top = self
-            .materials
-            .iter()
-            .map(|(name, m)| (format!("materials.{name}"), m));
-        let staged = self.stages.iter().enumerate().flat_map(|(i, st)| {
-            st.materials
-                .iter()
-                .map(move |(name, m)| (format!("stages[{i}].materials.{name}"), m))
-        });
-        if self.zoning.mixed
-            && let Some((path, m)) = top
-                .chain(staged)
-                .find(|(_, m)| m.law == ZoneLawKind::MohrCoulomb && m.dilation > 0.0)
-        {
-            return Err(invalid(
-                "zoning.mixed",
-                format!(
-                    "the mixed discretization is not available with a dilatant Mohr–Coulomb \
-                     material yet ({path}.dilation = {}°): its closure is too large \
-                     (Salençon's hole with ψ = 10°: +81 %); plain zones do not lock under dilatant \
-                     flow, so leave `mixed` out or set the dilation to 0",
-                    m.dilation
-                ),
-            ));
-        }
         self.validate_supports()?;
         self.validate_stages()
     }
