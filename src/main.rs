@@ -3,13 +3,22 @@
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
-use adit::build::{build, mesh};
+use std::io::Write;
+
+use adit::build::{build, build_meshed, mesh};
 use adit::output::OutputWriter;
 use adit::run::default_out_dir;
 use adit::solve::{HistoryRow, Observer};
 use adit::{Scene, run_scene};
 use clap::{Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressStyle};
+
+/// `println!` that returns the write's error instead of panicking (a reader that closed its pipe).
+macro_rules! say {
+    ($($t:tt)*) => {
+        writeln!(std::io::stdout(), $($t)*)
+    };
+}
 
 #[derive(Parser)]
 #[command(
@@ -77,11 +86,17 @@ fn run(scene_path: &Path, out: Option<PathBuf>, quiet: bool) -> anyhow::Result<b
     for w in &s.warnings {
         eprintln!("warning: {w}");
     }
-    println!(
+    say!(
         "scene {}: {} blocks ({} rigid, {} simple), {} zones, {} nodes, min angle {:.1}°",
-        s.scene, s.blocks, s.rigid_blocks, s.simple_blocks, s.zones, s.nodes, s.min_zone_angle
-    );
-    println!(
+        s.scene,
+        s.blocks,
+        s.rigid_blocks,
+        s.simple_blocks,
+        s.zones,
+        s.nodes,
+        s.min_zone_angle
+    )?;
+    say!(
         "time step: critical {:.3e} s ({}), used {:.3e} s{}",
         s.critical_timestep,
         s.critical_limiter,
@@ -91,8 +106,8 @@ fn run(scene_path: &Path, out: Option<PathBuf>, quiet: bool) -> anyhow::Result<b
         } else {
             ""
         }
-    );
-    println!(
+    )?;
+    say!(
         "{} after {} cycles, ratio {:.2e}, {:.2} s wall, {:.3e} zone-cycles/s, {:.3e} block-cycles/s",
         s.status,
         s.cycles,
@@ -100,11 +115,11 @@ fn run(scene_path: &Path, out: Option<PathBuf>, quiet: bool) -> anyhow::Result<b
         s.wall_seconds,
         s.zone_cycles_per_second,
         s.block_cycles_per_second
-    );
+    )?;
     let sup = &result.built.model.supports;
     if !sup.is_empty() {
         let loads = sup.loads();
-        println!(
+        say!(
             "supports: {} bolt segments (largest force {:.1} kN/m, {} at yield), {} liner elements \
              (largest thrust {:.2} MN/m)",
             sup.cables.segment.len(),
@@ -112,7 +127,7 @@ fn run(scene_path: &Path, out: Option<PathBuf>, quiet: bool) -> anyhow::Result<b
             loads.bolts_yielded,
             sup.liners.element.len(),
             loads.liner_thrust / 1e6
-        );
+        )?;
     }
     for st in &s.stages {
         let closure: Vec<String> = st
@@ -120,16 +135,16 @@ fn run(scene_path: &Path, out: Option<PathBuf>, quiet: bool) -> anyhow::Result<b
             .iter()
             .map(|(name, c)| format!("{name} closure {:.2} mm", 1e3 * c))
             .collect();
-        println!(
+        say!(
             "stage '{}': {} after {} cycles{}{}",
             st.name,
             st.status,
             st.cycles,
             if closure.is_empty() { "" } else { ", " },
             closure.join(", ")
-        );
+        )?;
     }
-    println!("results in {}", result.out_dir.display());
+    say!("results in {}", result.out_dir.display())?;
     if let Some(reason) = &s.reason {
         eprintln!("error: run failed: {reason}");
         return Ok(false);
@@ -137,26 +152,38 @@ fn run(scene_path: &Path, out: Option<PathBuf>, quiet: bool) -> anyhow::Result<b
     Ok(true)
 }
 
+/// Validate and build `scene_path` as `run` does before solving (supports and stages included),
+/// and print what was built with the build's warnings (the repairs made).
 fn check(scene_path: &Path) -> anyhow::Result<()> {
     let scene = load(scene_path)?;
     let meshed = mesh(&scene)?;
     let s = meshed.stats();
-    println!("scene {}: valid", scene.name);
-    println!(
-        "domain area {:.6} m², {} excavation(s)",
-        meshed.domain.area(),
-        meshed.domain.holes.len()
-    );
-    println!(
-        "blocks: {} ({} sliver(s)), {:.3} m of joint traces absorbed into blocks",
-        meshed.blocking.blocks.len(),
-        meshed.blocking.slivers.len(),
-        meshed.blocking.absorbed_joint_length
-    );
-    println!(
-        "mesh: {} zones, {} nodes, min angle {:.1}°, edges {:.4}–{:.4} m, zoned area {:.6} m²",
-        s.zones, s.nodes, s.min_angle_deg, s.min_edge, s.max_edge, s.area
-    );
+    let lines = [
+        format!("scene {}: valid", scene.name),
+        format!(
+            "domain area {:.6} m², {} excavation(s)",
+            meshed.domain.area(),
+            meshed.domain.holes.len()
+        ),
+        format!(
+            "blocks: {} ({} sliver(s)), {:.3} m of joint traces absorbed into blocks",
+            meshed.blocking.blocks.len(),
+            meshed.blocking.slivers.len(),
+            meshed.blocking.absorbed_joint_length
+        ),
+        format!(
+            "mesh: {} zones, {} nodes, min angle {:.1}°, edges {:.4}–{:.4} m, zoned area {:.6} m²",
+            s.zones, s.nodes, s.min_angle_deg, s.min_edge, s.max_edge, s.area
+        ),
+    ];
+    let built = build_meshed(&scene, meshed)?;
+    let mut out = std::io::stdout().lock();
+    for line in lines {
+        writeln!(out, "{line}")?;
+    }
+    for w in &built.warnings {
+        writeln!(out, "warning: {w}")?;
+    }
     Ok(())
 }
 
@@ -166,12 +193,12 @@ fn write_mesh(scene_path: &Path, out: Option<PathBuf>) -> anyhow::Result<()> {
     let built = build(&scene)?;
     let mut writer = OutputWriter::new(&out, &format!("{}_mesh", scene.name))?;
     writer.write_step(&built.model, 0.0)?;
-    println!(
+    say!(
         "{} zones, {} nodes written to {}",
         built.mesh.zones,
         built.mesh.nodes,
         out.display()
-    );
+    )?;
     Ok(())
 }
 
@@ -185,9 +212,19 @@ fn main() -> ExitCode {
     match result {
         Ok(true) => ExitCode::SUCCESS,
         Ok(false) => ExitCode::from(2),
+        // The reader went away (`adit check s.json | head -1`): nothing left to tell it.
+        Err(e) if is_broken_pipe(&e) => ExitCode::SUCCESS,
         Err(e) => {
             eprintln!("error: {e:#}");
             ExitCode::FAILURE
         }
     }
+}
+
+/// Whether `e` is a write to a pipe whose reader has closed.
+fn is_broken_pipe(e: &anyhow::Error) -> bool {
+    e.chain().any(|c| {
+        c.downcast_ref::<std::io::Error>()
+            .is_some_and(|io| io.kind() == std::io::ErrorKind::BrokenPipe)
+    })
 }

@@ -64,8 +64,23 @@ pub fn run_scene(
     observer: &mut dyn Observer,
 ) -> anyhow::Result<RunResult> {
     let start = Instant::now();
+    let mut writer = OutputWriter::for_run(out_dir, &scene.name)?;
+    let result = build_solve_write(scene, &mut writer, observer, start);
+    if let Err(e) = &result {
+        // The summary must not stay `running`; the error itself is the caller's to report.
+        let _ = writer.write_status("failed", Some(&format!("{e:#}")));
+    }
+    result
+}
+
+/// [`run_scene`] once its folder is open.
+fn build_solve_write(
+    scene: &Scene,
+    writer: &mut OutputWriter,
+    observer: &mut dyn Observer,
+    start: Instant,
+) -> anyhow::Result<RunResult> {
     let mut built = build(scene)?;
-    let mut writer = OutputWriter::new(out_dir, &scene.name)?;
     let single = [Stage {
         name: "solve".into(),
         ..Default::default()
@@ -90,7 +105,7 @@ pub fn run_scene(
              block without joints); make the block deformable or add joints"
         );
         let mut writing = Writing {
-            writer: &mut writer,
+            writer,
             inner: observer,
             output_seconds: 0.0,
             error: None,
@@ -202,6 +217,6 @@ pub fn run_scene(
         built,
         solution,
         summary,
-        out_dir: out_dir.to_path_buf(),
+        out_dir: writer.dir.clone(),
     })
 }

@@ -254,7 +254,14 @@ fn lone_rigid_block_in_dynamics_is_a_clear_error() {
             .starts_with("solve: no zone or contact stiffness"),
         "{err}"
     );
-    assert!(!out.join("summary.json").exists());
+    // The summary says the run failed and why; no grid of it is written.
+    let summary = std::fs::read_to_string(out.join("summary.json")).unwrap();
+    assert!(
+        summary.contains("\"status\": \"failed\"")
+            && summary.contains("no zone or contact stiffness"),
+        "{summary}"
+    );
+    assert!(!out.join("lone.pvd").exists());
 }
 
 /// Voronoi grains confined by 1 MPa all round, starting from the matching in-situ stress: the

@@ -282,3 +282,62 @@ fn run_python(script: &str, path: &Path) {
         String::from_utf8_lossy(&out.stderr)
     );
 }
+
+/// A rerun clears what an earlier run of the scene left in its folder (so a failed or killed
+/// rerun cannot pass for the earlier one) and leaves other files alone.
+#[test]
+fn a_rerun_replaces_the_earlier_outputs() {
+    let dir = out_dir("rerun");
+    std::fs::create_dir_all(&dir).unwrap();
+    for earlier in [
+        "kirsch_zones_0007.vtu",
+        ".kirsch.pvd.tmp",
+        "summary.json",
+        "notes.txt",
+    ] {
+        std::fs::write(dir.join(earlier), "earlier run").unwrap();
+    }
+    run_scene(&small_scene(), &dir, &mut Quiet).unwrap();
+    assert!(!dir.join("kirsch_zones_0007.vtu").exists());
+    assert!(!dir.join(".kirsch.pvd.tmp").exists());
+    assert!(dir.join("notes.txt").exists());
+    let summary = std::fs::read_to_string(dir.join("summary.json")).unwrap();
+    assert!(summary.contains("\"status\": \"cycle_limit\""), "{summary}");
+
+    // A rerun whose build fails leaves a summary saying so, not the earlier one.
+    let mut outside = small_scene();
+    outside.excavations[0].circle.as_mut().unwrap().center = [19.5, 0.0];
+    let err = run_scene(&outside, &dir, &mut Quiet).err().unwrap();
+    let summary = std::fs::read_to_string(dir.join("summary.json")).unwrap();
+    assert!(summary.contains("\"status\": \"failed\""), "{summary}");
+    assert!(
+        summary.contains("not inside the region"),
+        "{summary} / {err}"
+    );
+    assert!(!dir.join("kirsch.pvd").exists() && !dir.join("history.csv").exists());
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// An output folder that cannot be made is an error naming it, before the scene is built.
+#[test]
+fn an_unwritable_output_folder_fails_first_naming_it() {
+    let file = out_dir("not-a-folder");
+    std::fs::write(&file, "a file").unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_adit"))
+        .args([
+            "run",
+            concat!(env!("CARGO_MANIFEST_DIR"), "/models/kirsch.json"),
+            "--quiet",
+            "--out",
+        ])
+        .arg(file.join("sub"))
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{err}");
+    assert!(
+        err.starts_with("error: output folder ") && err.contains("not-a-folder"),
+        "{err}"
+    );
+    std::fs::remove_file(&file).unwrap();
+}

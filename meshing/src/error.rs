@@ -18,8 +18,13 @@ pub enum MeshError {
     #[error("{a} and {b}: excavations overlap or touch")]
     HolesOverlap { a: String, b: String },
     /// Zoning controls that cannot produce a mesh.
-    #[error("zoning: {0}")]
+    #[error("{0}")]
     Zoning(String),
+    /// The mesh has more zones than the scene allows.
+    #[error(
+        "{zones} zones exceed the limit of {limit}: coarsen the zoning or raise `zoning.max_zones`"
+    )]
+    TooManyZones { zones: usize, limit: usize },
     /// The triangulator failed or could not reach the requested quality.
     #[error("triangulation failed: {0}")]
     Triangulation(String),

@@ -53,6 +53,16 @@ impl Polygon {
             * 0.5
     }
 
+    /// Perimeter (m): the sum of the edge lengths.
+    pub fn perimeter(&self) -> f64 {
+        (0..self.vertices.len())
+            .map(|i| {
+                let (a, b) = self.edge(i);
+                distance(a, b)
+            })
+            .sum()
+    }
+
     /// Centroid of the enclosed area (m).
     pub fn centroid(&self) -> Point {
         let n = self.vertices.len();

@@ -245,11 +245,10 @@ pub fn triangulate_block(
     let mut mesh = mesh?;
     mesh.angle_limit_deg = angle;
     if mesh.triangles.len() > zoning.max_zones {
-        return Err(MeshError::Zoning(format!(
-            "{} zones exceed the limit of {}; coarsen the zoning",
-            mesh.triangles.len(),
-            zoning.max_zones
-        )));
+        return Err(MeshError::TooManyZones {
+            zones: mesh.triangles.len(),
+            limit: zoning.max_zones,
+        });
     }
     Ok(mesh)
 }
@@ -367,11 +366,13 @@ fn constrained_mesh_with(
     })
 }
 
-/// Points on rings around each excavation, at the graded spacing, up to where h reaches h_far;
+/// Points on rings around each excavation, at the graded spacing, up to where h reaches h_far or
+/// the rings leave the block's bounding box;
 /// only those inside `block` and at least 0.6 h from its boundary, each ring's points only on the
 /// side of its own excavation (nearer to it than to any other).
 fn graded_rings(block: &Block, excavations: &[Polygon], z: &Zoning) -> Vec<Point> {
     let (lo, hi) = block.outer.bounds();
+    let reach = distance(lo, hi);
     let rings: Vec<&Polygon> = std::iter::once(&block.outer).chain(&block.holes).collect();
     let mut out = Vec::new();
     for (j, hole) in excavations.iter().enumerate() {
@@ -386,7 +387,7 @@ fn graded_rings(block: &Block, excavations: &[Polygon], z: &Zoning) -> Vec<Point
         loop {
             let h = (z.h_excavation + z.grading * d).min(z.h_far);
             d += h;
-            if h >= z.h_far {
+            if h >= z.h_far || d > reach + distance(c, lo).max(distance(c, hi)) {
                 break;
             }
             ring += 1;

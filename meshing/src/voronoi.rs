@@ -27,16 +27,18 @@ pub fn voronoi_segments(
         ));
     }
     let margin = 2.0 * size;
-    let (nx, ny) = (
-        ((hi[0] - lo[0] + 2.0 * margin) / size).ceil() as usize,
-        ((hi[1] - lo[1] + 2.0 * margin) / size).ceil() as usize,
+    // Counted in floating point: a tiny size must not overflow the product.
+    let (fx, fy) = (
+        ((hi[0] - lo[0] + 2.0 * margin) / size).ceil(),
+        ((hi[1] - lo[1] + 2.0 * margin) / size).ceil(),
     );
-    if nx * ny > 4_000_000 {
+    if (fx * fy).is_nan() || fx * fy > 4e6 {
         return Err(MeshError::Zoning(format!(
-            "{} voronoi grains are too many",
-            nx * ny
+            "{:.4e} voronoi grains are too many",
+            fx * fy
         )));
     }
+    let (nx, ny) = (fx as usize, fy as usize);
     let mut rng = SplitMix(seed);
     let mut seeds = Vec::with_capacity(nx * ny);
     for i in 0..nx {

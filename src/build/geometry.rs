@@ -148,6 +148,7 @@ fn field_of(scene: &Scene, err: &MeshError) -> String {
         MeshError::Zoning(_) | MeshError::Triangulation(_) | MeshError::Refinement(_) => {
             return "zoning".into();
         }
+        MeshError::TooManyZones { .. } => return "zoning.max_zones".into(),
     };
     if let Some(i) = scene.excavations.iter().position(|e| e.name == shape) {
         return format!("excavations[{i}]");

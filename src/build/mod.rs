@@ -201,7 +201,11 @@ pub fn joint_law(j: &JointMaterial) -> Box<dyn JointLaw> {
 
 /// Build the model of a validated scene.
 pub fn build(scene: &Scene) -> anyhow::Result<Built> {
-    let meshed = mesh(scene)?;
+    build_meshed(scene, mesh(scene)?)
+}
+
+/// [`build`] from the blocks and zones `mesh` made of `scene`.
+pub fn build_meshed(scene: &Scene, meshed: Meshed) -> anyhow::Result<Built> {
     let stats = meshed.stats();
     let Assembled {
         pos,

@@ -25,12 +25,45 @@ pub struct OutputWriter {
 }
 
 impl OutputWriter {
-    pub fn new(dir: &Path, name: &str) -> std::io::Result<OutputWriter> {
-        std::fs::create_dir_all(dir)?;
+    /// Write grids of `name` into `dir`, created if need be.
+    pub fn new(dir: &Path, name: &str) -> anyhow::Result<OutputWriter> {
+        std::fs::create_dir_all(dir)
+            .map_err(|e| anyhow::anyhow!("output folder {}: {e}", dir.display()))?;
         Ok(OutputWriter {
             dir: dir.to_path_buf(),
             name: name.to_string(),
             steps: Vec::new(),
+        })
+    }
+
+    /// Open `dir` for a run of the scene `name`: remove what an earlier run of that name left there
+    /// (`is_run_output`), then write a `summary.json` with status `running`. A folder then never
+    /// shows an earlier run's results as this one's, and one that cannot be written fails here,
+    /// before anything is solved.
+    pub fn for_run(dir: &Path, name: &str) -> anyhow::Result<OutputWriter> {
+        let writer = OutputWriter::new(dir, name)?;
+        let in_folder = |e: std::io::Error| anyhow::anyhow!("output folder {}: {e}", dir.display());
+        for entry in std::fs::read_dir(dir).map_err(in_folder)? {
+            let entry = entry.map_err(in_folder)?;
+            let file = entry.file_name().to_string_lossy().into_owned();
+            if is_run_output(&file, name) {
+                std::fs::remove_file(entry.path()).map_err(in_folder)?;
+            }
+        }
+        writer.write_status("running", None).map_err(in_folder)?;
+        Ok(writer)
+    }
+
+    /// Write a `summary.json` that holds only the scene name, a status and, if given, the reason:
+    /// while the run goes on (`running`), or when it failed before it had figures to report.
+    pub fn write_status(&self, status: &str, reason: Option<&str>) -> std::io::Result<()> {
+        let mut doc = serde_json::json!({ "scene": self.name, "status": status });
+        if let Some(r) = reason {
+            doc["reason"] = r.into();
+        }
+        let text = serde_json::to_string_pretty(&doc).map_err(std::io::Error::other)?;
+        write_atomic(&self.dir.join("summary.json"), |w| {
+            w.write_all(text.as_bytes())
         })
     }
 
@@ -102,11 +135,11 @@ impl OutputWriter {
         write_atomic(&self.dir.join("ground_reaction.csv"), |w| {
             write!(w, "stage,support_fraction")?;
             for n in names {
-                write!(w, ",closure_{n}_m")?;
+                write!(w, ",{}", csv_field(&format!("closure_{n}_m")))?;
             }
             writeln!(w)?;
             for s in stages {
-                write!(w, "{},{}", s.name.replace(',', ";"), s.support_fraction)?;
+                write!(w, "{},{}", csv_field(&s.name), s.support_fraction)?;
                 for n in names {
                     match s.closure.get(n) {
                         Some(c) => write!(w, ",{c:e}")?,
@@ -183,4 +216,77 @@ pub struct Summary {
     /// Each stage of a staged scene, in order (empty without stages).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub stages: Vec<StageSummary>,
+}
+
+/// Whether `file` is an output of a run of the scene `name` (or such a file's temporary):
+/// `<name>.pvd`, `<name>_zones_NNNN.vtu` and its contacts and supports siblings, `history.csv`,
+/// `ground_reaction.csv`, `summary.json`.
+fn is_run_output(file: &str, name: &str) -> bool {
+    let file = match file.strip_prefix('.').and_then(|f| f.strip_suffix(".tmp")) {
+        Some(inner) => inner,
+        None => file,
+    };
+    if ["history.csv", "ground_reaction.csv", "summary.json"].contains(&file) {
+        return true;
+    }
+    let Some(rest) = file.strip_prefix(name) else {
+        return false;
+    };
+    if rest == ".pvd" {
+        return true;
+    }
+    ["_zones_", "_contacts_", "_supports_"].iter().any(|kind| {
+        rest.strip_prefix(kind)
+            .and_then(|r| r.strip_suffix(".vtu"))
+            .is_some_and(|n| n.len() == 4 && n.bytes().all(|b| b.is_ascii_digit()))
+    })
+}
+
+/// A CSV field (RFC 4180): quoted, with quotes doubled, when it holds a comma, a quote or a line
+/// break; as it is otherwise.
+fn csv_field(text: &str) -> std::borrow::Cow<'_, str> {
+    if text.contains([',', '"', '\n', '\r']) {
+        format!("\"{}\"", text.replace('"', "\"\"")).into()
+    } else {
+        text.into()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_run_clears_only_its_own_earlier_outputs() {
+        for mine in [
+            "tunnel.pvd",
+            "tunnel_zones_0002.vtu",
+            "tunnel_contacts_0000.vtu",
+            "tunnel_supports_0013.vtu",
+            "history.csv",
+            "summary.json",
+            "ground_reaction.csv",
+            ".tunnel_zones_0001.vtu.tmp",
+            ".summary.json.tmp",
+        ] {
+            assert!(is_run_output(mine, "tunnel"), "{mine}");
+        }
+        for other in [
+            "tunnel.json",
+            "tunnel_mesh.pvd",
+            "tunnel_mesh_zones_0000.vtu",
+            "kirsch.pvd",
+            "tunnel_zones_1.vtu",
+            "notes.txt",
+        ] {
+            assert!(!is_run_output(other, "tunnel"), "{other}");
+        }
+    }
+
+    #[test]
+    fn csv_fields_with_commas_or_quotes_are_quoted() {
+        assert_eq!(csv_field("in-situ"), "in-situ");
+        assert_eq!(csv_field("excavate, 25 %"), "\"excavate, 25 %\"");
+        assert_eq!(csv_field("a \"b\""), "\"a \"\"b\"\"\"");
+    }
 }

@@ -2,7 +2,10 @@
 //! boundary conditions, solve criterion, output). Every field is documented in
 //! `docs/scene-format.md`; unknown fields are errors.
 
+mod limits;
+mod names;
 mod supports;
+mod unique;
 mod validate;
 
 use std::collections::BTreeMap;
@@ -10,6 +13,7 @@ use std::path::Path;
 
 use serde::Deserialize;
 
+pub use limits::{MAX_BOLT_SEGMENTS, MAX_BOLTS, MAX_GRAINS, MAX_JOINTS, MAX_POLYGON_VERTICES};
 pub use supports::{BoltLine, BoltPattern, BoltSpec, LinerSpec};
 pub use validate::SceneError;
 
@@ -20,6 +24,7 @@ pub struct Scene {
     /// Name used for output files.
     pub name: String,
     /// Zone materials by name.
+    #[serde(deserialize_with = "unique::unique_keys")]
     pub materials: BTreeMap<String, Material>,
     pub region: Region,
     #[serde(default)]
@@ -30,7 +35,7 @@ pub struct Scene {
     pub inclusions: Vec<Inclusion>,
     pub zoning: ZoningSpec,
     /// Joint materials by name.
-    #[serde(default)]
+    #[serde(default, deserialize_with = "unique::unique_keys")]
     pub joint_materials: BTreeMap<String, JointMaterial>,
     /// Sets of parallel joints cutting the region into blocks.
     #[serde(default)]
@@ -89,7 +94,7 @@ pub struct Stage {
     /// Zone materials changed at the start of this stage (by name, each given whole, as in
     /// `materials`; the density must stay): every zone, rigid and simple block of that material
     /// takes the new law and keeps its stress, yield state and plastic strain.
-    #[serde(default)]
+    #[serde(default, deserialize_with = "unique::unique_keys")]
     pub materials: BTreeMap<String, Material>,
     /// Gravitational acceleration from this stage on, m/s² (default: unchanged).
     #[serde(default)]
@@ -97,7 +102,7 @@ pub struct Stage {
     /// Joint materials changed at the start of this stage (by name, each given whole, as in
     /// `joint_materials`): every contact of that material takes the new properties and keeps its
     /// state (stresses, displacements, whether it has failed), as UDEC's `change` between solves.
-    #[serde(default)]
+    #[serde(default, deserialize_with = "unique::unique_keys")]
     pub joint_materials: BTreeMap<String, JointMaterial>,
     /// Blocks that take another zone material at the start of this stage (UDEC's `change mat`
     /// over a range), in order: later regions override earlier ones.
@@ -637,6 +642,8 @@ impl Scene {
 
     /// Parse and validate a scene from JSON text; `source` names it in messages.
     pub fn from_json(text: &str, source: &str) -> Result<Scene, SceneError> {
+        // A byte-order mark, as some Windows editors write, is not part of the JSON.
+        let text = text.strip_prefix('\u{feff}').unwrap_or(text);
         let scene: Scene = serde_json::from_str(text).map_err(|e| SceneError::Parse {
             source_name: source.to_string(),
             line: e.line(),
@@ -649,11 +656,23 @@ impl Scene {
 
     /// Read, parse and validate a scene file.
     pub fn load(path: &Path) -> Result<Scene, SceneError> {
-        let text = std::fs::read_to_string(path).map_err(|e| SceneError::Io {
-            path: path.display().to_string(),
+        let source = path.display().to_string();
+        let bytes = std::fs::read(path).map_err(|e| SceneError::Io {
+            path: source.clone(),
             message: e.to_string(),
         })?;
-        Self::from_json(&text, &path.display().to_string())
+        let text = String::from_utf8(bytes).map_err(|e| {
+            let good = &e.as_bytes()[..e.utf8_error().valid_up_to()];
+            let line = 1 + good.iter().filter(|&&b| b == b'\n').count();
+            let column = 1 + good.iter().rev().take_while(|&&b| b != b'\n').count();
+            SceneError::Parse {
+                source_name: source.clone(),
+                line,
+                column,
+                message: "not UTF-8 text".into(),
+            }
+        })?;
+        Self::from_json(&text, &source)
     }
 }
 

@@ -248,12 +248,7 @@ fn positive(path: &str, v: f64) -> Result<(), SceneError> {
 impl Scene {
     /// Check values that the JSON types alone cannot: signs, ranges, names that must exist.
     pub fn validate(&self) -> Result<(), SceneError> {
-        if self.name.is_empty() || self.name.contains(['/', '\\']) {
-            return Err(invalid(
-                "name",
-                "must be a non-empty file name without slashes",
-            ));
-        }
+        self.validate_names()?;
         if self.materials.is_empty() {
             return Err(invalid("materials", "at least one material is needed"));
         }
@@ -307,12 +302,6 @@ impl Scene {
                         "give exactly one of `circle`, `polygon` and `horseshoe`",
                     ));
                 }
-            }
-            if self.excavations[..i].iter().any(|o| o.name == e.name) {
-                return Err(invalid(
-                    format!("{p}.name"),
-                    format!("duplicate excavation name '{}'", e.name),
-                ));
             }
         }
         self.validate_inclusions()?;
@@ -407,7 +396,8 @@ impl Scene {
             ));
         }
         self.validate_supports()?;
-        self.validate_stages()
+        self.validate_stages()?;
+        self.validate_limits()
     }
 
     fn validate_stages(&self) -> Result<(), SceneError> {
@@ -509,16 +499,6 @@ impl Scene {
                 return Err(invalid(
                     format!("{p}.material"),
                     format!("no material named '{}' in materials", inc.material),
-                ));
-            }
-            let taken = self.excavations.iter().map(|e| &e.name);
-            if taken
-                .chain(self.inclusions[..i].iter().map(|o| &o.name))
-                .any(|n| *n == inc.name)
-            {
-                return Err(invalid(
-                    format!("{p}.name"),
-                    format!("'{}' already names an excavation or inclusion", inc.name),
                 ));
             }
         }

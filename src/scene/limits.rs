@@ -1,0 +1,206 @@
+//! Bounds on the work a scene asks for, checked before anything is built: the counts of wall
+//! vertices, joint traces, grains, bolt segments and zones are estimated from the scene in floating
+//! point (so no count overflows) and refused past a documented limit, naming the field. A scene
+//! that passes builds in time and memory proportional to these counts.
+
+use adit_meshing::Polygon;
+
+use super::validate::{SceneError, invalid};
+use super::{Excavation, JointSetSpec, Scene};
+
+/// Most vertices of one polygon: the region, an excavation or an inclusion, given or from
+/// `segments`. The cutter checks each polygon for self-crossings pair by pair.
+pub const MAX_POLYGON_VERTICES: usize = 20_000;
+
+/// Most joint traces, over all sets and explicit lines. The cutter pairs them by bounding boxes.
+pub const MAX_JOINTS: f64 = 20_000.0;
+
+/// Most Voronoi grains.
+pub const MAX_GRAINS: f64 = 1_000_000.0;
+
+/// Most bolts, and most bolt segments over all bolts.
+pub const MAX_BOLTS: usize = 10_000;
+pub const MAX_BOLT_SEGMENTS: f64 = 1_000_000.0;
+
+/// Area of an equilateral triangle of unit edge, √3/4: the most area a zone of edge h covers.
+const ZONE_AREA_PER_EDGE2: f64 = 0.433_012_701_892_219_3;
+
+impl Scene {
+    /// Refuse a scene whose size exceeds the limits above or `zoning.max_zones`, before any of it
+    /// is allocated.
+    pub(super) fn validate_limits(&self) -> Result<(), SceneError> {
+        let polygon = |p: String, n: usize| {
+            if n > MAX_POLYGON_VERTICES {
+                Err(invalid(
+                    p,
+                    format!("{n} vertices exceed the limit of {MAX_POLYGON_VERTICES} per polygon"),
+                ))
+            } else {
+                Ok(())
+            }
+        };
+        polygon("region.polygon".into(), self.region.polygon.len())?;
+        for (i, e) in self.excavations.iter().enumerate() {
+            let p = format!("excavations[{i}]");
+            if let Some(c) = &e.circle {
+                polygon(format!("{p}.circle.segments"), c.segments)?;
+            }
+            if let Some(h) = &e.horseshoe {
+                polygon(format!("{p}.horseshoe.segments"), h.segments)?;
+            }
+            if let Some(v) = &e.polygon {
+                polygon(format!("{p}.polygon"), v.len())?;
+            }
+        }
+        for (i, inc) in self.inclusions.iter().enumerate() {
+            let p = format!("inclusions[{i}]");
+            if let Some(c) = &inc.circle {
+                polygon(format!("{p}.circle.segments"), c.segments)?;
+            }
+            if let Some(v) = &inc.polygon {
+                polygon(format!("{p}.polygon"), v.len())?;
+            }
+        }
+        let region = Polygon::new(self.region.polygon.clone());
+        let (lo, hi) = region.bounds();
+        let diagonal = (hi[0] - lo[0]).hypot(hi[1] - lo[1]);
+        let mut joints = self.joints.len() as f64;
+        for (i, set) in self.joint_sets.iter().enumerate() {
+            joints += traces_of_set(set, diagonal);
+            if joints > MAX_JOINTS {
+                return Err(invalid(
+                    format!("joint_sets[{i}]"),
+                    format!(
+                        "about {:.4e} joint traces in all exceed the limit of {MAX_JOINTS}: \
+                         widen `spacing`, lengthen `trace` + `gap` or narrow `spread_spacing`",
+                        joints
+                    ),
+                ));
+            }
+        }
+        if joints > MAX_JOINTS {
+            return Err(invalid(
+                "joints",
+                format!("{joints} joint traces exceed the limit of {MAX_JOINTS}"),
+            ));
+        }
+        if let Some(v) = &self.voronoi {
+            let margin = 4.0 * v.size;
+            let grains = (hi[0] - lo[0] + margin) / v.size * ((hi[1] - lo[1] + margin) / v.size);
+            if beyond(grains, MAX_GRAINS) {
+                return Err(invalid(
+                    "voronoi.size",
+                    format!(
+                        "about {grains:.4e} grains exceed the limit of {MAX_GRAINS}: \
+                         make the grains larger"
+                    ),
+                ));
+            }
+        }
+        self.validate_bolt_counts(diagonal)?;
+        let zones = self.zone_estimate(&region);
+        let max = self.zoning.max_zones;
+        if beyond(zones, max as f64) {
+            return Err(invalid(
+                "zoning.max_zones",
+                format!(
+                    "the zoning asks for at least {zones:.4e} zones, more than the limit of {max}: \
+                     coarsen `zoning.edge_at_excavation` or `zoning.edge_far`, or raise \
+                     `zoning.max_zones`"
+                ),
+            ));
+        }
+        Ok(())
+    }
+
+    fn validate_bolt_counts(&self, diagonal: f64) -> Result<(), SceneError> {
+        let mut segments = 0.0;
+        let mut bolts = 0usize;
+        for (i, b) in self.bolts.iter().enumerate() {
+            let p = format!("bolts[{i}]");
+            let segment = b.segment.unwrap_or(self.zoning.edge_at_excavation);
+            let (count, length, field) = match (&b.line, &b.pattern) {
+                (Some(l), _) => (1, (l.to[0] - l.from[0]).hypot(l.to[1] - l.from[1]), "line"),
+                (None, Some(pat)) => (pat.count, pat.length, "pattern.length"),
+                (None, None) => (0, 0.0, "line"),
+            };
+            bolts = bolts.saturating_add(count);
+            if bolts > MAX_BOLTS {
+                return Err(invalid(
+                    format!("{p}.pattern.count"),
+                    format!("{bolts} bolts in all exceed the limit of {MAX_BOLTS}"),
+                ));
+            }
+            if beyond(length, diagonal) {
+                return Err(invalid(
+                    format!("{p}.{field}"),
+                    format!(
+                        "a bolt of {length:.4e} m is longer than the region's diagonal \
+                         ({diagonal:.4e} m)"
+                    ),
+                ));
+            }
+            segments += count as f64 * (length / segment).ceil().max(1.0);
+            if beyond(segments, MAX_BOLT_SEGMENTS) {
+                return Err(invalid(
+                    format!("{p}.segment"),
+                    format!(
+                        "about {segments:.4e} bolt segments in all exceed the limit of \
+                         {MAX_BOLT_SEGMENTS}: lengthen `segment`"
+                    ),
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    /// A lower bound on the zone count of the graded zoning (joints only add zones): equilateral
+    /// zones of the target edge h over the region at `edge_far`, plus the band graded from each
+    /// excavation wall, h(d) = h0 + g d up to h_far, of perimeter P0 + 2π d at distance d:
+    ///
+    ///   N ≈ [A / h_far² + Σ_walls (P0/g (1/h0 − 1/h_far) + 2π/g² (ln(h_far/h0) + h0/h_far − 1))] / (√3/4).
+    /// (No zone edge is longer than the region's box, whatever `edge_far` says.)
+    fn zone_estimate(&self, region: &Polygon) -> f64 {
+        let z = &self.zoning;
+        let (h0, g) = (z.edge_at_excavation, z.grading);
+        let h_far = z.edge_far.min(region.size());
+        let mut per_area = region.signed_area().abs() / (h_far * h_far);
+        for e in &self.excavations {
+            let p0 = wall_length(e);
+            if h_far > h0 {
+                per_area += p0 / g * (1.0 / h0 - 1.0 / h_far)
+                    + std::f64::consts::TAU / (g * g) * ((h_far / h0).ln() + h0 / h_far - 1.0);
+            } else {
+                per_area += p0 / h0;
+            }
+        }
+        per_area / ZONE_AREA_PER_EDGE2
+    }
+}
+
+/// Perimeter of an excavation, m.
+fn wall_length(e: &Excavation) -> f64 {
+    match (&e.circle, &e.polygon, &e.horseshoe) {
+        (Some(c), _, _) => std::f64::consts::TAU * c.radius,
+        (_, Some(v), _) => Polygon::new(v.clone()).perimeter(),
+        (_, _, Some(h)) => (std::f64::consts::PI + 2.0) * h.radius + 2.0 * h.wall_height,
+        _ => 0.0,
+    }
+}
+
+/// About how many traces `set` cuts over a region of `diagonal` m (`JointSet::segments` walks
+/// the lines across the region's box widened by the spread, and the traces along each).
+fn traces_of_set(set: &JointSetSpec, diagonal: f64) -> f64 {
+    let margin = set.spread_spacing + diagonal * set.spread_dip.to_radians().sin().abs();
+    let lines = (diagonal + 2.0 * margin) / set.spacing + 2.0;
+    let per_line = match set.trace {
+        Some(t) => diagonal / (t + set.gap) + 2.0,
+        None => 1.0,
+    };
+    lines * per_line
+}
+
+/// Whether an estimated `count` passes `limit` (a NaN count does: it came from nonsense).
+fn beyond(count: f64, limit: f64) -> bool {
+    count.is_nan() || count > limit
+}

@@ -1,0 +1,193 @@
+//! Bad, huge and odd input (issue 15): one clear `error:` line naming the field and the limit,
+//! before anything large is built, and never a panic, an abort or a hang.
+
+use std::io::Read;
+use std::process::{Command, Stdio};
+use std::time::{Duration, Instant};
+
+use serde_json::{Value, json};
+
+fn model(name: &str) -> Value {
+    let path = format!("{}/models/{name}.json", env!("CARGO_MANIFEST_DIR"));
+    serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
+}
+
+/// `adit check` on `text`: exit code (None: killed after 60 s) and stderr.
+fn check_text(text: &str, tag: &str) -> (Option<i32>, String) {
+    let path =
+        std::env::temp_dir().join(format!("adit-bad-input-{tag}-{}.json", std::process::id()));
+    std::fs::write(&path, text).unwrap();
+    let mut child = Command::new(env!("CARGO_BIN_EXE_adit"))
+        .args(["check", path.to_str().unwrap()])
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let start = Instant::now();
+    let code = loop {
+        if let Some(status) = child.try_wait().unwrap() {
+            break status.code();
+        }
+        if start.elapsed() > Duration::from_secs(60) {
+            child.kill().unwrap();
+            break None;
+        }
+        std::thread::sleep(Duration::from_millis(20));
+    };
+    let mut err = String::new();
+    child
+        .stderr
+        .take()
+        .unwrap()
+        .read_to_string(&mut err)
+        .unwrap();
+    std::fs::remove_file(&path).unwrap();
+    (code, err)
+}
+
+/// `adit check` of `scene` must fail at once with one error line starting `error: {field}`.
+fn refused(scene: &Value, field: &str) -> String {
+    let (code, err) = check_text(&scene.to_string(), &field.replace(['[', ']', '.'], "_"));
+    assert_eq!(code, Some(1), "{field}: {err}");
+    assert!(
+        err.starts_with(&format!("error: {field}")),
+        "{field}: {err}"
+    );
+    assert_eq!(err.lines().count(), 1, "{err}");
+    err
+}
+
+#[test]
+fn huge_counts_are_refused_naming_the_field() {
+    let tunnel = model("tunnel");
+    // Set the field at `pointer` (its parent must exist).
+    let with = |pointer: &str, v: Value| {
+        let mut s = tunnel.clone();
+        let (parent, key) = pointer.rsplit_once('/').unwrap();
+        s.pointer_mut(parent).unwrap()[key] = v;
+        s
+    };
+    let max = json!(u64::MAX);
+    refused(
+        &with("/excavations/0/horseshoe/segments", max.clone()),
+        "excavations[0].horseshoe.segments",
+    );
+    refused(
+        &with("/excavations/0/horseshoe/segments", json!(9e15 as u64)),
+        "excavations[0].horseshoe.segments",
+    );
+    refused(
+        &with("/bolts/0/pattern/count", max),
+        "bolts[0].pattern.count",
+    );
+    refused(
+        &with("/bolts/0/pattern/count", json!(1_000_000)),
+        "bolts[0].pattern.count",
+    );
+    refused(&with("/joint_sets/0/spacing", json!(1e-9)), "joint_sets[0]");
+    refused(
+        &with("/joint_sets/0/spread_spacing", json!(1e300)),
+        "joint_sets[0]",
+    );
+    refused(&with("/bolts/0/segment", json!(1e-12)), "bolts[0].segment");
+    refused(&with("/bolts/0/segment", json!(1e-6)), "bolts[0].segment");
+    refused(
+        &with("/bolts/0/pattern/length", json!(9e15)),
+        "bolts[0].pattern.length",
+    );
+    let err = refused(
+        &with("/zoning/edge_at_excavation", json!(1e-6)),
+        "zoning.max_zones",
+    );
+    assert!(err.contains("raise `zoning.max_zones`"), "{err}");
+    let mut grains = tunnel.clone();
+    grains["voronoi"] = json!({ "size": 1e-160, "material": "joint" });
+    refused(&grains, "voronoi.size");
+    let mut kirsch = model("kirsch");
+    kirsch["excavations"][0]["circle"]["segments"] = json!(100_000_000);
+    refused(&kirsch, "excavations[0].circle.segments");
+}
+
+#[test]
+fn an_edge_longer_than_the_region_builds() {
+    let mut s = model("kirsch");
+    s["zoning"]["edge_far"] = json!(1e308);
+    let (code, err) = check_text(&s.to_string(), "edge-far");
+    assert_eq!(code, Some(0), "{err}");
+}
+
+#[test]
+fn names_mean_one_thing_and_are_safe_in_files() {
+    let tunnel = model("tunnel");
+    let mut outer = tunnel.clone();
+    outer["excavations"][0]["name"] = json!("outer");
+    let err = refused(&outer, "excavations[0].name");
+    assert!(
+        err.contains("already names the whole outer boundary"),
+        "{err}"
+    );
+    let mut edge = tunnel.clone();
+    edge["excavations"][0]["name"] = json!("right");
+    refused(&edge, "excavations[0].name");
+    for bad in ["..", ".", "a\"<b", &"x".repeat(300)] {
+        let mut s = tunnel.clone();
+        s["name"] = json!(bad);
+        refused(&s, "name");
+    }
+    let text = tunnel.to_string().replacen(
+        "\"materials\":{",
+        "\"materials\":{\"rock\":{\"density\":1,\"young\":1,\"poisson\":0.2},",
+        1,
+    );
+    let (code, err) = check_text(&text, "duplicate");
+    assert_eq!(code, Some(1), "{err}");
+    assert!(
+        err.contains("`rock` is defined twice") && err.contains("line 1"),
+        "{err}"
+    );
+}
+
+#[test]
+fn a_byte_order_mark_is_not_an_error_and_bad_utf8_has_a_position() {
+    let text = format!("\u{feff}{}", model("kirsch"));
+    let (code, err) = check_text(&text, "bom");
+    assert_eq!(code, Some(0), "{err}");
+    let path = std::env::temp_dir().join(format!("adit-latin1-{}.json", std::process::id()));
+    std::fs::write(&path, b"{\n \"name\": \"caf\xe9\" }").unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_adit"))
+        .args(["check", path.to_str().unwrap()])
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(err.contains("line 2, column 14: not UTF-8"), "{err}");
+    std::fs::remove_file(&path).unwrap();
+}
+
+/// `adit check s.json | head -1`: the reader goes away; adit ends quietly instead of panicking.
+#[test]
+fn a_closed_pipe_is_not_a_panic() {
+    let model = concat!(env!("CARGO_MANIFEST_DIR"), "/models/kirsch.json");
+    let mut child = Command::new(env!("CARGO_BIN_EXE_adit"))
+        .args(["check", model])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    drop(child.stdout.take());
+    let out = child.wait_with_output().unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{err}");
+    assert!(!err.contains("panicked"), "{err}");
+}
+
+/// `check` builds what `run` builds before solving: a bolt that leaves the rock is refused there.
+#[test]
+fn check_refuses_what_run_refuses() {
+    let mut s = model("kirsch");
+    s["bolts"] = json!([{ "name": "probe", "young": 200e9, "area": 4.9e-4, "yield_force": 200e3,
+        "grout_stiffness": 2e9, "bond_strength": 3e5, "out_of_plane_spacing": 1.0,
+        "line": { "from": [0, 0], "to": [0, 5] } }]);
+    let err = refused(&s, "bolts[0]");
+    assert!(err.contains("leaves the rock"), "{err}");
+}
