@@ -693,6 +693,15 @@ mod tests {
             .to_string()
     }
 
+    /// Numbers in messages stay short: 1e300 is not written with its 301 digits.
+    #[test]
+    fn huge_numbers_are_shown_short() {
+        let msg = error_of(&GOOD.replace("\"edge_far\": 2", "\"edge_far\": 2, \"grading\": 1e300"));
+        assert_eq!(msg, "zoning.grading: must be in (0, 2], got 1.0000e300");
+        let msg = error_of(&GOOD.replace("\"poisson\": 0.2", "\"poisson\": 0.75"));
+        assert!(msg.ends_with("got 0.75"), "{msg}");
+    }
+
     #[test]
     fn good_scene_parses_with_defaults() {
         let s = Scene::from_json(GOOD, "scene.json").unwrap();

@@ -112,13 +112,13 @@ fn crown() -> f64 {
 }
 
 use super::Scene;
-use super::validate::{SceneError, invalid};
+use super::validate::{Num, SceneError, invalid};
 
 fn positive(path: String, v: f64) -> Result<(), SceneError> {
     if v > 0.0 && v.is_finite() {
         Ok(())
     } else {
-        Err(invalid(path, format!("must be positive, got {v}")))
+        Err(invalid(path, format!("must be positive, got {}", Num(v))))
     }
 }
 
@@ -126,7 +126,10 @@ fn at_least_zero(path: String, v: f64) -> Result<(), SceneError> {
     if v >= 0.0 && v.is_finite() {
         Ok(())
     } else {
-        Err(invalid(path, format!("must be zero or positive, got {v}")))
+        Err(invalid(
+            path,
+            format!("must be zero or positive, got {}", Num(v)),
+        ))
     }
 }
 
@@ -215,7 +218,7 @@ impl Scene {
             if !(-1.0 < l.poisson && l.poisson < 0.5) {
                 return Err(invalid(
                     format!("{p}.poisson"),
-                    format!("must be in (−1, 0.5), got {}", l.poisson),
+                    format!("must be in (−1, 0.5), got {}", Num(l.poisson)),
                 ));
             }
         }

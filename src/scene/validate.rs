@@ -25,6 +25,21 @@ pub enum SceneError {
     Invalid { path: String, reason: String },
 }
 
+/// A number as a message shows it: plainly between 1e-4 and 1e9 in size, else in scientific
+/// notation with five digits (Rust writes 1e300 with all its 301 digits).
+pub(super) struct Num(pub f64);
+
+impl std::fmt::Display for Num {
+    fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        let x = self.0;
+        if x == 0.0 || !x.is_finite() || (1e-4..1e9).contains(&x.abs()) {
+            write!(f, "{x}")
+        } else {
+            write!(f, "{x:.4e}")
+        }
+    }
+}
+
 pub(super) fn invalid(path: impl Into<String>, reason: impl Into<String>) -> SceneError {
     SceneError::Invalid {
         path: path.into(),
@@ -41,7 +56,7 @@ fn validate_material(p: &str, m: &Material) -> Result<(), SceneError> {
             format!("{p}.poisson"),
             format!(
                 "must satisfy -1 < ν < 0.5 (0.5 is incompressible), got {}",
-                m.poisson
+                Num(m.poisson)
             ),
         ));
     }
@@ -72,19 +87,19 @@ fn validate_strength(p: &str, m: &Material) -> Result<(), SceneError> {
             if !(c >= 0.0 && c.is_finite()) {
                 return Err(invalid(
                     format!("{p}.cohesion"),
-                    format!("must be zero or positive, got {c}"),
+                    format!("must be zero or positive, got {}", Num(c)),
                 ));
             }
             if !(0.0..90.0).contains(&phi) {
                 return Err(invalid(
                     format!("{p}.friction"),
-                    format!("must be in [0, 90) degrees, got {phi}"),
+                    format!("must be in [0, 90) degrees, got {}", Num(phi)),
                 ));
             }
             if !(0.0..=phi).contains(&m.dilation) {
                 return Err(invalid(
                     format!("{p}.dilation"),
-                    format!("must be in [0, friction] degrees, got {}", m.dilation),
+                    format!("must be in [0, friction] degrees, got {}", Num(m.dilation)),
                 ));
             }
             if let Some(t) = m.tensile_strength
@@ -92,7 +107,7 @@ fn validate_strength(p: &str, m: &Material) -> Result<(), SceneError> {
             {
                 return Err(invalid(
                     format!("{p}.tensile_strength"),
-                    format!("must be zero or positive, got {t}"),
+                    format!("must be zero or positive, got {}", Num(t)),
                 ));
             }
             let mut last = 0.0;
@@ -127,13 +142,13 @@ fn validate_joint_material(p: &str, j: &JointMaterial) -> Result<(), SceneError>
     if !(0.0..90.0).contains(&j.friction) {
         return Err(invalid(
             format!("{p}.friction"),
-            format!("must be in [0, 90) degrees, got {}", j.friction),
+            format!("must be in [0, 90) degrees, got {}", Num(j.friction)),
         ));
     }
     if !(0.0..90.0).contains(&j.dilation) {
         return Err(invalid(
             format!("{p}.dilation"),
-            format!("must be in [0, 90) degrees, got {}", j.dilation),
+            format!("must be in [0, 90) degrees, got {}", Num(j.dilation)),
         ));
     }
     if j.law == JointLawKind::ContinuouslyYielding {
@@ -151,7 +166,7 @@ fn validate_joint_material(p: &str, j: &JointMaterial) -> Result<(), SceneError>
         {
             return Err(invalid(
                 format!("{p}.initial_friction"),
-                format!("must be in [friction, 90) degrees, got {f}"),
+                format!("must be in [friction, 90) degrees, got {}", Num(f)),
             ));
         }
     } else if j.roughness.is_some() || j.initial_friction.is_some() {
@@ -167,7 +182,7 @@ fn validate_joint_material(p: &str, j: &JointMaterial) -> Result<(), SceneError>
         if !(v >= 0.0 && v.is_finite()) {
             return Err(invalid(
                 format!("{p}.{f}"),
-                format!("must be zero or positive, got {v}"),
+                format!("must be zero or positive, got {}", Num(v)),
             ));
         }
     }
@@ -185,13 +200,13 @@ fn validate_solve(p: &str, v: &SolveSpec) -> Result<(), SceneError> {
     {
         return Err(invalid(
             format!("{p}.damping"),
-            format!("must be in [0, 1), got {d}"),
+            format!("must be in [0, 1), got {}", Num(d)),
         ));
     }
     if !(v.safety_factor > 0.0 && v.safety_factor <= 1.0) {
         return Err(invalid(
             format!("{p}.safety_factor"),
-            format!("must be in (0, 1], got {}", v.safety_factor),
+            format!("must be in (0, 1], got {}", Num(v.safety_factor)),
         ));
     }
     if v.monitor_every == 0 {
@@ -240,7 +255,7 @@ fn positive(path: &str, v: f64) -> Result<(), SceneError> {
     } else {
         Err(invalid(
             path,
-            format!("must be positive and finite, got {v}"),
+            format!("must be positive and finite, got {}", Num(v)),
         ))
     }
 }
@@ -317,13 +332,13 @@ impl Scene {
         if !(z.grading > 0.0 && z.grading <= 2.0) {
             return Err(invalid(
                 "zoning.grading",
-                format!("must be in (0, 2], got {}", z.grading),
+                format!("must be in (0, 2], got {}", Num(z.grading)),
             ));
         }
         if !(z.min_angle > 0.0 && z.min_angle <= 33.0) {
             return Err(invalid(
                 "zoning.min_angle",
-                format!("must be in (0, 33] degrees, got {}", z.min_angle),
+                format!("must be in (0, 33] degrees, got {}", Num(z.min_angle)),
             ));
         }
         for (name, j) in &self.joint_materials {
@@ -472,7 +487,7 @@ impl Scene {
             if !(0.0..=1.0).contains(&st.support_fraction) {
                 return Err(invalid(
                     format!("{p}.support_fraction"),
-                    format!("must be in [0, 1], got {}", st.support_fraction),
+                    format!("must be in [0, 1], got {}", Num(st.support_fraction)),
                 ));
             }
         }
