@@ -8,7 +8,7 @@ use std::io::Write;
 use adit::build::{build, build_meshed, mesh};
 use adit::output::OutputWriter;
 use adit::run::default_out_dir;
-use adit::solve::{HistoryRow, Observer};
+use adit::solve::{HistoryRow, Observer, Status};
 use adit::{Scene, run_scene};
 use clap::{Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressStyle};
@@ -67,7 +67,7 @@ fn load(path: &Path) -> anyhow::Result<Scene> {
     Ok(Scene::load(path)?)
 }
 
-fn run(scene_path: &Path, out: Option<PathBuf>, quiet: bool) -> anyhow::Result<bool> {
+fn run(scene_path: &Path, out: Option<PathBuf>, quiet: bool) -> anyhow::Result<ExitCode> {
     let scene = load(scene_path)?;
     let out = out.unwrap_or_else(|| default_out_dir(&scene));
     let bar = if quiet {
@@ -145,11 +145,15 @@ fn run(scene_path: &Path, out: Option<PathBuf>, quiet: bool) -> anyhow::Result<b
         )?;
     }
     say!("results in {}", result.out_dir.display())?;
+    if s.status == Status::Interrupted.label() {
+        eprintln!("error: interrupted at cycle {}", s.cycles);
+        return Ok(ExitCode::from(130));
+    }
     if let Some(reason) = &s.reason {
         eprintln!("error: run failed: {reason}");
-        return Ok(false);
+        return Ok(ExitCode::from(2));
     }
-    Ok(true)
+    Ok(ExitCode::SUCCESS)
 }
 
 /// Validate and build `scene_path` as `run` does before solving (supports and stages included),
@@ -205,13 +209,17 @@ fn write_mesh(scene_path: &Path, out: Option<PathBuf>) -> anyhow::Result<()> {
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
-        Command::Run { scene, out, quiet } => run(&scene, out, quiet),
-        Command::Check { scene } => check(&scene).map(|_| true),
-        Command::Mesh { scene, out } => write_mesh(&scene, out).map(|_| true),
+        Command::Run { scene, out, quiet } => {
+            // Ctrl-C and SIGTERM stop the solve at the end of a cycle; the run then writes what
+            // it has, with status `interrupted`.
+            adit::interrupt::install();
+            run(&scene, out, quiet)
+        }
+        Command::Check { scene } => check(&scene).map(|_| ExitCode::SUCCESS),
+        Command::Mesh { scene, out } => write_mesh(&scene, out).map(|_| ExitCode::SUCCESS),
     };
     match result {
-        Ok(true) => ExitCode::SUCCESS,
-        Ok(false) => ExitCode::from(2),
+        Ok(code) => code,
         // The reader went away (`adit check s.json | head -1`): nothing left to tell it.
         Err(e) if is_broken_pipe(&e) => ExitCode::SUCCESS,
         Err(e) => {

@@ -42,10 +42,14 @@ struct Writing<'a> {
 
 impl Observer for Writing<'_> {
     fn monitored(&mut self, row: &HistoryRow) {
-        self.inner.monitored(&HistoryRow {
+        let row = HistoryRow {
             cycle: row.cycle + self.offset,
             ..*row
-        });
+        };
+        if let Err(e) = self.writer.append_history(&row) {
+            self.error.get_or_insert(e.into());
+        }
+        self.inner.monitored(&row);
     }
     fn output_step(&mut self, cycle: u64, _time: f64, model: &Model, _c: &mut Cycle) {
         let t = Instant::now();
@@ -137,12 +141,13 @@ fn build_solve_write(
         });
         let t = Instant::now();
         let failed = matches!(solution.status, Status::Failed(_));
+        let interrupted = solution.status == Status::Interrupted;
         if !failed {
             writer.write_step(&built.model, cycles as f64)?;
         }
         output_seconds += t.elapsed().as_secs_f64();
         last = Some((solver, solution));
-        if failed {
+        if failed || interrupted {
             break;
         }
     }

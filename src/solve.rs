@@ -29,6 +29,8 @@ pub enum Status {
     CycleLimit,
     /// The run was stopped; the reason names the node or zone.
     Failed(String),
+    /// Ctrl-C or SIGTERM stopped the run at the end of a cycle (`interrupt`).
+    Interrupted,
 }
 
 impl Status {
@@ -37,6 +39,7 @@ impl Status {
             Status::Converged => "converged",
             Status::CycleLimit => "cycle_limit",
             Status::Failed(_) => "failed",
+            Status::Interrupted => "interrupted",
         }
     }
 }
@@ -157,6 +160,21 @@ impl Solver {
             }
             if cycle >= self.spec.max_cycles {
                 break Status::CycleLimit;
+            }
+            if crate::interrupt::requested() {
+                // The history ends at the cycle reached.
+                if !due && let Ok(m) = self.cycle.monitor(model) {
+                    last = m;
+                    let row = HistoryRow {
+                        cycle,
+                        time,
+                        ratio: last.ratio,
+                        kinetic: last.kinetic,
+                    };
+                    history.push(row);
+                    observer.monitored(&row);
+                }
+                break Status::Interrupted;
             }
             if self.output_every > 0 && cycle.is_multiple_of(self.output_every) {
                 observer.output_step(cycle, time, model, &mut self.cycle);

@@ -314,7 +314,14 @@ fn a_rerun_replaces_the_earlier_outputs() {
         summary.contains("not inside the region"),
         "{summary} / {err}"
     );
-    assert!(!dir.join("kirsch.pvd").exists() && !dir.join("history.csv").exists());
+    let left: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert!(
+        !dir.join("kirsch.pvd").exists() && !dir.join("history.csv").exists(),
+        "{left:?}"
+    );
     std::fs::remove_dir_all(&dir).unwrap();
 }
 

@@ -6,6 +6,7 @@ pub mod atomic;
 pub mod supports_vtu;
 pub mod vtu;
 
+use std::io::Write;
 use std::path::{Path, PathBuf};
 
 use serde::Serialize;
@@ -22,6 +23,11 @@ pub struct OutputWriter {
     /// (timestep value, file names: zones, then contacts when there are blocks, then supports when
     /// there are any) of each step so far.
     steps: Vec<(f64, Vec<String>)>,
+    /// Whether rows go to `history.csv` as the run goes (`for_run`, until `write_history`).
+    live_history: bool,
+    /// That file, from the first row on, flushed at each row, so that a killed run keeps its
+    /// history; rewritten whole and atomically at the end.
+    history: Option<std::io::BufWriter<std::fs::File>>,
 }
 
 impl OutputWriter {
@@ -33,6 +39,8 @@ impl OutputWriter {
             dir: dir.to_path_buf(),
             name: name.to_string(),
             steps: Vec::new(),
+            live_history: false,
+            history: None,
         })
     }
 
@@ -51,7 +59,28 @@ impl OutputWriter {
             }
         }
         writer.write_status("running", None).map_err(in_folder)?;
-        Ok(writer)
+        Ok(OutputWriter {
+            live_history: true,
+            ..writer
+        })
+    }
+
+    /// Add a row to the `history.csv` a run writes as it goes (nothing for other writers).
+    pub fn append_history(&mut self, r: &HistoryRow) -> std::io::Result<()> {
+        if !self.live_history {
+            return Ok(());
+        }
+        let h = match &mut self.history {
+            Some(h) => h,
+            None => {
+                let file = std::fs::File::create(self.dir.join("history.csv"))?;
+                let mut h = std::io::BufWriter::new(file);
+                writeln!(h, "{HISTORY_HEADER}")?;
+                self.history.insert(h)
+            }
+        };
+        history_row(h, r)?;
+        h.flush()
     }
 
     /// Write a `summary.json` that holds only the scene name, a status and, if given, the reason:
@@ -115,11 +144,13 @@ impl OutputWriter {
     }
 
     /// Write `history.csv`: cycle, time, unbalanced-force ratio, kinetic energy.
-    pub fn write_history(&self, rows: &[HistoryRow]) -> std::io::Result<()> {
+    pub fn write_history(&mut self, rows: &[HistoryRow]) -> std::io::Result<()> {
+        self.live_history = false;
+        self.history = None;
         write_atomic(&self.dir.join("history.csv"), |w| {
-            writeln!(w, "cycle,time_s,unbalanced_ratio,kinetic_energy_J_per_m")?;
+            writeln!(w, "{HISTORY_HEADER}")?;
             for r in rows {
-                writeln!(w, "{},{:e},{:e},{:e}", r.cycle, r.time, r.ratio, r.kinetic)?;
+                history_row(w, r)?;
             }
             Ok(())
         })
@@ -216,6 +247,14 @@ pub struct Summary {
     /// Each stage of a staged scene, in order (empty without stages).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub stages: Vec<StageSummary>,
+}
+
+/// The header of `history.csv`.
+const HISTORY_HEADER: &str = "cycle,time_s,unbalanced_ratio,kinetic_energy_J_per_m";
+
+/// One row of `history.csv`.
+fn history_row(w: &mut dyn Write, r: &HistoryRow) -> std::io::Result<()> {
+    writeln!(w, "{},{:e},{:e},{:e}", r.cycle, r.time, r.ratio, r.kinetic)
 }
 
 /// Whether `file` is an output of a run of the scene `name` (or such a file's temporary):
