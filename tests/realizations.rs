@@ -51,3 +51,109 @@ fn a_joint_crossing_a_wall_near_a_corner_merges_onto_the_wall() {
     }
     adit::build::build(&sc).unwrap();
 }
+
+mod drawn {
+    use adit::Scene;
+    use adit::build::mesh;
+    use adit::scene::Scatter;
+    use adit_meshing::Polygon;
+    use proptest::prelude::*;
+
+    /// Blocks tile the region: their areas (outline less holes) sum to the region's less the
+    /// excavations that are holes from the start, to round-off; so do the zones.
+    fn assert_tiles(scene: &Scene) -> Result<(), TestCaseError> {
+        let meshed = mesh(scene).map_err(|e| TestCaseError::fail(format!("{e:#}")))?;
+        let region = Polygon::new(scene.region.polygon.clone())
+            .signed_area()
+            .abs();
+        let open: f64 = meshed
+            .domain
+            .holes
+            .iter()
+            .zip(&scene.excavations)
+            .filter(|(_, e)| !scene.is_staged(&e.name))
+            .map(|(h, _)| h.polygon.signed_area().abs())
+            .sum();
+        let blocks: f64 = meshed
+            .blocking
+            .blocks
+            .iter()
+            .map(|b| {
+                b.outer.signed_area().abs()
+                    - b.holes.iter().map(|h| h.signed_area().abs()).sum::<f64>()
+            })
+            .sum();
+        let want = region - open;
+        prop_assert!(
+            (blocks - want).abs() < 1e-9 * region,
+            "blocks {blocks} vs {want}"
+        );
+        let zoned = meshed.stats().area;
+        prop_assert!(
+            (zoned - want).abs() < 1e-9 * region,
+            "zones {zoned} vs {want}"
+        );
+        Ok(())
+    }
+
+    fn tunnel() -> Scene {
+        let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+        Scene::load(&root.join("models/tunnel.json")).unwrap()
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig {
+            cases: 96,
+            rng_seed: proptest::test_runner::RngSeed::Fixed(14),
+            failure_persistence: None,
+            ..ProptestConfig::default()
+        })]
+
+        /// Realizations of the tunnel model's sets, with scatters up to the full spacing, ±15°
+        /// and ±40 %, build and tile the region.
+        #[test]
+        fn tunnel_realizations_build_and_tile(
+            n in 1u64..1_000_000_000,
+            origin in 0.0f64..3.0,
+            dip in 0.0f64..15.0,
+            fraction in 0.0f64..0.4,
+        ) {
+            let mut s = tunnel();
+            for set in &mut s.joint_sets {
+                set.scatter = Some(Scatter { origin, dip, spacing: fraction, trace: fraction, gap: fraction });
+            }
+            s.realization = n;
+            assert_tiles(&s)?;
+        }
+
+        /// Random non-persistent sets in a box with a circular hole build and tile the box. (A hole
+        /// whose segments were shorter than the merge tolerance lost slivers to the blocks.)
+        #[test]
+        fn random_sets_in_a_box_with_a_hole_build_and_tile(
+            half in 6.0f64..20.0,
+            radius in 0.5f64..2.5,
+            centre in (-0.5f64..0.5, -0.5f64..0.5),
+            sets in prop::collection::vec(
+                (0.0f64..180.0, 0.8f64..4.0, (-5.0f64..5.0, -5.0f64..5.0), 2.0f64..15.0, 0.0f64..4.0),
+                1..4,
+            ),
+        ) {
+            let c = [centre.0 * half, centre.1 * half];
+            let joint_sets: Vec<serde_json::Value> = sets.iter().map(|(dip, spacing, o, trace, gap)| {
+                serde_json::json!({ "dip": dip, "spacing": spacing, "origin": [o.0, o.1],
+                    "trace": trace, "gap": gap, "material": "joint" })
+            }).collect();
+            let scene = serde_json::json!({
+                "name": "box",
+                "materials": { "rock": { "density": 2600, "young": 10e9, "poisson": 0.25 } },
+                "region": { "polygon": [[-half, -half], [half, -half], [half, half], [-half, half]], "material": "rock" },
+                "excavations": [ { "name": "hole", "circle": { "center": c, "radius": radius, "segments": 48 } } ],
+                "zoning": { "edge_at_excavation": 0.25, "edge_far": 2.0 },
+                "joint_materials": { "joint": { "normal_stiffness": 1e10, "shear_stiffness": 5e9, "friction": 30 } },
+                "joint_sets": joint_sets,
+            });
+            let s = Scene::from_json(&scene.to_string(), "box").map_err(|e| TestCaseError::fail(e.to_string()))?;
+            assert_tiles(&s)?;
+        }
+    }
+}

@@ -13,7 +13,7 @@ pub use blocks::{Block, Blocking, cut_blocks, cut_blocks_filled};
 pub use domain::{Domain, Hole};
 pub use error::MeshError;
 pub use geometry::{Point, Polygon};
-pub use joints::{EdgeKind, JointSet, Segment};
+pub use joints::{EdgeKind, JointSet, Segment, SplitMix};
 pub use triangulate::{
     BoundaryEdge, MeshStats, TriMesh, Zoning, triangulate, triangulate_block, triangulate_outline,
 };

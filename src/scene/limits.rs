@@ -65,8 +65,8 @@ impl Scene {
         let (lo, hi) = region.bounds();
         let diagonal = (hi[0] - lo[0]).hypot(hi[1] - lo[1]);
         let mut joints = self.joints.len() as f64;
-        for (i, set) in self.joint_sets.iter().enumerate() {
-            joints += traces_of_set(set, diagonal);
+        for i in 0..self.joint_sets.len() {
+            joints += traces_of_set(&self.realized_set(i), diagonal);
             if joints > MAX_JOINTS {
                 return Err(invalid(
                     format!("joint_sets[{i}]"),

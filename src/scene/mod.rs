@@ -4,6 +4,7 @@
 
 mod limits;
 mod names;
+mod realization;
 mod supports;
 mod unique;
 mod validate;
@@ -14,6 +15,7 @@ use std::path::Path;
 use serde::Deserialize;
 
 pub use limits::{MAX_BOLT_SEGMENTS, MAX_BOLTS, MAX_GRAINS, MAX_JOINTS, MAX_POLYGON_VERTICES};
+pub use realization::Scatter;
 pub use supports::{BoltLine, BoltPattern, BoltSpec, LinerSpec};
 pub use validate::SceneError;
 
@@ -40,6 +42,9 @@ pub struct Scene {
     /// Sets of parallel joints cutting the region into blocks.
     #[serde(default)]
     pub joint_sets: Vec<JointSetSpec>,
+    /// Which realization of the joint sets' `scatter` to build (default 0: the sets as written).
+    #[serde(default)]
+    pub realization: u64,
     /// Explicit joint segments.
     #[serde(default)]
     pub joints: Vec<JointLine>,
@@ -344,6 +349,9 @@ pub struct JointSetSpec {
     /// Seed of the random spread (default 1).
     #[serde(default = "default_seed")]
     pub seed: u64,
+    /// How far the whole set moves between realizations (`Scene::realization`; default none).
+    #[serde(default)]
+    pub scatter: Option<Scatter>,
     /// Joint material name.
     pub material: String,
 }

@@ -412,6 +412,7 @@ impl Scene {
         }
         self.validate_supports()?;
         self.validate_stages()?;
+        self.validate_realization()?;
         self.validate_limits()
     }
 

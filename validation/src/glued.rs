@@ -34,6 +34,7 @@ pub fn glued_scene(kirsch: &Scene, k: f64) -> Scene {
         spread_dip: 0.0,
         spread_spacing: 0.0,
         seed: 1,
+        scatter: None,
         material: "glued".into(),
     };
     s.joint_sets = vec![set(30.0, 4.0, [0.3, 0.2]), set(120.0, 5.0, [0.1, -0.4])];
