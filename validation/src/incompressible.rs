@@ -113,7 +113,7 @@ mod tests {
     fn mixed_zones_do_not_lock_near_incompressibility() {
         let locked = run(0.499, false, 0.08).unwrap().errors["bore_displacement"];
         let mixed = run(0.499, true, 0.08).unwrap().errors["bore_displacement"];
-        // Plain triangles lock (21 % too stiff on this mesh); mixed ones: 0.3 %.
+        // Plain triangles lock (21 % too stiff on this mesh); mixed ones do not.
         assert!(locked > 0.1, "plain CST at ν = 0.499: error {locked}");
         assert!(mixed < 0.02, "mixed at ν = 0.499: error {mixed}");
     }
