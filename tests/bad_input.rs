@@ -191,3 +191,15 @@ fn check_refuses_what_run_refuses() {
     let err = refused(&s, "bolts[0]");
     assert!(err.contains("leaves the rock"), "{err}");
 }
+
+/// A mesh with a zone sharper than `zoning.accept_angle` is refused naming the field, the block and
+/// where (the tunnel's joints make a 7.2° zone); accepted at the default 1°.
+#[test]
+fn sharp_zones_are_refused_unless_accepted() {
+    let mut s = model("tunnel");
+    s["zoning"]["accept_angle"] = json!(10);
+    let err = refused(&s, "zoning.accept_angle");
+    assert!(err.contains("near (") && err.contains("7.15°"), "{err}");
+    s["zoning"]["accept_angle"] = json!(40);
+    refused(&s, "zoning.accept_angle");
+}

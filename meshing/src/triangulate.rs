@@ -525,15 +525,9 @@ impl TriMesh {
         let (mut min_edge, mut max_edge, mut area) = (f64::INFINITY, 0.0f64, 0.0);
         for t in &self.triangles {
             let p = t.map(|v| self.points[v as usize]);
-            let l = [
-                distance(p[1], p[2]),
-                distance(p[2], p[0]),
-                distance(p[0], p[1]),
-            ];
+            min_angle = min_angle.min(smallest_angle(p));
             for k in 0..3 {
-                let (a, b, c) = (l[k], l[(k + 1) % 3], l[(k + 2) % 3]);
-                let cos = ((b * b + c * c - a * a) / (2.0 * b * c)).clamp(-1.0, 1.0);
-                min_angle = min_angle.min(cos.acos().to_degrees());
+                let a = distance(p[k], p[(k + 1) % 3]);
                 min_edge = min_edge.min(a);
                 max_edge = max_edge.max(a);
             }
@@ -548,6 +542,39 @@ impl TriMesh {
             area,
         }
     }
+
+    /// The zone with the smallest angle: that angle (degrees) and the zone's centroid (m).
+    pub fn sharpest_zone(&self) -> Option<(f64, Point)> {
+        self.triangles
+            .iter()
+            .map(|t| {
+                let p = t.map(|v| self.points[v as usize]);
+                let c = [
+                    (p[0][0] + p[1][0] + p[2][0]) / 3.0,
+                    (p[0][1] + p[1][1] + p[2][1]) / 3.0,
+                ];
+                (smallest_angle(p), c)
+            })
+            .min_by(|a, b| a.0.total_cmp(&b.0))
+    }
+}
+
+/// Smallest interior angle of the triangle `p`, degrees, by the law of cosines.
+pub fn smallest_angle(p: [Point; 3]) -> f64 {
+    let l = [
+        distance(p[1], p[2]),
+        distance(p[2], p[0]),
+        distance(p[0], p[1]),
+    ];
+    (0..3)
+        .map(|k| {
+            let (a, b, c) = (l[k], l[(k + 1) % 3], l[(k + 2) % 3]);
+            ((b * b + c * c - a * a) / (2.0 * b * c))
+                .clamp(-1.0, 1.0)
+                .acos()
+                .to_degrees()
+        })
+        .fold(f64::INFINITY, f64::min)
 }
 
 #[cfg(test)]

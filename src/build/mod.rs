@@ -204,6 +204,29 @@ pub fn build(scene: &Scene) -> anyhow::Result<Built> {
     build_meshed(scene, mesh(scene)?)
 }
 
+/// The mesh's sharpest zone against `zoning.accept_angle`: an error naming the block and where.
+fn refuse_sharp_zones(scene: &Scene, meshed: &Meshed) -> anyhow::Result<()> {
+    let sharpest = meshed
+        .meshes
+        .iter()
+        .enumerate()
+        .filter(|(b, _)| meshed.modes[*b] == BlockMode::Deformable)
+        .filter_map(|(b, m)| m.sharpest_zone().map(|(angle, at)| (angle, at, b)))
+        .min_by(|x, y| x.0.total_cmp(&y.0));
+    let accept = scene.zoning.accept_angle;
+    match sharpest {
+        Some((angle, at, b)) if angle < accept => anyhow::bail!(
+            "zoning.accept_angle: a zone of block {b} near ({:.3}, {:.3}) m has an angle of \
+             {angle:.2}°, below the {accept}° accepted (joints or walls meet at such an angle, or \
+             lie closer than the zoning there; it would set a tiny time step): move or coarsen \
+             the joints, or lower `zoning.accept_angle` (0 accepts any)",
+            at[0],
+            at[1]
+        ),
+        _ => Ok(()),
+    }
+}
+
 /// [`build`] from the blocks and zones `mesh` made of `scene`.
 pub fn build_meshed(scene: &Scene, meshed: Meshed) -> anyhow::Result<Built> {
     let stats = meshed.stats();
@@ -456,6 +479,7 @@ pub fn build_meshed(scene: &Scene, meshed: Meshed) -> anyhow::Result<Built> {
             blk.area()
         ));
     }
+    refuse_sharp_zones(scene, &meshed)?;
     for (b, mesh) in meshed.meshes.iter().enumerate() {
         if meshed.modes[b] == BlockMode::Deformable && mesh.angle_limit_deg < scene.zoning.min_angle
         {

@@ -461,6 +461,10 @@ pub struct ZoningSpec {
     /// Largest zone count accepted (default 2 000 000).
     #[serde(default = "default_max_zones")]
     pub max_zones: usize,
+    /// Smallest zone angle accepted, degrees (default 1): a mesh with a sharper zone is refused
+    /// (it would set a tiny time step); 0 accepts any.
+    #[serde(default = "default_accept_angle")]
+    pub accept_angle: f64,
     /// Mixed discretization: each zone takes the volumetric strain averaged over its nodes'
     /// patches instead of its own, so constant-strain triangles do not lock as ν → 0.5
     /// (default false).
@@ -470,6 +474,9 @@ pub struct ZoningSpec {
 
 fn default_grading() -> f64 {
     0.2
+}
+fn default_accept_angle() -> f64 {
+    1.0
 }
 fn default_min_angle() -> f64 {
     30.0

@@ -335,6 +335,16 @@ impl Scene {
                 format!("must be in (0, 2], got {}", Num(z.grading)),
             ));
         }
+        if !(z.accept_angle >= 0.0 && z.accept_angle < z.min_angle) {
+            return Err(invalid(
+                "zoning.accept_angle",
+                format!(
+                    "must be at least 0 and below zoning.min_angle ({}°), got {}",
+                    Num(z.min_angle),
+                    Num(z.accept_angle)
+                ),
+            ));
+        }
         if !(z.min_angle > 0.0 && z.min_angle <= 33.0) {
             return Err(invalid(
                 "zoning.min_angle",
