@@ -12,12 +12,13 @@ pub fn requested() -> bool {
     REQUESTED.load(Ordering::Relaxed)
 }
 
-/// Ask for an interruption (what the signal handler does; tests call it directly).
-pub fn request() {
+/// Ask for an interruption (what the signal handler does).
+fn request() {
     REQUESTED.store(true, Ordering::Relaxed);
 }
 
-/// Forget an earlier request (before a new run in the same process).
+/// Forget an earlier request: a run starts with none (`run_scene`), so a Ctrl-C that stopped one
+/// run of a process does not stop the next.
 pub fn clear() {
     REQUESTED.store(false, Ordering::Relaxed);
 }

@@ -68,6 +68,7 @@ pub fn run_scene(
     observer: &mut dyn Observer,
 ) -> anyhow::Result<RunResult> {
     let start = Instant::now();
+    crate::interrupt::clear();
     let mut writer = OutputWriter::for_run(out_dir, &scene.name)?;
     let result = build_solve_write(scene, &mut writer, observer, start);
     if let Err(e) = &result {

@@ -67,7 +67,7 @@ impl Scene {
         let mut joints = self.joints.len() as f64;
         for i in 0..self.joint_sets.len() {
             joints += traces_of_set(&self.realized_set(i), diagonal);
-            if joints > MAX_JOINTS {
+            if beyond(joints, MAX_JOINTS) {
                 return Err(invalid(
                     format!("joint_sets[{i}]"),
                     format!(
