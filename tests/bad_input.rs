@@ -203,3 +203,23 @@ fn sharp_zones_are_refused_unless_accepted() {
     s["zoning"]["accept_angle"] = json!(40);
     refused(&s, "zoning.accept_angle");
 }
+
+/// A block boundary that crosses itself (joints closer than the merge tolerance: set 0 of the
+/// tunnel 0.06 m apart) names the block, where, and the joint sets whose edges are there, in plain
+/// numbers.
+#[test]
+fn a_crossing_names_the_block_and_its_joints() {
+    let mut s = model("tunnel");
+    s["joint_sets"][0]["spacing"] = json!(0.06);
+    let (code, err) = check_text(&s.to_string(), "crossing");
+    assert_eq!(code, Some(1), "{err}");
+    assert!(
+        err.starts_with("error: joint_sets[")
+            && err.contains(": block ")
+            && err.contains("crosses itself between (")
+            && err.contains("(edges there: ")
+            && err.contains("joint_sets[0]")
+            && !err.contains("Some("),
+        "{err}"
+    );
+}

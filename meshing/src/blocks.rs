@@ -272,7 +272,7 @@ pub fn cut_blocks_filled(
             if let Some(kind) = edges.remove(&key) {
                 if !matches!(kind, EdgeKind::Joint(_)) {
                     return Err(MeshError::Triangulation(format!(
-                        "a {kind:?} edge has a free end at ({}, {}); the region or an excavation is not closed",
+                        "a {kind} edge has a free end at ({}, {}); the region or an excavation is not closed",
                         pts[key.0 as usize][0], pts[key.0 as usize][1]
                     )));
                 }

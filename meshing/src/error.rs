@@ -2,6 +2,8 @@
 
 use thiserror::Error;
 
+use crate::joints::EdgeKind;
+
 /// Why a domain could not be built or meshed.
 #[derive(Debug, Error, Clone, PartialEq)]
 pub enum MeshError {
@@ -28,7 +30,27 @@ pub enum MeshError {
     /// The triangulator failed or could not reach the requested quality.
     #[error("triangulation failed: {0}")]
     Triangulation(String),
+    /// A block's boundary crosses itself (`message` says where); `kinds` are what the block's
+    /// edges there lie on: the joints, walls or region edges that made the crossing.
+    #[error("triangulation failed: {message}")]
+    Crossing {
+        message: String,
+        kinds: Vec<EdgeKind>,
+    },
     /// Refinement at the requested minimum angle ran out of its vertex budget.
     #[error("triangulation failed: {0}")]
     Refinement(String),
+}
+
+impl MeshError {
+    /// The error, said of block `b` (its number in the blocking) where that helps to find it.
+    pub fn in_block(self, b: usize) -> MeshError {
+        match self {
+            MeshError::Crossing { message, kinds } => MeshError::Crossing {
+                message: format!("block {b}: {message}"),
+                kinds,
+            },
+            other => other,
+        }
+    }
 }

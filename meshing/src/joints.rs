@@ -14,6 +14,16 @@ pub enum EdgeKind {
     Joint(u32),
 }
 
+impl std::fmt::Display for EdgeKind {
+    fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        match self {
+            EdgeKind::Region(i) => write!(f, "region edge {i}"),
+            EdgeKind::Excavation(j) => write!(f, "wall of excavation {j}"),
+            EdgeKind::Joint(k) => write!(f, "joint {k}"),
+        }
+    }
+}
+
 /// A straight cutting segment, metres, with its kind.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Segment {

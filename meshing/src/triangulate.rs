@@ -16,7 +16,7 @@ use crate::blocks::Block;
 use crate::domain::Domain;
 use crate::error::MeshError;
 use crate::geometry::Polygon;
-use crate::geometry::{Point, distance, segment_distance};
+use crate::geometry::{Point, distance, segment_distance, segments_intersect};
 use crate::joints::EdgeKind;
 
 /// Zoning controls. Lengths in metres.
@@ -301,6 +301,27 @@ fn constrained_mesh(
     constrained_mesh_with(block, vertices, edges, params(false), budget, true)
 }
 
+/// What the block's ring edges that touch or cross the segment pa–pb lie on (each kind once): the
+/// joints, walls or region edges of a crossing.
+fn kinds_near(block: &Block, pa: Point, pb: Point) -> Vec<EdgeKind> {
+    let tol = 1e-9 * block.outer.size();
+    let rings = std::iter::once((&block.outer, &block.outer_kinds))
+        .chain(block.holes.iter().zip(&block.hole_kinds));
+    let mut kinds: Vec<EdgeKind> = Vec::new();
+    for (ring, ring_kinds) in rings {
+        for (i, &kind) in ring_kinds.iter().enumerate().take(ring.len()) {
+            let (p, q) = ring.edge(i);
+            let near = segment_distance(pa, p, q) <= tol
+                || segment_distance(pb, p, q) <= tol
+                || segments_intersect(pa, pb, p, q);
+            if near && !kinds.contains(&kind) {
+                kinds.push(kind);
+            }
+        }
+    }
+    kinds
+}
+
 /// One triangulation of `constrained_mesh`: faces excluded by spade, or (`by_centroid`) faces whose
 /// centroid is outside the block's outer ring or inside one of its holes.
 fn constrained_mesh_with(
@@ -319,17 +340,24 @@ fn constrained_mesh_with(
         })
         .map_err(|e| MeshError::Triangulation(format!("{e:?}")))?;
     if let Some([a, b]) = conflict {
-        let at = |v: usize| {
-            cdt.vertices().nth(v).map_or("?".to_string(), |h| {
-                let p = h.position();
-                format!("({:.4}, {:.4})", p.x, p.y)
-            })
+        let position = |v: usize| {
+            cdt.vertices()
+                .nth(v)
+                .map(|h| [h.position().x, h.position().y])
         };
-        return Err(MeshError::Triangulation(format!(
-            "block boundary crosses itself between {} and {} m; joints too close to each other or to a wall",
-            at(a),
-            at(b)
-        )));
+        let (Some(pa), Some(pb)) = (position(a), position(b)) else {
+            return Err(MeshError::Triangulation(
+                "block boundary crosses itself".into(),
+            ));
+        };
+        return Err(MeshError::Crossing {
+            message: format!(
+                "block boundary crosses itself between ({:.4}, {:.4}) and ({:.4}, {:.4}) m; joints \
+                 too close to each other or to a wall",
+                pa[0], pa[1], pb[0], pb[1]
+            ),
+            kinds: kinds_near(block, pa, pb),
+        });
     }
     let result = cdt.refine(params);
     if let (false, Some(budget)) = (result.refinement_complete, budget) {

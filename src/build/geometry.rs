@@ -150,6 +150,13 @@ fn field_of(scene: &Scene, err: &MeshError) -> String {
             return "zoning".into();
         }
         MeshError::TooManyZones { .. } => return "zoning.max_zones".into(),
+        // Under the first joint that made the crossing, else the zoning.
+        MeshError::Crossing { kinds, .. } => {
+            return kinds
+                .iter()
+                .find(|k| matches!(k, EdgeKind::Joint(_)))
+                .map_or("zoning".into(), |&k| edge_source(scene, k));
+        }
     };
     if let Some(i) = scene.excavations.iter().position(|e| e.name == shape) {
         return format!("excavations[{i}]");
@@ -160,9 +167,34 @@ fn field_of(scene: &Scene, err: &MeshError) -> String {
     }
 }
 
-/// Cut the scene's region into blocks and zone each; errors name the scene field.
+/// The scene field a block edge of `kind` comes from: a region edge, an excavation wall, a joint
+/// set, an explicit joint or the Voronoi grains.
+fn edge_source(scene: &Scene, kind: EdgeKind) -> String {
+    let sets = scene.joint_sets.len();
+    match kind {
+        EdgeKind::Region(i) => format!("region.polygon edge {i}"),
+        EdgeKind::Excavation(j) => format!("excavations[{j}]"),
+        EdgeKind::Joint(k) if (k as usize) < sets => format!("joint_sets[{k}]"),
+        EdgeKind::Joint(k) if (k as usize) < sets + scene.joints.len() => {
+            format!("joints[{}]", k as usize - sets)
+        }
+        EdgeKind::Joint(_) => "voronoi".into(),
+    }
+}
+
+/// Cut the scene's region into blocks and zone each; errors name the scene field (and, for a block
+/// boundary that crosses itself, the joints, walls or region edges there).
 pub fn mesh(scene: &Scene) -> anyhow::Result<Meshed> {
-    mesh_blocks(scene).map_err(|e| anyhow::anyhow!("{}: {e}", field_of(scene, &e)))
+    mesh_blocks(scene).map_err(|e| {
+        let field = field_of(scene, &e);
+        match &e {
+            MeshError::Crossing { kinds, .. } if !kinds.is_empty() => {
+                let edges: Vec<String> = kinds.iter().map(|&k| edge_source(scene, k)).collect();
+                anyhow::anyhow!("{field}: {e} (edges there: {})", edges.join(", "))
+            }
+            _ => anyhow::anyhow!("{field}: {e}"),
+        }
+    })
 }
 
 fn mesh_blocks(scene: &Scene) -> Result<Meshed, MeshError> {
@@ -230,9 +262,13 @@ fn mesh_blocks(scene: &Scene) -> Result<Meshed, MeshError> {
         .blocks
         .par_iter()
         .zip(&modes)
-        .map(|(b, mode)| match mode {
-            BlockMode::Deformable => triangulate_block(b, &excavations, &zoning),
-            BlockMode::Simple | BlockMode::Rigid => triangulate_outline(b),
+        .enumerate()
+        .map(|(i, (b, mode))| {
+            match mode {
+                BlockMode::Deformable => triangulate_block(b, &excavations, &zoning),
+                BlockMode::Simple | BlockMode::Rigid => triangulate_outline(b),
+            }
+            .map_err(|e| e.in_block(i))
         })
         .collect::<Result<Vec<_>, _>>()?;
     Ok(Meshed {
