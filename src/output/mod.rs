@@ -1,6 +1,7 @@
 //! Results on disk, as the output contract of `design.md`: a ParaView collection (`.pvd`) over
 //! zone grids (`_zones_NNNN.vtu`), contacts and supports (`_contacts_`, `_supports_NNNN.vtu`),
-//! `history.csv` and `summary.json`, each written atomically.
+//! `history.csv` and `summary.json`, each written atomically (`history.csv` is also written row by
+//! row while a run goes, so that a killed run keeps it; the run's `summary.json` says `running`).
 
 pub mod atomic;
 pub mod supports_vtu;
