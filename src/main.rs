@@ -181,7 +181,7 @@ fn check(scene_path: &Path) -> anyhow::Result<()> {
         ),
     ];
     let mut built = build_meshed(&scene, meshed)?;
-    let cost = predicted_cost(&scene, &mut built.model);
+    let cost = predicted_cost(&scene, &mut built.model)?;
     let mut out = std::io::stdout().lock();
     for line in lines.into_iter().chain([cost]) {
         writeln!(out, "{line}")?;
@@ -194,22 +194,23 @@ fn check(scene_path: &Path) -> anyhow::Result<()> {
 
 /// What a cycle of `model` costs: the critical time step with real masses and what sets it, and
 /// the speed of a few cycles measured here (the model is left as cycled; `check` drops it).
-fn predicted_cost(scene: &Scene, model: &mut adit::model::Model) -> String {
+fn predicted_cost(scene: &Scene, model: &mut adit::model::Model) -> anyhow::Result<String> {
     const CYCLES: u32 = 20;
     let mut solver = adit::solve::Solver::new(model, &scene.solve, 0);
+    adit::run::ensure_time_step(&solver)?;
     let start = std::time::Instant::now();
     for _ in 0..CYCLES {
         solver.cycle.run(model, &solver.params);
     }
     let per_cycle = start.elapsed().as_secs_f64() / f64::from(CYCLES);
-    format!(
+    Ok(format!(
         "cost: critical time step {:.3e} s ({}); {:.0} cycles/s ({:.3e} zone-cycles/s) measured \
          over {CYCLES} cycles here",
         solver.step.dt_critical,
         solver.step.describe(),
         1.0 / per_cycle,
         model.zones.len() as f64 / per_cycle
-    )
+    ))
 }
 
 fn write_mesh(scene_path: &Path, out: Option<PathBuf>) -> anyhow::Result<()> {

@@ -60,6 +60,16 @@ impl Observer for Writing<'_> {
     }
 }
 
+/// A solve needs a finite time step: something with stiffness to derive it from.
+pub fn ensure_time_step(solver: &Solver) -> anyhow::Result<()> {
+    anyhow::ensure!(
+        solver.params.dt.is_finite(),
+        "solve: no zone or contact stiffness to derive the time step from (a lone rigid or simple \
+         block without joints); make the block deformable or add joints"
+    );
+    Ok(())
+}
+
 /// Build and solve `scene`, writing results into `out_dir`. A failed solve still writes
 /// `history.csv` and a `summary.json` with status `failed`, but no final zone grid.
 pub fn run_scene(
@@ -104,11 +114,7 @@ fn build_solve_write(
         staging.apply(stage, scene, &mut built);
         let spec = stage.solve.as_ref().unwrap_or(&scene.solve);
         let mut solver = Solver::new(&mut built.model, spec, scene.output.every);
-        anyhow::ensure!(
-            solver.params.dt.is_finite(),
-            "solve: no zone or contact stiffness to derive the time step from (a lone rigid or simple \
-             block without joints); make the block deformable or add joints"
-        );
+        ensure_time_step(&solver)?;
         let mut writing = Writing {
             writer,
             inner: observer,

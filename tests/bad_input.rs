@@ -223,3 +223,19 @@ fn a_crossing_names_the_block_and_its_joints() {
         "{err}"
     );
 }
+
+/// `check` refuses what `run` refuses before its first cycle: a lone rigid block has no stiffness
+/// to derive a time step from.
+#[test]
+fn check_refuses_a_scene_without_a_time_step() {
+    let s = json!({
+        "name": "lone",
+        "materials": { "rock": { "density": 2500, "young": 10e9, "poisson": 0.25 } },
+        "region": { "polygon": [[0, 0], [1, 0], [1, 1], [0, 1]], "material": "rock" },
+        "zoning": { "edge_at_excavation": 0.5, "edge_far": 0.5 },
+        "blocks": { "mode": "rigid" },
+        "gravity": [0, -9.81],
+        "solve": { "mode": "dynamic", "damping": 0, "max_cycles": 10 }
+    });
+    refused(&s, "solve: no zone or contact stiffness");
+}
