@@ -140,7 +140,9 @@ impl Solver {
                 break Status::Failed(format!("cycle {cycle}: {reason}"));
             }
             let time = cycle as f64 * self.params.dt;
-            let due = cycle.is_multiple_of(every) || cycle == self.spec.max_cycles;
+            // An interrupted solve records its last cycle, so the history ends at the cycle reached.
+            let interrupted = crate::interrupt::requested();
+            let due = cycle.is_multiple_of(every) || cycle == self.spec.max_cycles || interrupted;
             if due {
                 match self.cycle.monitor(model) {
                     Ok(m) => last = m,
@@ -161,19 +163,7 @@ impl Solver {
             if cycle >= self.spec.max_cycles {
                 break Status::CycleLimit;
             }
-            if crate::interrupt::requested() {
-                // The history ends at the cycle reached.
-                if !due && let Ok(m) = self.cycle.monitor(model) {
-                    last = m;
-                    let row = HistoryRow {
-                        cycle,
-                        time,
-                        ratio: last.ratio,
-                        kinetic: last.kinetic,
-                    };
-                    history.push(row);
-                    observer.monitored(&row);
-                }
+            if interrupted {
                 break Status::Interrupted;
             }
             if self.output_every > 0 && cycle.is_multiple_of(self.output_every) {

@@ -1,9 +1,10 @@
 //! Bad, huge and odd input (issue 15): one clear `error:` line naming the field and the limit,
 //! before anything large is built, and never a panic, an abort or a hang.
 
-use std::io::Read;
+mod common;
+
 use std::process::{Command, Stdio};
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 use serde_json::{Value, json};
 
@@ -17,30 +18,13 @@ fn check_text(text: &str, tag: &str) -> (Option<i32>, String) {
     let path =
         std::env::temp_dir().join(format!("adit-bad-input-{tag}-{}.json", std::process::id()));
     std::fs::write(&path, text).unwrap();
-    let mut child = Command::new(env!("CARGO_BIN_EXE_adit"))
+    let child = Command::new(env!("CARGO_BIN_EXE_adit"))
         .args(["check", path.to_str().unwrap()])
         .stdout(Stdio::null())
         .stderr(Stdio::piped())
         .spawn()
         .unwrap();
-    let start = Instant::now();
-    let code = loop {
-        if let Some(status) = child.try_wait().unwrap() {
-            break status.code();
-        }
-        if start.elapsed() > Duration::from_secs(60) {
-            child.kill().unwrap();
-            break None;
-        }
-        std::thread::sleep(Duration::from_millis(20));
-    };
-    let mut err = String::new();
-    child
-        .stderr
-        .take()
-        .unwrap()
-        .read_to_string(&mut err)
-        .unwrap();
+    let (code, err) = common::wait_at_most(child, Duration::from_secs(60));
     std::fs::remove_file(&path).unwrap();
     (code, err)
 }
@@ -228,14 +212,6 @@ fn a_crossing_names_the_block_and_its_joints() {
 /// to derive a time step from.
 #[test]
 fn check_refuses_a_scene_without_a_time_step() {
-    let s = json!({
-        "name": "lone",
-        "materials": { "rock": { "density": 2500, "young": 10e9, "poisson": 0.25 } },
-        "region": { "polygon": [[0, 0], [1, 0], [1, 1], [0, 1]], "material": "rock" },
-        "zoning": { "edge_at_excavation": 0.5, "edge_far": 0.5 },
-        "blocks": { "mode": "rigid" },
-        "gravity": [0, -9.81],
-        "solve": { "mode": "dynamic", "damping": 0, "max_cycles": 10 }
-    });
+    let s: Value = serde_json::from_str(common::LONE_RIGID_BLOCK).unwrap();
     refused(&s, "solve: no zone or contact stiffness");
 }

@@ -1,5 +1,7 @@
 //! Jointed models: blocks cut by joints interact through contacts.
 
+mod common;
+
 use adit::Scene;
 use adit::build::build;
 use adit::solve::{Quiet, Solver, Status};
@@ -235,16 +237,7 @@ fn free_rigid_block_spins_without_distortion() {
 /// a run with an infinite step.
 #[test]
 fn lone_rigid_block_in_dynamics_is_a_clear_error() {
-    let text = r#"{
-        "name": "lone",
-        "materials": { "rock": { "density": 2500, "young": 10e9, "poisson": 0.25 } },
-        "region": { "polygon": [[0, 0], [1, 0], [1, 1], [0, 1]], "material": "rock" },
-        "zoning": { "edge_at_excavation": 0.5, "edge_far": 0.5 },
-        "blocks": { "mode": "rigid" },
-        "gravity": [0, -9.81],
-        "solve": { "mode": "dynamic", "damping": 0, "max_cycles": 10 }
-    }"#;
-    let scene = Scene::from_json(text, "lone").unwrap();
+    let scene = Scene::from_json(common::LONE_RIGID_BLOCK, "lone").unwrap();
     let out = std::env::temp_dir().join("adit_lone_rigid_block");
     let err = adit::run::run_scene(&scene, &out, &mut Quiet)
         .err()

@@ -3,9 +3,10 @@
 //! checked by `adit check` in a child process under a time and memory limit. Every case ends with
 //! exit 0, or exit 1 and one `error:` line; never a panic (101), an abort (134), a kill or a hang.
 
-use std::io::Read;
+mod common;
+
 use std::process::{Command, Stdio};
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 use serde_json::{Value, json};
 
@@ -127,7 +128,7 @@ fn mutate(model: &Value, draw: &mut Draw) -> String {
 fn check(text: &str, tag: usize) -> (Option<i32>, String) {
     let path = std::env::temp_dir().join(format!("adit-fuzz-{}-{tag}.json", std::process::id()));
     std::fs::write(&path, text).unwrap();
-    let mut child = Command::new("sh")
+    let child = Command::new("sh")
         .arg("-c")
         .arg(format!("ulimit -v {MEMORY_KIB}; exec \"$0\" check \"$1\""))
         .arg(env!("CARGO_BIN_EXE_adit"))
@@ -136,25 +137,7 @@ fn check(text: &str, tag: usize) -> (Option<i32>, String) {
         .stderr(Stdio::piped())
         .spawn()
         .unwrap();
-    let start = Instant::now();
-    let code = loop {
-        if let Some(status) = child.try_wait().unwrap() {
-            break status.code();
-        }
-        if start.elapsed() > Duration::from_secs(SECONDS) {
-            child.kill().unwrap();
-            let _ = child.wait();
-            break None;
-        }
-        std::thread::sleep(Duration::from_millis(10));
-    };
-    let mut err = String::new();
-    child
-        .stderr
-        .take()
-        .unwrap()
-        .read_to_string(&mut err)
-        .unwrap();
+    let (code, err) = common::wait_at_most(child, Duration::from_secs(SECONDS));
     std::fs::remove_file(&path).unwrap();
     (code, err)
 }

@@ -1,0 +1,43 @@
+//! Pieces the integration tests share.
+
+#![allow(dead_code)]
+
+use std::io::Read;
+use std::process::Child;
+use std::time::{Duration, Instant};
+
+/// A lone rigid block in a dynamic run: nothing to derive a time step from.
+pub const LONE_RIGID_BLOCK: &str = r#"{
+    "name": "lone",
+    "materials": { "rock": { "density": 2500, "young": 10e9, "poisson": 0.25 } },
+    "region": { "polygon": [[0, 0], [1, 0], [1, 1], [0, 1]], "material": "rock" },
+    "zoning": { "edge_at_excavation": 0.5, "edge_far": 0.5 },
+    "blocks": { "mode": "rigid" },
+    "gravity": [0, -9.81],
+    "solve": { "mode": "dynamic", "damping": 0, "max_cycles": 10 }
+}"#;
+
+/// Wait for `child` (spawned with stderr piped) at most `limit`, killing it after: its exit code
+/// (None if killed or ended by a signal) and its stderr.
+pub fn wait_at_most(mut child: Child, limit: Duration) -> (Option<i32>, String) {
+    let start = Instant::now();
+    let code = loop {
+        if let Some(status) = child.try_wait().unwrap() {
+            break status.code();
+        }
+        if start.elapsed() > limit {
+            child.kill().unwrap();
+            let _ = child.wait();
+            break None;
+        }
+        std::thread::sleep(Duration::from_millis(10));
+    };
+    let mut err = String::new();
+    child
+        .stderr
+        .take()
+        .unwrap()
+        .read_to_string(&mut err)
+        .unwrap();
+    (code, err)
+}
