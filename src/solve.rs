@@ -3,7 +3,7 @@
 
 use crate::cycle::timestep::{
     Limiter, StepLimit, add_contact_stiffness, body_masses, body_step, body_stiffness,
-    critical_step, damped_margin, lumped_masses, scaled_masses, zone_stiffness,
+    critical_step, damped_margin, lumped_masses, scaled_masses, viscous_margin, zone_stiffness,
 };
 use crate::cycle::{Cycle, CycleParams, Monitor};
 use crate::model::Model;
@@ -98,6 +98,8 @@ impl Solver {
                 dt,
                 damping: spec.damping_coefficient(),
                 large_strain: spec.large_strain,
+                mass_damping: spec.rayleigh.map_or(0.0, |r| r.coefficients().0),
+                stiffness_damping: spec.rayleigh.map_or(0.0, |r| r.coefficients().1),
             },
             step,
             spec: spec.clone(),
@@ -279,7 +281,8 @@ pub fn derive_masses(model: &mut Model, spec: &SolveSpec) -> (f64, StepLimit) {
         SolveMode::Dynamic => {
             model.nodes.mass = real;
             model.bodies.mass = body_real;
-            s * step.dt_critical
+            let beta = spec.rayleigh.map_or(0.0, |r| r.coefficients().1);
+            s * step.dt_critical * viscous_margin(beta, step.dt_critical)
         }
     };
     let bodies = &mut model.bodies;

@@ -4,7 +4,7 @@
 
 use rayon::prelude::*;
 
-use super::{Cycle, CycleParams};
+use super::{Cycle, CycleParams, mass_damping_factors};
 use crate::law::StrainIncrement;
 use crate::model::bodies::{BodyMode, DOFS, NO_BODY, apply, velocity_map};
 use crate::model::{Model, Stress};
@@ -22,8 +22,9 @@ pub(super) fn rotate(s: &mut Stress, angle: f64) {
 }
 
 impl Cycle {
-    /// Body stage: Q = Σ T_iᵀ f_i + weight − A(σxx, σyy, 2σxy); local damping
-    /// Q_d = Q − α|Q| sign(q̇) per DOF; q̇ ← q̇ + Q_d Δt / M; the centroid moves by v_c Δt and the
+    /// Body stage: Q = Σ T_iᵀ f_i + weight − A(σxx, σyy, 2σxy) (with the viscous stress of
+    /// stiffness-proportional damping, `Cycle::body_viscous`, added to σ); local damping
+    /// Q_d = Q − α|Q| sign(q̇) per DOF; q̇ ← q̇ + Q_d Δt / M (mass-proportional damping as nodes); the centroid moves by v_c Δt and the
     /// offsets map as r ← A r, with A the exact rotation by ωΔt for a rigid block and I + LΔt for a
     /// simple one, whose stress takes the strain increment through its zone law and turns by ωΔt.
     /// Nodes then take the chord velocity (x_new − x)/Δt. Returns the largest body-node speed, m/s.
@@ -37,7 +38,8 @@ impl Cycle {
             laws,
             ..
         } = model;
-        let (alpha, dt) = (p.damping, p.dt);
+        let (alpha, dt, viscous) = (p.damping, p.dt, p.viscous_ratio());
+        let (keep, gain) = mass_damping_factors(p);
         let (pos, disp, force) = (&nodes.pos, &nodes.disp, &nodes.force);
         let (mode, range, mass, weight, material, projector) = (
             &bodies.mode,
@@ -57,10 +59,11 @@ impl Cycle {
             .zip(bodies.plastic.par_iter_mut())
             .zip(bodies.area.par_iter_mut())
             .zip(bodies.step.par_iter_mut())
+            .zip(self.body_viscous.par_iter_mut())
             .enumerate()
             .with_min_len(64)
             .for_each(
-                |(k, (((((((v, q_out), c), s), state), plastic), area), step))| {
+                |(k, ((((((((v, q_out), c), s), state), plastic), area), step), sv))| {
                     let mut q = [0.0; DOFS];
                     for n in range[k][0] as usize..range[k][1] as usize {
                         let f = force[n];
@@ -74,9 +77,9 @@ impl Cycle {
                     q[1] += weight[k][1];
                     let simple = mode[k] == BodyMode::Simple;
                     if simple {
-                        q[3] -= *area * s[0];
-                        q[4] -= *area * s[1];
-                        q[5] -= 2.0 * *area * s[3];
+                        q[3] -= *area * (s[0] + sv[0]);
+                        q[4] -= *area * (s[1] + sv[1]);
+                        q[5] -= 2.0 * *area * (s[3] + sv[3]);
                     }
                     let dofs = mode[k].dofs();
                     q[dofs..].fill(0.0);
@@ -93,7 +96,7 @@ impl Cycle {
                     for d in 0..dofs {
                         let damped =
                             q[d] - alpha * q[d].abs() * v[d].signum() * (v[d] != 0.0) as u8 as f64;
-                        v[d] += damped / m[d] * dt;
+                        v[d] = keep * v[d] + gain * damped / m[d] * dt;
                     }
                     if let Some(p) = &projector[k] {
                         *v = apply(p, v);
@@ -105,7 +108,12 @@ impl Cycle {
                     let map = if simple {
                         let (exx, eyy, exy) = (v[3] * dt, v[4] * dt, v[5] * dt);
                         let de: StrainIncrement = [exx, eyy, 2.0 * exy];
+                        let old = *s;
                         laws[material[k].0 as usize].update(s, state, plastic, &de);
+                        if viscous > 0.0 {
+                            // β_R σ̇ over this step, acting with the stress in the next one.
+                            *sv = std::array::from_fn(|i| viscous * (s[i] - old[i]));
+                        }
                         rotate(s, spin);
                         let a = [1.0 + exx, exy - spin, exy + spin, 1.0 + eyy];
                         *area *= a[0] * a[3] - a[1] * a[2];

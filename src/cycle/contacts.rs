@@ -52,7 +52,8 @@ impl Cycle {
     /// between their rounding centres) and tangent t, gives the increments
     /// Δun = v_rel·n Δt, Δus = v_rel·t Δt; the joint law returns the stresses, and the force
     /// F = −L(σn n + τ t) acts on the node while −(1 − ξ)F and −ξF act on the edge's nodes, so
-    /// momentum is conserved exactly.
+    /// momentum is conserved exactly. With stiffness-proportional Rayleigh damping σn and τ take
+    /// β_R times their rate over the step on top (`CycleParams::viscous_ratio`).
     pub fn contact_forces(&mut self, model: &mut Model, p: &CycleParams) {
         let Model {
             nodes,
@@ -66,7 +67,7 @@ impl Cycle {
             let (p, u) = (pos[n as usize], disp[n as usize]);
             [p[0] + u[0], p[1] + u[1]]
         };
-        let dt = p.dt;
+        let (dt, viscous) = (p.dt, p.viscous_ratio());
         contacts
             .state
             .par_iter_mut()
@@ -100,10 +101,18 @@ impl Cycle {
                 ];
                 let dn = (vr[0] * n[0] + vr[1] * n[1]) * dt;
                 let ds = (vr[0] * t[0] + vr[1] * t[1]) * dt;
+                let old = (state.normal, state.shear);
                 joint_laws[mat as usize].update(state, dn, ds);
+                let (mut sn, mut ss) = (state.normal, state.shear);
+                // Stiffness-proportional damping: β_R times the rate of the law's stresses, on a
+                // contact that carries load after the step (an opened one pulls nothing back).
+                if viscous > 0.0 && (sn != 0.0 || ss != 0.0) {
+                    sn += viscous * (sn - old.0);
+                    ss += viscous * (ss - old.1);
+                }
                 let force = [
-                    -len * (state.normal * n[0] + state.shear * t[0]),
-                    -len * (state.normal * n[1] + state.shear * t[1]),
+                    -len * (sn * n[0] + ss * t[0]),
+                    -len * (sn * n[1] + ss * t[1]),
                 ];
                 f[0] = force;
                 f[1] = [-(1.0 - xi) * force[0], -(1.0 - xi) * force[1]];

@@ -14,7 +14,7 @@
 use rayon::prelude::*;
 
 use super::bodies::rotate;
-use super::{Cycle, CycleParams, corner_forces, strain_increment, velocity_gradient};
+use super::{Cycle, CycleParams, corner_forces, strain_increment, velocity_gradient, with_viscous};
 use crate::model::Model;
 use crate::model::zones::cst_gradients;
 
@@ -25,7 +25,7 @@ impl Cycle {
             nodes, zones, laws, ..
         } = model;
         let (vel, pos, disp) = (&nodes.vel, &nodes.pos, &nodes.disp);
-        let dt = p.dt;
+        let (dt, viscous) = (p.dt, p.viscous_ratio());
         zones
             .stress
             .par_iter_mut()
@@ -47,11 +47,13 @@ impl Cycle {
                 let (g, _) = cst_gradients(mid);
                 let l = velocity_gradient(&g, v);
                 rotate(s, 0.5 * (l[1][0] - l[0][1]) * dt);
+                let turned = *s;
                 let de = strain_increment(&l, dt);
                 laws[mat.0 as usize].update(s, state, plastic, &de);
-                // Forces act on the shape at the end of the step.
+                // Forces act on the shape at the end of the step; the viscous stress is the rate
+                // of the law's stress in the zone's frame (its spin is no strain rate).
                 let (g, area) = cst_gradients(x);
-                corner_forces(s, &g, area, f);
+                corner_forces(&with_viscous(s, &turned, viscous), &g, area, f);
             });
     }
 }

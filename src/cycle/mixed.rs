@@ -33,7 +33,7 @@
 
 use rayon::prelude::*;
 
-use super::{Cycle, CycleParams, corner_forces, strain_increment, velocity_gradient};
+use super::{Cycle, CycleParams, corner_forces, strain_increment, velocity_gradient, with_viscous};
 use crate::law::ZoneLaw;
 use crate::model::{Gather, Model};
 
@@ -66,7 +66,7 @@ impl Cycle {
             ..
         } = model;
         let inv_patch = mixed.as_ref().expect("mixed discretization set up");
-        let (vel, dt) = (&nodes.vel, p.dt);
+        let (vel, dt, viscous) = (&nodes.vel, p.dt, p.viscous_ratio());
         self.zone_strain
             .par_iter_mut()
             .zip(zones.nodes.par_iter())
@@ -89,8 +89,12 @@ impl Cycle {
             .zip(zones.material.par_iter())
             .zip(self.zone_strain.par_iter())
             .zip(self.zone_plastic_mean.par_iter_mut())
+            .zip(self.zone_stress_start.par_iter_mut())
             .with_min_len(1024)
-            .for_each(|((((((s, state), plastic), t), mat), de), dp)| {
+            .for_each(|(((((((s, state), plastic), t), mat), de), dp), start)| {
+                if viscous > 0.0 {
+                    *start = *s;
+                }
                 let law = &laws[mat.0 as usize];
                 let own = de[0] + de[1];
                 let beta = own_share(law.as_ref());
@@ -116,8 +120,9 @@ impl Cycle {
             .zip(zones.area.par_iter())
             .zip(zone_plastic.par_iter())
             .zip(zones.material.par_iter())
+            .zip(self.zone_stress_start.par_iter())
             .with_min_len(1024)
-            .for_each(|((((((s, f), t), g), &area), &dp), mat)| {
+            .for_each(|(((((((s, f), t), g), &area), &dp), mat), start)| {
                 let smoothed = t.iter().map(|&n| node_plastic[n as usize]).sum::<f64>() / 3.0;
                 let shift = (1.0 - own_share(laws[mat.0 as usize].as_ref())) * (smoothed - dp);
                 if shift != 0.0 {
@@ -125,7 +130,11 @@ impl Cycle {
                     s[1] += shift;
                     s[2] += shift;
                 }
-                corner_forces(s, g, area, f);
+                if viscous > 0.0 {
+                    corner_forces(&with_viscous(s, start, viscous), g, area, f);
+                } else {
+                    corner_forces(s, g, area, f);
+                }
             });
     }
 }

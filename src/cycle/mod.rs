@@ -14,7 +14,7 @@ use std::time::Instant;
 use rayon::prelude::*;
 
 use crate::law::StrainIncrement;
-use crate::model::{BODY, FIX_X, FIX_Y, Model};
+use crate::model::{BODY, FIX_X, FIX_Y, Model, Stress};
 
 pub use monitor::Monitor;
 
@@ -27,6 +27,29 @@ pub struct CycleParams {
     pub damping: f64,
     /// Zones on their current shape with their stress turned by their spin (`solve.large_strain`).
     pub large_strain: bool,
+    /// Mass-proportional Rayleigh coefficient α_R, 1/s (0 for none; `scene::Rayleigh`).
+    pub mass_damping: f64,
+    /// Stiffness-proportional Rayleigh coefficient β_R, s (0 for none).
+    pub stiffness_damping: f64,
+}
+
+impl CycleParams {
+    /// β_R / Δt: the share of a stress increment over this step added as viscous stress,
+    /// β_R σ̇ = (β_R / Δt) Δσ (0 without stiffness damping or at a zero step).
+    pub fn viscous_ratio(&self) -> f64 {
+        if self.dt > 0.0 {
+            self.stiffness_damping / self.dt
+        } else {
+            0.0
+        }
+    }
+}
+
+/// The stress that acts on the nodes with stiffness-proportional damping: σ + (β_R / Δt)(σ − σ_old),
+/// the elastic stress plus β_R σ̇ over the step, Pa.
+#[inline]
+pub(crate) fn with_viscous(s: &Stress, old: &Stress, ratio: f64) -> Stress {
+    std::array::from_fn(|k| s[k] + ratio * (s[k] - old[k]))
 }
 
 /// Seconds spent in each stage since the start of the run.
@@ -64,6 +87,12 @@ pub struct Cycle {
     pub zone_strain: Vec<StrainIncrement>,
     pub node_volumetric: Vec<f64>,
     pub zone_plastic_mean: Vec<f64>,
+    /// Mixed discretization scratch: each zone's stress at the start of the step, Pa (written only
+    /// with stiffness-proportional damping, whose viscous stress is the step's change).
+    pub zone_stress_start: Vec<Stress>,
+    /// Viscous stress β_R σ̇ of each body over its last step, Pa (zero for rigid blocks and
+    /// without stiffness-proportional damping).
+    pub body_viscous: Vec<Stress>,
     pub seconds: StageSeconds,
     /// Contact detections so far (the solver re-derives static masses after each).
     pub detections: u64,
@@ -79,6 +108,11 @@ impl Cycle {
             zone_strain: vec![[0.0; 3]; model.mixed.as_ref().map_or(0, |_| model.zones.len())],
             node_volumetric: vec![0.0; model.mixed.as_ref().map_or(0, |_| model.nodes.len())],
             zone_plastic_mean: vec![0.0; model.mixed.as_ref().map_or(0, |_| model.zones.len())],
+            zone_stress_start: vec![
+                [0.0; 4];
+                model.mixed.as_ref().map_or(0, |_| model.zones.len())
+            ],
+            body_viscous: vec![[0.0; 4]; model.bodies.len()],
             ..Default::default()
         }
     }
@@ -141,7 +175,7 @@ impl Cycle {
             nodes, zones, laws, ..
         } = model;
         let vel = &nodes.vel;
-        let dt = p.dt;
+        let (dt, viscous) = (p.dt, p.viscous_ratio());
         zones
             .stress
             .par_iter_mut()
@@ -156,8 +190,9 @@ impl Cycle {
             .for_each(|(((((((s, state), plastic), f), t), g), &area), mat)| {
                 let l = velocity_gradient(g, t.map(|n| vel[n as usize]));
                 let de = strain_increment(&l, dt);
+                let old = *s;
                 laws[mat.0 as usize].update(s, state, plastic, &de);
-                corner_forces(s, g, area, f);
+                corner_forces(&with_viscous(s, &old, viscous), g, area, f);
             });
     }
 
@@ -184,7 +219,8 @@ impl Cycle {
     /// Motion stage: gather forces per node in a fixed order (deterministic on any thread count),
     /// add applied loads, apply local non-viscous damping F_d = F − α|F|sign(v) per component
     /// (Cundall 1987; UDEC's default), then the central-difference update
-    /// v ← v + F_d Δt / m, u ← u + v Δt. A fixed component keeps its velocity (zero unless
+    /// v ← v + F_d Δt / m, u ← u + v Δt; with mass-proportional Rayleigh damping α_R the viscous
+    /// force −α_R m v is taken at the mean of the old and new velocities (`mass_damping_factors`). A fixed component keeps its velocity (zero unless
     /// the scene or a test prescribes one), as FLAC's FIX. Returns the largest node speed, m/s,
     /// and records in `jump` the largest step relative to the node's zone size (an explicit
     /// scheme past its stability limit grows such steps by a large factor every cycle).
@@ -199,6 +235,7 @@ impl Cycle {
         let (zf, cf, sf) = (&self.zone_force, &self.contact_force, &self.support_force);
         let inv_size = &self.inv_size;
         let (alpha, dt) = (p.damping, p.dt);
+        let (keep, gain) = mass_damping_factors(p);
         let (speed2, jump2) = nodes
             .vel
             .par_iter_mut()
@@ -236,7 +273,7 @@ impl Cycle {
                     } else {
                         let fd =
                             f[d] - alpha * f[d].abs() * v[d].signum() * (v[d] != 0.0) as u8 as f64;
-                        v[d] += fd / m * dt;
+                        v[d] = keep * v[d] + gain * fd / m * dt;
                     }
                     u[d] += v[d] * dt;
                 }
@@ -249,6 +286,15 @@ impl Cycle {
         self.jump = jump2.sqrt() * dt;
         speed2.sqrt()
     }
+}
+
+/// (keep, gain) of the velocity update v ← keep·v + gain·F Δt / m with mass-proportional damping
+/// α_R: m (v⁺ − v)/Δt = F − α_R m (v⁺ + v)/2 gives keep = (1 − a)/(1 + a), gain = 1/(1 + a),
+/// a = α_R Δt / 2; stable at any α_R (a mode's amplification only shrinks), (1, 1) without.
+#[inline]
+pub(crate) fn mass_damping_factors(p: &CycleParams) -> (f64, f64) {
+    let a = 0.5 * p.mass_damping * p.dt;
+    ((1.0 - a) / (1.0 + a), 1.0 / (1.0 + a))
 }
 
 /// Velocity gradient of a constant-strain triangle, L[i][j] = ∂v_i/∂x_j (1/s), from its gradients

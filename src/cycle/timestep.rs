@@ -276,6 +276,18 @@ pub fn damped_margin(safety: f64, alpha: f64) -> f64 {
     ((1.0 + alpha) * safety * safety).max(1.0)
 }
 
+/// Factor √(1 + ξ²) − ξ on the critical step with stiffness-proportional damping β_R (s), where
+/// ξ = β_R ω_max / 2 is the damping of the fastest mode, ω_max = 2 / Δt_crit; 1 without.
+///
+/// The viscous stress β_R σ̇ is taken over the step the stress stage has just made, so a mode
+/// steps v ← v − Δt (ω² x + 2ξω v), x ← x + Δt v: the spectral radius of that map stays ≤ 1
+/// exactly while ω Δt ≤ 2 (√(1 + ξ²) − ξ) (the bound of Belytschko, Liu & Moran, *Nonlinear
+/// Finite Elements for Continua and Structures*, ch. 6, for damping lagged by half a step).
+pub fn viscous_margin(beta: f64, dt_critical: f64) -> f64 {
+    let xi = beta / dt_critical;
+    (1.0 + xi * xi).sqrt() - xi
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -602,6 +602,57 @@ pub struct SolveSpec {
     /// slowly applied change takes, which friction and plasticity remember; the solve cannot
     /// converge before the ramp ends.
     pub ramp: u64,
+    /// Rayleigh damping of a dynamic solve (default none); local damping then defaults to 0.
+    pub rayleigh: Option<Rayleigh>,
+}
+
+/// Rayleigh damping (UDEC's `damping rayleigh`): a viscous force −α_R m v at every mass and a
+/// viscous stress β_R σ̇ on top of every zone's, simple block's and loaded contact's elastic one,
+/// so that a mode of angular frequency ω is damped at the fraction of critical
+/// ξ(ω) = ½ (α_R / ω + β_R ω) (Bathe, *Finite Element Procedures*, §9.3.3).
+#[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Rayleigh {
+    /// Fraction of critical damping ξ at `frequency` (dimensionless), in (0, 1).
+    pub fraction: f64,
+    /// Frequency f at which the damping is `fraction`, Hz.
+    pub frequency: f64,
+    /// Which terms act (default both).
+    #[serde(default)]
+    pub components: RayleighComponents,
+}
+
+/// The terms of Rayleigh damping.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum RayleighComponents {
+    /// α_R = ξ ω₀, β_R = ξ / ω₀: ξ at ω₀ is the minimum over frequencies.
+    #[default]
+    Both,
+    /// β_R = 2ξ / ω₀ alone: rigid-body motion (a sliding block) is not resisted, higher
+    /// frequencies are damped more.
+    Stiffness,
+    /// α_R = 2ξ ω₀ alone: every motion, rigid-body motion too, is resisted.
+    Mass,
+}
+
+impl Rayleigh {
+    /// (α_R, 1/s; β_R, s) giving ξ(ω₀) = `fraction` at ω₀ = 2π `frequency`.
+    pub fn coefficients(&self) -> (f64, f64) {
+        let (xi, w) = (self.fraction, std::f64::consts::TAU * self.frequency);
+        match self.components {
+            RayleighComponents::Both => (xi * w, xi / w),
+            RayleighComponents::Stiffness => (0.0, 2.0 * xi / w),
+            RayleighComponents::Mass => (2.0 * xi * w, 0.0),
+        }
+    }
+
+    /// Fraction of critical damping ξ(ω) = ½ (α_R / ω + β_R ω) of a mode of angular frequency
+    /// `omega`, rad/s.
+    pub fn fraction_at(&self, omega: f64) -> f64 {
+        let (a, b) = self.coefficients();
+        0.5 * (a / omega + b * omega)
+    }
 }
 
 /// Solution mode.
@@ -616,9 +667,15 @@ pub enum SolveMode {
 pub const DEFAULT_DAMPING: f64 = 0.8;
 
 impl SolveSpec {
-    /// The local damping coefficient α of this solve: the scene's, else `DEFAULT_DAMPING`.
+    /// The local damping coefficient α of this solve: the scene's, else 0 with Rayleigh damping
+    /// and `DEFAULT_DAMPING` without.
     pub fn damping_coefficient(&self) -> f64 {
-        self.damping.unwrap_or(DEFAULT_DAMPING)
+        let default = if self.rayleigh.is_some() {
+            0.0
+        } else {
+            DEFAULT_DAMPING
+        };
+        self.damping.unwrap_or(default)
     }
 }
 
@@ -633,6 +690,7 @@ impl Default for SolveSpec {
             monitor_every: 10,
             large_strain: false,
             ramp: 0,
+            rayleigh: None,
         }
     }
 }
@@ -901,6 +959,54 @@ mod tests {
         assert!(
             long.starts_with("solve.ramp: 1000 cycles leave none"),
             "{long}"
+        );
+    }
+
+    /// Rayleigh damping is a dynamic solve's, replaces local damping, and gives ξ at its frequency.
+    #[test]
+    fn rayleigh_damping_is_dynamic_and_alone() {
+        let scene = |solve: &str| {
+            let text = GOOD.replace(
+                "\"edge_far\": 2 }",
+                &format!("\"edge_far\": 2 }}, \"solve\": {solve}"),
+            );
+            Scene::from_json(&text, "r")
+        };
+        let ok =
+            scene(r#"{ "mode": "dynamic", "rayleigh": { "fraction": 0.05, "frequency": 10 } }"#)
+                .unwrap();
+        let r = ok.solve.rayleigh.unwrap();
+        assert_eq!(ok.solve.damping_coefficient(), 0.0);
+        let w = std::f64::consts::TAU * 10.0;
+        assert!((r.fraction_at(w) - 0.05).abs() < 1e-15);
+        assert!(r.fraction_at(2.0 * w) > 0.05 && r.fraction_at(0.5 * w) > 0.05);
+        let stiff = Rayleigh {
+            components: RayleighComponents::Stiffness,
+            ..r
+        };
+        assert!((stiff.fraction_at(w) - 0.05).abs() < 1e-15 && stiff.coefficients().0 == 0.0);
+        let err = |solve: &str| scene(solve).unwrap_err().to_string();
+        let s = err(r#"{ "rayleigh": { "fraction": 0.05, "frequency": 10 } }"#);
+        assert!(
+            s.starts_with("solve.rayleigh: acts in dynamic solves only"),
+            "{s}"
+        );
+        let s = err(
+            r#"{ "mode": "dynamic", "damping": 0.8, "rayleigh": { "fraction": 0.05, "frequency": 10 } }"#,
+        );
+        assert!(
+            s.starts_with("solve.damping: local damping 0.8 and `rayleigh`"),
+            "{s}"
+        );
+        let s = err(r#"{ "mode": "dynamic", "rayleigh": { "fraction": 1.5, "frequency": 10 } }"#);
+        assert!(
+            s.starts_with("solve.rayleigh.fraction: must be in (0, 1)"),
+            "{s}"
+        );
+        let s = err(r#"{ "mode": "dynamic", "rayleigh": { "fraction": 0.1, "frequency": 0 } }"#);
+        assert!(
+            s.starts_with("solve.rayleigh.frequency: must be positive"),
+            "{s}"
         );
     }
 

@@ -3,8 +3,8 @@
 use thiserror::Error;
 
 use super::{
-    BoundaryCondition, JointLawKind, JointMaterial, Material, Scene, SolveMode, SolveSpec,
-    ZoneLawKind,
+    BoundaryCondition, JointLawKind, JointMaterial, Material, Rayleigh, Scene, SolveMode,
+    SolveSpec, ZoneLawKind,
 };
 
 /// Why a scene cannot be used.
@@ -218,6 +218,9 @@ fn validate_solve(p: &str, v: &SolveSpec) -> Result<(), SceneError> {
             "only a static solve ramps its out-of-balance forces (a dynamic run follows real time)",
         ));
     }
+    if let Some(r) = &v.rayleigh {
+        validate_rayleigh(p, v, r)?;
+    }
     if v.ramp >= v.max_cycles {
         return Err(invalid(
             format!("{p}.ramp"),
@@ -228,6 +231,38 @@ fn validate_solve(p: &str, v: &SolveSpec) -> Result<(), SceneError> {
         ));
     }
     Ok(())
+}
+
+/// Rayleigh damping at `p`.rayleigh: a dynamic solve's, in place of local damping.
+fn validate_rayleigh(p: &str, v: &SolveSpec, r: &Rayleigh) -> Result<(), SceneError> {
+    let q = format!("{p}.rayleigh");
+    if v.mode != SolveMode::Dynamic {
+        return Err(invalid(
+            q,
+            "acts in dynamic solves only (`mode`: \"dynamic\"); a static solve relaxes with local damping (`damping`)",
+        ));
+    }
+    if let Some(d) = v.damping
+        && d > 0.0
+    {
+        return Err(invalid(
+            format!("{p}.damping"),
+            format!(
+                "local damping {} and `rayleigh` are alternatives: give one (local damping defaults to 0 with `rayleigh`)",
+                Num(d)
+            ),
+        ));
+    }
+    if !(r.fraction > 0.0 && r.fraction < 1.0) {
+        return Err(invalid(
+            format!("{q}.fraction"),
+            format!(
+                "must be in (0, 1) (a fraction of critical damping), got {}",
+                Num(r.fraction)
+            ),
+        ));
+    }
+    positive(&format!("{q}.frequency"), r.frequency)
 }
 
 /// A selection of blocks: exactly one of a polygon (at least 3 finite vertices) and a point.

@@ -63,6 +63,13 @@ impl SlidingBlock {
     /// coefficient `mu` (all contacts slipping), for the block's first `dofs` generalized degrees of
     /// freedom (3: rigid, 6: simple); 0 when steady sliding is stable.
     pub fn growth_rate(&self, mu: f64, dofs: usize) -> f64 {
+        self.damped_growth_rate(mu, dofs, 0.0)
+    }
+
+    /// The same with stiffness-proportional Rayleigh damping β_R (s): the engine's viscous
+    /// stresses are β_R times the rate of the zones' and contacts' stresses, friction included,
+    /// so the damping matrix is C = β_R K.
+    pub fn damped_growth_rate(&self, mu: f64, dofs: usize, beta: f64) -> f64 {
         let (w, h) = (self.width, self.height);
         let moments = Moments {
             area: w * h,
@@ -103,7 +110,7 @@ impl SlidingBlock {
             }
         }
         let d = dofs.min(DOFS);
-        growth_rate(&k.view((0, 0), (d, d)).into_owned(), &mass[..d])
+        growth_rate(&k.view((0, 0), (d, d)).into_owned(), &mass[..d], beta)
     }
 }
 
@@ -111,8 +118,8 @@ impl SlidingBlock {
 /// mesh: block `block` of `model` (its zones' plane-strain CST stiffness, its real lumped masses)
 /// on a rigid base through point contacts at its lowest nodes, each of the node's tributary length
 /// along the base, slipping along +x with friction coefficient `mu` on a joint of normal
-/// stiffness `kn`, Pa/m.
-pub fn deformable_growth_rate(model: &Model, block: usize, mu: f64, kn: f64) -> f64 {
+/// stiffness `kn`, Pa/m, with stiffness-proportional damping `beta`, s (C = β_R K).
+pub fn deformable_growth_rate(model: &Model, block: usize, mu: f64, kn: f64, beta: f64) -> f64 {
     let start = model.blocks.node_start[block] as usize;
     let end = model.blocks.node_start[block + 1] as usize;
     let n = end - start;
@@ -167,18 +174,19 @@ pub fn deformable_growth_rate(model: &Model, block: usize, mu: f64, kn: f64) -> 
     }
     let masses = lumped_masses(model);
     let mass: Vec<f64> = (0..2 * n).map(|i| masses[start + i / 2]).collect();
-    growth_rate(&k, &mass)
+    growth_rate(&k, &mass, beta)
 }
 
-/// Largest real part, 1/s, of the eigenvalues of ẋ = [0 I; −M⁻¹K 0] x for a diagonal mass M
-/// (0 when none is positive).
-fn growth_rate(k: &DMatrix<f64>, mass: &[f64]) -> f64 {
+/// Largest real part, 1/s, of the eigenvalues of ẋ = [0 I; −M⁻¹K −β M⁻¹K] x for a diagonal
+/// mass M and damping C = β K (0 when none is positive).
+fn growth_rate(k: &DMatrix<f64>, mass: &[f64], beta: f64) -> f64 {
     let d = mass.len();
     let mut system = DMatrix::<f64>::zeros(2 * d, 2 * d);
     for i in 0..d {
         system[(i, d + i)] = 1.0;
         for j in 0..d {
             system[(d + i, j)] = -k[(i, j)] / mass[i];
+            system[(d + i, d + j)] = -beta * k[(i, j)] / mass[i];
         }
     }
     system

@@ -21,6 +21,7 @@ pub mod patch;
 pub mod plot;
 pub mod pullout;
 pub mod random_scenes;
+pub mod rayleigh;
 pub mod readme;
 pub mod realizations;
 pub mod render;
