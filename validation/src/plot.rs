@@ -159,3 +159,40 @@ pub fn curves(
     root.present()?;
     Ok(())
 }
+
+/// A histogram of `values` in `bins` equal bins over their range (PNG).
+pub fn histogram(
+    path: &Path,
+    title: &str,
+    xlabel: &str,
+    values: &[f64],
+    bins: usize,
+) -> anyhow::Result<()> {
+    let lo = values.iter().copied().fold(f64::INFINITY, f64::min);
+    let hi = values.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    let width = ((hi - lo) / bins as f64).max(1e-12 * hi.abs().max(1.0));
+    let mut counts = vec![0u32; bins];
+    for &v in values {
+        counts[(((v - lo) / width) as usize).min(bins - 1)] += 1;
+    }
+    let top = counts.iter().copied().max().unwrap_or(1);
+    let root = BitMapBackend::new(path, (640, 420)).into_drawing_area();
+    root.fill(&WHITE)?;
+    let mut chart = ChartBuilder::on(&root)
+        .caption(title, ("sans-serif", 18))
+        .margin(12)
+        .x_label_area_size(40)
+        .y_label_area_size(50)
+        .build_cartesian_2d(lo..(lo + width * bins as f64), 0u32..(top + 1))?;
+    chart
+        .configure_mesh()
+        .x_desc(xlabel)
+        .y_desc("realizations")
+        .draw()?;
+    chart.draw_series(counts.iter().enumerate().map(|(i, &c)| {
+        let x0 = lo + i as f64 * width;
+        Rectangle::new([(x0, 0), (x0 + width, c)], RGBColor(31, 119, 180).filled())
+    }))?;
+    root.present()?;
+    Ok(())
+}

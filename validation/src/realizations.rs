@@ -4,8 +4,12 @@
 //! (issue 14: 17 of 30 such realizations stopped in `adit check` with "block boundary crosses
 //! itself").
 
+use std::path::Path;
+use std::time::Instant;
+
 use adit::Scene;
 use adit::scene::Scatter;
+use adit_meshing::triangulate::smallest_angle;
 
 /// The scatter of the study: ±2 m, ±10°, ±30 % of spacing and trace.
 pub const STUDY: Scatter = Scatter {
@@ -37,6 +41,111 @@ pub fn failures(count: u64, first: u64) -> anyhow::Result<Vec<String>> {
                 .map(|e| format!("realization {n}: {e}"))
         })
         .collect())
+}
+
+/// One realization of the study: how its build went.
+#[derive(Debug, Clone)]
+pub struct Built {
+    /// Realization number N.
+    pub n: u64,
+    /// Wall seconds of the build (cutting, meshing, blocks, contacts), s.
+    pub seconds: f64,
+    /// The build's error, if it failed.
+    pub error: Option<String>,
+    pub zones: usize,
+    pub blocks: usize,
+    /// Smallest interior angle over the zones, degrees.
+    pub min_angle: f64,
+}
+
+/// One realization run through its stages: the tunnel's closure at the end, m (inward positive).
+#[derive(Debug, Clone)]
+pub struct Ran {
+    pub n: u64,
+    pub closure: Result<f64, String>,
+    pub cycles: u64,
+    pub seconds: f64,
+}
+
+/// Build realizations 1..=`count` of the tunnel model, timing each.
+pub fn build_all(count: u64) -> anyhow::Result<Vec<Built>> {
+    let base = Scene::load(&crate::repository_root().join("models/tunnel.json"))?;
+    Ok((1..=count)
+        .map(|n| {
+            let start = Instant::now();
+            let built = adit::build::build(&realization(&base, n));
+            let seconds = start.elapsed().as_secs_f64();
+            match built {
+                Ok(b) => {
+                    let m = &b.model;
+                    let min_angle = m
+                        .zones
+                        .nodes
+                        .iter()
+                        .map(|t| smallest_angle(t.map(|k| m.nodes.pos[k as usize])))
+                        .fold(180.0, f64::min);
+                    Built {
+                        n,
+                        seconds,
+                        error: None,
+                        zones: m.zones.len(),
+                        blocks: m.blocks.len(),
+                        min_angle,
+                    }
+                }
+                Err(e) => Built {
+                    n,
+                    seconds,
+                    error: Some(format!("{e:#}")),
+                    zones: 0,
+                    blocks: 0,
+                    min_angle: f64::NAN,
+                },
+            }
+        })
+        .collect())
+}
+
+/// Run realizations 1..=`count` of the tunnel model through its stages (output in `out`, each
+/// replacing the last), recording the final closure of the tunnel.
+pub fn run_all(count: u64, out: &Path) -> anyhow::Result<Vec<Ran>> {
+    let base = Scene::load(&crate::repository_root().join("models/tunnel.json"))?;
+    Ok((1..=count)
+        .map(|n| {
+            let start = Instant::now();
+            let result = adit::run_scene(&realization(&base, n), out, &mut adit::solve::Quiet);
+            let seconds = start.elapsed().as_secs_f64();
+            match result {
+                Ok(r) => Ran {
+                    n,
+                    closure: r
+                        .summary
+                        .stages
+                        .last()
+                        .and_then(|s| s.closure.values().next().copied())
+                        .ok_or_else(|| "no closure in the summary".to_string()),
+                    cycles: r.summary.cycles,
+                    seconds,
+                },
+                Err(e) => Ran {
+                    n,
+                    closure: Err(format!("{e:#}")),
+                    cycles: 0,
+                    seconds,
+                },
+            }
+        })
+        .collect())
+}
+
+/// The `q`-quantile (0 to 1) of `values` (sorted by the caller or not), nearest rank.
+pub fn quantile(values: &[f64], q: f64) -> f64 {
+    let mut v: Vec<f64> = values.iter().copied().filter(|x| !x.is_nan()).collect();
+    if v.is_empty() {
+        return f64::NAN;
+    }
+    v.sort_by(f64::total_cmp);
+    v[((q * (v.len() - 1) as f64).round() as usize).min(v.len() - 1)]
 }
 
 #[cfg(test)]
