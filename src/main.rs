@@ -108,10 +108,11 @@ fn run(scene_path: &Path, out: Option<PathBuf>, quiet: bool) -> anyhow::Result<E
         }
     )?;
     say!(
-        "{} after {} cycles, ratio {:.2e}, {:.2} s wall, {:.3e} zone-cycles/s, {:.3e} block-cycles/s",
+        "{} after {} cycles, ratio {}, {:.2} s wall, {:.3e} zone-cycles/s, {:.3e} block-cycles/s",
         s.status,
         s.cycles,
-        s.final_ratio,
+        s.final_ratio
+            .map_or("not measured".to_string(), |r| format!("{r:.2e}")),
         s.wall_seconds,
         s.zone_cycles_per_second,
         s.block_cycles_per_second

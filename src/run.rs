@@ -7,7 +7,7 @@ use crate::build::{Built, build};
 use crate::cycle::Cycle;
 use crate::model::Model;
 use crate::model::bodies::BodyMode;
-use crate::output::{OutputWriter, StageSummary, Summary};
+use crate::output::{OutputWriter, StageSummary, Summary, measured};
 use crate::scene::{Scene, Stage};
 use crate::solve::{HistoryRow, Observer, Solution, Solver, Status};
 use crate::stage::Staging;
@@ -142,7 +142,7 @@ fn build_solve_write(
             name: stage.name.clone(),
             cycles: solution.cycles,
             status: solution.status.label().to_string(),
-            final_ratio: solution.final_ratio,
+            final_ratio: measured(solution.final_ratio),
             support_fraction: staging.support_fraction(),
             closure: staging.closures(scene, &built),
         });
@@ -205,7 +205,7 @@ fn build_solve_write(
         stage_seconds: seconds,
         zone_cycles_per_second: per_second(zones),
         block_cycles_per_second: per_second(built.model.blocks.len()),
-        final_ratio: solution.final_ratio,
+        final_ratio: measured(solution.final_ratio),
         status: solution.status.label().to_string(),
         reason: match &solution.status {
             Status::Failed(r) => Some(r.clone()),

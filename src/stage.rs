@@ -173,7 +173,11 @@ impl Staging {
                     count += 1;
                 }
             }
-            out.insert(scene.excavations[j].name.clone(), sum / count.max(1) as f64);
+            let closure = sum / count.max(1) as f64;
+            // A failed run's state may not be finite: its closure is left out, not written null.
+            if closure.is_finite() {
+                out.insert(scene.excavations[j].name.clone(), closure);
+            }
         }
         out
     }

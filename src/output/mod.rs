@@ -193,6 +193,13 @@ impl OutputWriter {
     }
 }
 
+/// A figure for `summary.json`: `Some` when finite. A run that stops before measuring something
+/// (its ratio is still ∞) or whose state is no longer finite leaves the field out instead of
+/// writing `null` (JSON has no ∞ or NaN) where a reader expects a number.
+pub fn measured(x: f64) -> Option<f64> {
+    x.is_finite().then_some(x)
+}
+
 /// One stage in `summary.json`.
 #[derive(Debug, Clone, Serialize)]
 pub struct StageSummary {
@@ -200,7 +207,10 @@ pub struct StageSummary {
     pub cycles: u64,
     /// `converged`, `cycle_limit` or `failed`.
     pub status: String,
-    pub final_ratio: f64,
+    /// The last unbalanced-force ratio measured (`measured`); absent when the stage stopped before
+    /// its first monitor step.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub final_ratio: Option<f64>,
     /// Support fraction on the walls of the excavations made so far.
     pub support_fraction: f64,
     /// Mean wall closure of each excavation made so far at the end of the stage, m (inward
@@ -226,7 +236,10 @@ pub struct Summary {
     pub zone_cycles_per_second: f64,
     /// Blocks × cycles per second of cycling, the figure of merit of rigid and simple blocks.
     pub block_cycles_per_second: f64,
-    pub final_ratio: f64,
+    /// The last unbalanced-force ratio measured; absent when the run stopped before its first
+    /// monitor step (a failure or interruption at once): no field holds `null`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub final_ratio: Option<f64>,
     /// `converged`, `cycle_limit` or `failed`.
     pub status: String,
     /// Why the run failed (only with status `failed`).
@@ -295,6 +308,27 @@ fn csv_field(text: &str) -> std::borrow::Cow<'_, str> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A stage that failed before its first monitor step (ratio still ∞) with a state gone NaN
+    /// writes no `null`: the unmeasured ratio is left out.
+    #[test]
+    fn an_unmeasured_figure_is_left_out_not_null() {
+        let stage = StageSummary {
+            name: "excavate".into(),
+            cycles: 3,
+            status: "failed".into(),
+            final_ratio: measured(f64::INFINITY),
+            support_fraction: 0.0,
+            closure: Default::default(),
+        };
+        let json = serde_json::to_string(&stage).unwrap();
+        assert!(
+            !json.contains("null") && !json.contains("final_ratio"),
+            "{json}"
+        );
+        assert_eq!(measured(f64::NAN), None);
+        assert_eq!(measured(2e-6), Some(2e-6));
+    }
 
     #[test]
     fn a_run_clears_only_its_own_earlier_outputs() {
