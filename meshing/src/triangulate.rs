@@ -322,9 +322,56 @@ fn kinds_near(block: &Block, pa: Point, pb: Point) -> Vec<EdgeKind> {
     kinds
 }
 
+/// One triangulation of `constrained_mesh` (`triangulate_once`), with spade's own panics (its
+/// point location can fail on inputs it considers degenerate: "Failed to locate position") turned
+/// into `MeshError::Triangulation`: the engine reports the block, never aborts.
+fn constrained_mesh_with(
+    block: &Block,
+    vertices: Vec<Point2<f64>>,
+    edges: Vec<[usize; 2]>,
+    params: RefinementParameters<f64>,
+    budget: Option<usize>,
+    by_centroid: bool,
+) -> Result<TriMesh, MeshError> {
+    guarded(|| triangulate_once(block, vertices, edges, params, budget, by_centroid))
+}
+
+/// `f`'s result, or a `MeshError::Triangulation` carrying its panic message if it panicked.
+/// Panics raised inside spade are kept off stderr (`quiet_spade_panics`); any other panic is
+/// reported by the hook as before.
+pub(crate) fn guarded<T>(f: impl FnOnce() -> Result<T, MeshError>) -> Result<T, MeshError> {
+    quiet_spade_panics();
+    std::panic::catch_unwind(std::panic::AssertUnwindSafe(f)).unwrap_or_else(|payload| {
+        let message = payload
+            .downcast_ref::<&str>()
+            .map(|s| s.to_string())
+            .or_else(|| payload.downcast_ref::<String>().cloned())
+            .unwrap_or_else(|| "unknown failure".into());
+        Err(MeshError::Triangulation(format!(
+            "the triangulator failed on this block ({message}); joints too close to each other \
+             or to a wall are the usual cause"
+        )))
+    })
+}
+
+/// Install, once, a panic hook that stays silent for panics raised in spade's source (they are
+/// caught by `guarded` and become errors) and passes every other panic to the previous hook.
+fn quiet_spade_panics() {
+    static ONCE: std::sync::Once = std::sync::Once::new();
+    ONCE.call_once(|| {
+        let previous = std::panic::take_hook();
+        std::panic::set_hook(Box::new(move |info| {
+            let in_spade = info.location().is_some_and(|l| l.file().contains("spade"));
+            if !in_spade {
+                previous(info);
+            }
+        }));
+    });
+}
+
 /// One triangulation of `constrained_mesh`: faces excluded by spade, or (`by_centroid`) faces whose
 /// centroid is outside the block's outer ring or inside one of its holes.
-fn constrained_mesh_with(
+fn triangulate_once(
     block: &Block,
     vertices: Vec<Point2<f64>>,
     edges: Vec<[usize; 2]>,
@@ -667,6 +714,15 @@ mod tests {
             min_angle_deg: 28.0,
             max_zones: 1_000_000,
         }
+    }
+
+    #[test]
+    fn a_panic_in_the_triangulator_is_an_error() {
+        let r: Result<(), MeshError> =
+            guarded(|| panic!("Failed to locate position. This is a bug in spade."));
+        let e = r.unwrap_err().to_string();
+        assert!(e.contains("Failed to locate position"), "{e}");
+        assert_eq!(guarded(|| Ok(3)).unwrap(), 3);
     }
 
     #[test]

@@ -48,8 +48,10 @@ pub fn voronoi_segments(
             seeds.push(Point2::new(x, y));
         }
     }
-    let dt = DelaunayTriangulation::<Point2<f64>>::bulk_load_stable(seeds)
-        .map_err(|e| MeshError::Triangulation(format!("voronoi seeds: {e:?}")))?;
+    let dt = crate::triangulate::guarded(|| {
+        DelaunayTriangulation::<Point2<f64>>::bulk_load_stable(seeds)
+            .map_err(|e| MeshError::Triangulation(format!("voronoi seeds: {e:?}")))
+    })?;
     let inside = |p: Point2<f64>| {
         p.x >= lo[0] - margin
             && p.x <= hi[0] + margin
