@@ -176,14 +176,37 @@ fn check_refuses_what_run_refuses() {
     assert!(err.contains("leaves the rock"), "{err}");
 }
 
-/// A mesh with a zone sharper than `zoning.accept_angle` is refused naming the field, the block and
-/// where (the tunnel's joints make a 7.2° zone); accepted at the default 1°.
+/// A zone sharper than `zoning.accept_angle` that no joint makes (a region with a 2.9° corner) is
+/// refused naming the field and where; one a joint makes is repaired instead: the tunnel's joints
+/// make a 7.15° zone, and asked for 10° the piece of joint beside it is dropped with a warning
+/// naming its set. An accept angle at or above `min_angle` is refused.
 #[test]
-fn sharp_zones_are_refused_unless_accepted() {
+fn sharp_zones_are_refused_unless_a_joint_piece_makes_them() {
+    let wedge = json!({
+        "name": "wedge",
+        "materials": { "rock": { "density": 2500, "young": 1e10, "poisson": 0.25 } },
+        "region": { "polygon": [[0, 0], [10, 0], [10, 0.5]], "material": "rock" },
+        "zoning": { "edge_at_excavation": 0.25, "edge_far": 0.25, "accept_angle": 5 }
+    });
+    let err = refused(&wedge, "zoning.accept_angle");
+    assert!(err.contains("near ("), "{err}");
     let mut s = model("tunnel");
     s["zoning"]["accept_angle"] = json!(10);
-    let err = refused(&s, "zoning.accept_angle");
-    assert!(err.contains("near (") && err.contains("7.15°"), "{err}");
+    let scene = adit::Scene::from_json(&s.to_string(), "tunnel").unwrap();
+    let built = adit::build::build(&scene).unwrap();
+    assert!(
+        built
+            .warnings
+            .iter()
+            .any(|w| w.starts_with("joint_sets[") && w.contains("dropped the piece")),
+        "{:?}",
+        built.warnings
+    );
+    assert!(
+        built.mesh.min_angle_deg >= 10.0,
+        "{}",
+        built.mesh.min_angle_deg
+    );
     s["zoning"]["accept_angle"] = json!(40);
     refused(&s, "zoning.accept_angle");
 }

@@ -52,6 +52,39 @@ fn a_joint_crossing_a_wall_near_a_corner_merges_onto_the_wall() {
     adit::build::build(&sc).unwrap();
 }
 
+/// Two sets 0.1° apart around a horseshoe (a drawn scene that stopped with "zoning.accept_angle:
+/// a zone of block 16 … has an angle of 0.42°"): the pieces of joint that made the needles are
+/// dropped, each named in a warning, and every zone keeps at least the accepted angle; with
+/// `accept_angle` 0 nothing is dropped.
+#[test]
+fn joints_meeting_at_a_tiny_angle_lose_the_piece_that_makes_a_needle() {
+    let text = r#"{ "name": "f", "materials": { "rock": { "density": 2500, "young": 1e10, "poisson": 0.25 } },
+      "joint_materials": { "j": { "normal_stiffness": 1e10, "shear_stiffness": 1e9, "friction": 30 } },
+      "region": { "polygon": [[-13.6124, -8.0277], [13.6124, -8.0277], [13.6124, 8.0277], [-13.6124, 8.0277]], "material": "rock" },
+      "excavations": [{ "name": "t", "horseshoe": { "center": [0, 0], "radius": 2.38866, "wall_height": 0.91331 } }],
+      "joint_sets": [
+        { "dip": 96.2777, "spacing": 0.385145, "origin": [0.405480, -1.118548], "trace": 10.93947, "gap": 1.93969, "material": "j" },
+        { "dip": 96.1720, "spacing": 1.566017, "origin": [2.328915, -1.223305], "trace": 8.01597, "gap": 1.58997, "material": "j" }],
+      "zoning": { "edge_at_excavation": 0.10710, "edge_far": 0.85677 ACCEPT } }"#;
+    let repaired = Scene::from_json(&text.replace(" ACCEPT", ""), "f").unwrap();
+    let built = adit::build::build(&repaired).unwrap();
+    let drops: Vec<&String> = built
+        .warnings
+        .iter()
+        .filter(|w| w.starts_with("joint_sets[") && w.contains("dropped the piece"))
+        .collect();
+    assert!(!drops.is_empty(), "{:?}", built.warnings);
+    assert!(
+        built.mesh.min_angle_deg >= repaired.zoning.accept_angle,
+        "{}",
+        built.mesh.min_angle_deg
+    );
+    let any = Scene::from_json(&text.replace(" ACCEPT", ", \"accept_angle\": 0"), "f").unwrap();
+    let built = adit::build::build(&any).unwrap();
+    assert!(built.warnings.iter().all(|w| !w.contains("dropped")));
+    assert!(built.mesh.min_angle_deg < repaired.zoning.accept_angle);
+}
+
 mod drawn {
     use adit::Scene;
     use adit::build::mesh;

@@ -8,6 +8,7 @@ use adit_meshing::{
 };
 use rayon::prelude::*;
 
+use super::repair::{MAX_REPAIRS, drop_piece, joint_beside};
 use crate::scene::{BlockMode, Scene};
 
 /// The domain a scene describes: the region with its excavations, then its inclusions, as holes
@@ -104,6 +105,21 @@ pub struct Meshed {
     pub fill: Vec<u32>,
     /// For each block, the inclusion it lies in (index into the inclusions), or `NOT_FILL`.
     pub inclusion: Vec<u32>,
+    /// The joint pieces dropped to keep zones above `zoning.accept_angle`, in words (warnings).
+    pub repairs: Vec<String>,
+}
+
+impl Meshed {
+    /// The sharpest zone of the deformable blocks: its smallest angle (degrees), where (m), and its
+    /// block.
+    pub fn sharpest_zone(&self) -> Option<(f64, [f64; 2], usize)> {
+        self.meshes
+            .iter()
+            .enumerate()
+            .filter(|(b, _)| self.modes[*b] == BlockMode::Deformable)
+            .filter_map(|(b, m)| m.sharpest_zone().map(|(angle, at)| (angle, at, b)))
+            .min_by(|x, y| x.0.total_cmp(&y.0))
+    }
 }
 
 /// Marks a block that is no excavation's fill.
@@ -197,10 +213,47 @@ pub fn mesh(scene: &Scene) -> anyhow::Result<Meshed> {
     })
 }
 
+/// Cut and zone, dropping the piece of a joint that leaves a zone under `zoning.accept_angle`
+/// (`repair`) and cutting again, at most `MAX_REPAIRS` times; each repair is in `Meshed::repairs`.
 fn mesh_blocks(scene: &Scene) -> Result<Meshed, MeshError> {
     let domain = domain(scene)?;
+    let mut joints = joint_segments(scene, &domain)?;
+    let mut repairs = Vec::new();
+    loop {
+        let mut meshed = cut_and_zone(scene, domain.clone(), &joints)?;
+        let accept = scene.zoning.accept_angle;
+        let needle = meshed
+            .sharpest_zone()
+            .filter(|&(angle, _, _)| angle < accept);
+        let repairable = needle.and_then(|(angle, at, b)| {
+            (repairs.len() < MAX_REPAIRS)
+                .then(|| joint_beside(&meshed.blocking.blocks[b], &joints, at))
+                .flatten()
+                .map(|i| (i, angle, at))
+        });
+        let Some((i, angle, at)) = repairable else {
+            meshed.repairs = repairs;
+            return Ok(meshed);
+        };
+        let field = edge_source(scene, joints[i].kind);
+        let [a, b] = drop_piece(&mut joints, i, at, &domain);
+        repairs.push(format!(
+            "{field}: dropped the piece from ({:.3}, {:.3}) to ({:.3}, {:.3}) m ({:.3} m), which \
+             left a zone of {angle:.2}° near ({:.3}, {:.3}) m, below zoning.accept_angle = {accept}°",
+            a[0],
+            a[1],
+            b[0],
+            b[1],
+            distance(a, b),
+            at[0],
+            at[1]
+        ));
+    }
+}
+
+/// Cut `domain` by `joints` into blocks and zone each.
+fn cut_and_zone(scene: &Scene, domain: Domain, joints: &[Segment]) -> Result<Meshed, MeshError> {
     let zoning = zoning(scene);
-    let joints = joint_segments(scene, &domain)?;
     let filled: Vec<bool> = scene
         .excavations
         .iter()
@@ -229,7 +282,7 @@ fn mesh_blocks(scene: &Scene) -> Result<Meshed, MeshError> {
             slivers: vec![],
         }
     } else {
-        cut_blocks_filled(&domain, &filled, &joints, tol)?
+        cut_blocks_filled(&domain, &filled, joints, tol)?
     };
     // The hole each block fills: a staged excavation's rock, or an inclusion.
     let hole: Vec<u32> = blocking
@@ -278,6 +331,7 @@ fn mesh_blocks(scene: &Scene) -> Result<Meshed, MeshError> {
         modes,
         fill,
         inclusion,
+        repairs: vec![],
     })
 }
 

@@ -6,6 +6,7 @@ mod bodies;
 pub use bodies::add_body_weight;
 mod boundary;
 mod geometry;
+mod repair;
 mod stage_regions;
 mod supports;
 #[cfg(test)]
@@ -206,13 +207,7 @@ pub fn build(scene: &Scene) -> anyhow::Result<Built> {
 
 /// The mesh's sharpest zone against `zoning.accept_angle`: an error naming the block and where.
 fn refuse_sharp_zones(scene: &Scene, meshed: &Meshed) -> anyhow::Result<()> {
-    let sharpest = meshed
-        .meshes
-        .iter()
-        .enumerate()
-        .filter(|(b, _)| meshed.modes[*b] == BlockMode::Deformable)
-        .filter_map(|(b, m)| m.sharpest_zone().map(|(angle, at)| (angle, at, b)))
-        .min_by(|x, y| x.0.total_cmp(&y.0));
+    let sharpest = meshed.sharpest_zone();
     let accept = scene.zoning.accept_angle;
     match sharpest {
         Some((angle, at, b)) if angle < accept => anyhow::bail!(
@@ -480,6 +475,7 @@ pub fn build_meshed(scene: &Scene, meshed: Meshed) -> anyhow::Result<Built> {
         ));
     }
     refuse_sharp_zones(scene, &meshed)?;
+    warnings.extend(meshed.repairs.iter().cloned());
     for (b, mesh) in meshed.meshes.iter().enumerate() {
         if meshed.modes[b] == BlockMode::Deformable && mesh.angle_limit_deg < scene.zoning.min_angle
         {
