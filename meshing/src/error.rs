@@ -27,6 +27,17 @@ pub enum MeshError {
         "{zones} zones exceed the limit of {limit}: coarsen the zoning or raise `zoning.max_zones`"
     )]
     TooManyZones { zones: usize, limit: usize },
+    /// Joint set `set`'s joints lie closer together than the cutter can tell apart.
+    #[error(
+        "{spacing} m is below the {tolerance:.4} m within which the cutter merges vertices (0.3 × \
+         zoning.edge_at_excavation, or less near short wall edges): joints this close cannot be told \
+         apart; space them wider or zone finer"
+    )]
+    JointsTooClose {
+        set: usize,
+        spacing: f64,
+        tolerance: f64,
+    },
     /// The triangulator failed or could not reach the requested quality.
     #[error("triangulation failed: {0}")]
     Triangulation(String),

@@ -166,6 +166,7 @@ fn field_of(scene: &Scene, err: &MeshError) -> String {
             return "zoning".into();
         }
         MeshError::TooManyZones { .. } => return "zoning.max_zones".into(),
+        MeshError::JointsTooClose { set, .. } => return format!("joint_sets[{set}].spacing"),
         // Under the first joint that made the crossing, else the zoning.
         MeshError::Crossing { kinds, .. } => {
             return kinds
@@ -217,6 +218,17 @@ pub fn mesh(scene: &Scene) -> anyhow::Result<Meshed> {
 /// (`repair`) and cutting again, at most `MAX_REPAIRS` times; each repair is in `Meshed::repairs`.
 fn mesh_blocks(scene: &Scene) -> Result<Meshed, MeshError> {
     let domain = domain(scene)?;
+    let tolerance = merge_tolerance(scene, &domain);
+    for set in 0..scene.joint_sets.len() {
+        let spacing = scene.realized_set(set).spacing;
+        if spacing < tolerance {
+            return Err(MeshError::JointsTooClose {
+                set,
+                spacing,
+                tolerance,
+            });
+        }
+    }
     let mut joints = joint_segments(scene, &domain)?;
     let mut repairs = Vec::new();
     loop {
@@ -251,6 +263,25 @@ fn mesh_blocks(scene: &Scene) -> Result<Meshed, MeshError> {
     }
 }
 
+/// The distance, m, within which the cutter merges vertices. Vertices closer than 0.3 of the
+/// finest zone merge, so joints cut no sliver edges; with
+/// Voronoi grains, never more than 2 % of the grain size, whose many short edges would
+/// otherwise collapse; and below the shortest edge of the region and the walls, whose
+/// vertices never move (`cut_blocks_filled`) and so must not merge into each other: a hole of
+/// 47 segments of 0.067 m (below 0.075 m) cut by a joint through a vertex lost a sliver of
+/// 0.0034 m² to each block beside it.
+fn merge_tolerance(scene: &Scene, domain: &Domain) -> f64 {
+    let grain = scene.voronoi.as_ref().map_or(f64::INFINITY, |v| v.size);
+    let fixed_edge = std::iter::once(&domain.outer)
+        .chain(domain.holes.iter().map(|h| &h.polygon))
+        .flat_map(|p| (0..p.len()).map(|i| p.edge(i)))
+        .map(|(a, b)| distance(a, b))
+        .fold(f64::INFINITY, f64::min);
+    (0.3 * zoning(scene).h_excavation)
+        .min(0.02 * grain)
+        .min(0.9 * fixed_edge)
+}
+
 /// Cut `domain` by `joints` into blocks and zone each.
 fn cut_and_zone(scene: &Scene, domain: Domain, joints: &[Segment]) -> Result<Meshed, MeshError> {
     let zoning = zoning(scene);
@@ -260,21 +291,7 @@ fn cut_and_zone(scene: &Scene, domain: Domain, joints: &[Segment]) -> Result<Mes
         .map(|e| scene.is_staged(&e.name))
         .chain(scene.inclusions.iter().map(|_| true))
         .collect();
-    // Vertices closer than 0.3 of the finest zone merge, so joints cut no sliver edges; with
-    // Voronoi grains, never more than 2 % of the grain size, whose many short edges would
-    // otherwise collapse; and below the shortest edge of the region and the walls, whose
-    // vertices never move (`cut_blocks_filled`) and so must not merge into each other: a hole of
-    // 47 segments of 0.067 m (below 0.075 m) cut by a joint through a vertex lost a sliver of
-    // 0.0034 m² to each block beside it.
-    let grain = scene.voronoi.as_ref().map_or(f64::INFINITY, |v| v.size);
-    let fixed_edge = std::iter::once(&domain.outer)
-        .chain(domain.holes.iter().map(|h| &h.polygon))
-        .flat_map(|p| (0..p.len()).map(|i| p.edge(i)))
-        .map(|(a, b)| distance(a, b))
-        .fold(f64::INFINITY, f64::min);
-    let tol = (0.3 * zoning.h_excavation)
-        .min(0.02 * grain)
-        .min(0.9 * fixed_edge);
+    let tol = merge_tolerance(scene, &domain);
     let blocking = if joints.is_empty() && !filled.contains(&true) {
         Blocking {
             blocks: vec![Block::from_domain(&domain)],
