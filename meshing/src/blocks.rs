@@ -11,6 +11,7 @@ use crate::domain::Domain;
 use crate::error::MeshError;
 use crate::geometry::{Point, Polygon, distance, segment_distance};
 use crate::joints::{EdgeKind, Segment};
+use crate::segment_grid::SegmentGrid;
 
 /// One block: an outer ring (counter-clockwise) and holes (clockwise), each edge with its kind.
 #[derive(Debug, Clone, PartialEq)]
@@ -139,7 +140,8 @@ fn split_params(s: &Segment, o: &Segment, tol: f64, out: &mut Vec<f64>) {
     }
 }
 
-fn bbox_overlap(s: &Segment, o: &Segment, tol: f64) -> bool {
+/// Whether the boxes of `s` and `o`, widened by `tol` (m), overlap.
+pub(crate) fn bbox_overlap(s: &Segment, o: &Segment, tol: f64) -> bool {
     (0..2).all(|k| {
         s.a[k].min(s.b[k]) <= o.a[k].max(o.b[k]) + tol
             && o.a[k].min(o.b[k]) <= s.a[k].max(s.b[k]) + tol
@@ -206,11 +208,15 @@ pub fn cut_blocks_filled(
     }
     let mut edges: HashMap<(u32, u32), EdgeKind> = HashMap::new();
     let mut params = Vec::new();
+    let grid = SegmentGrid::new(&segs, tol);
+    let mut near = Vec::new();
     for (i, s) in segs.iter().enumerate() {
         params.clear();
         params.extend([0.0, 1.0]);
-        for (j, o) in segs.iter().enumerate() {
-            if i != j && bbox_overlap(s, o, tol) {
+        grid.candidates(i, &mut near);
+        for &j in &near {
+            let o = &segs[j as usize];
+            if j as usize != i && bbox_overlap(s, o, tol) {
                 split_params(s, o, tol, &mut params);
             }
         }
