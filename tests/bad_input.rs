@@ -15,8 +15,13 @@ fn model(name: &str) -> Value {
 
 /// `adit check` on `text`: exit code (None: killed after 60 s) and stderr.
 fn check_text(text: &str, tag: &str) -> (Option<i32>, String) {
-    let path =
-        std::env::temp_dir().join(format!("adit-bad-input-{tag}-{}.json", std::process::id()));
+    // Tests run in parallel in one process and may check under the same tag.
+    static CALLS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    let call = CALLS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let path = std::env::temp_dir().join(format!(
+        "adit-bad-input-{tag}-{}-{call}.json",
+        std::process::id()
+    ));
     std::fs::write(&path, text).unwrap();
     let child = Command::new(env!("CARGO_BIN_EXE_adit"))
         .args(["check", path.to_str().unwrap()])
@@ -224,6 +229,28 @@ fn joints_closer_than_the_merge_tolerance_are_refused() {
         err.contains("0.06 m is below the 0.0750 m") && !err.contains("Some("),
         "{err}"
     );
+    s["zoning"]["merge_tolerance"] = json!(0.5);
+    let err = refused(&s, "zoning.merge_tolerance");
+    assert!(err.contains("at most zoning.edge_at_excavation"), "{err}");
+}
+
+/// `zoning.merge_tolerance` sets the distance: a set 0.06 m apart in a 2 m box zoned at 0.25 m is
+/// refused at the default (0.075 m) and cut into its 33 slabs at 0.02 m.
+#[test]
+fn the_merge_tolerance_is_a_scene_field() {
+    let mut s = json!({
+        "name": "slabs",
+        "materials": { "rock": { "density": 2500, "young": 1e10, "poisson": 0.25 } },
+        "joint_materials": { "j": { "normal_stiffness": 1e10, "shear_stiffness": 1e9, "friction": 30 } },
+        "region": { "polygon": [[0, 0], [2, 0], [2, 2], [0, 2]], "material": "rock" },
+        "joint_sets": [{ "dip": 0, "spacing": 0.06, "origin": [0, 0.03], "material": "j" }],
+        "zoning": { "edge_at_excavation": 0.25, "edge_far": 0.25 }
+    });
+    refused(&s, "joint_sets[0].spacing");
+    s["zoning"]["merge_tolerance"] = json!(0.02);
+    let scene = adit::Scene::from_json(&s.to_string(), "slabs").unwrap();
+    let built = adit::build::build(&scene).unwrap();
+    assert_eq!(built.model.blocks.len(), 34);
 }
 
 /// `check` refuses what `run` refuses before its first cycle: a lone rigid block has no stiffness

@@ -29,9 +29,10 @@ pub enum MeshError {
     TooManyZones { zones: usize, limit: usize },
     /// Joint set `set`'s joints lie closer together than the cutter can tell apart.
     #[error(
-        "{spacing} m is below the {tolerance:.4} m within which the cutter merges vertices (0.3 × \
-         zoning.edge_at_excavation, or less near short wall edges): joints this close cannot be told \
-         apart; space them wider or zone finer"
+        "{spacing} m is below the {tolerance:.4} m within which the cutter merges vertices \
+         (zoning.merge_tolerance, by default 0.3 × zoning.edge_at_excavation, less near short wall \
+         edges): joints this close cannot be told apart; space them wider, zone finer or lower \
+         zoning.merge_tolerance"
     )]
     JointsTooClose {
         set: usize,

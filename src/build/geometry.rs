@@ -263,7 +263,11 @@ fn mesh_blocks(scene: &Scene) -> Result<Meshed, MeshError> {
     }
 }
 
-/// The distance, m, within which the cutter merges vertices. Vertices closer than 0.3 of the
+/// `zoning.merge_tolerance` when the scene gives none, as a fraction of `edge_at_excavation`.
+pub const DEFAULT_MERGE: f64 = 0.3;
+
+/// The distance, m, within which the cutter merges vertices: `zoning.merge_tolerance`, by default
+/// `DEFAULT_MERGE` × `edge_at_excavation`, within the bounds below. Vertices closer than 0.3 of the
 /// finest zone merge, so joints cut no sliver edges; with
 /// Voronoi grains, never more than 2 % of the grain size, whose many short edges would
 /// otherwise collapse; and below the shortest edge of the region and the walls, whose
@@ -277,9 +281,11 @@ fn merge_tolerance(scene: &Scene, domain: &Domain) -> f64 {
         .flat_map(|p| (0..p.len()).map(|i| p.edge(i)))
         .map(|(a, b)| distance(a, b))
         .fold(f64::INFINITY, f64::min);
-    (0.3 * zoning(scene).h_excavation)
-        .min(0.02 * grain)
-        .min(0.9 * fixed_edge)
+    let asked = scene
+        .zoning
+        .merge_tolerance
+        .unwrap_or(DEFAULT_MERGE * zoning(scene).h_excavation);
+    asked.min(0.02 * grain).min(0.9 * fixed_edge)
 }
 
 /// Cut `domain` by `joints` into blocks and zone each.

@@ -461,10 +461,16 @@ pub struct ZoningSpec {
     /// Largest zone count accepted (default 2 000 000).
     #[serde(default = "default_max_zones")]
     pub max_zones: usize,
-    /// Smallest zone angle accepted, degrees (default 1): a mesh with a sharper zone is refused
-    /// (it would set a tiny time step); 0 accepts any.
+    /// Smallest zone angle accepted, degrees (default 1): a sharper zone that a joint makes costs
+    /// that joint's piece there (a warning), one no joint makes is refused (it would set a tiny
+    /// time step); 0 accepts any.
     #[serde(default = "default_accept_angle")]
     pub accept_angle: f64,
+    /// Distance within which the cutter merges vertices, m (default `None`: 0.3 ×
+    /// `edge_at_excavation`); never more than 0.9 × the shortest region or wall edge (those
+    /// vertices never move) nor 2 % of `voronoi.size`.
+    #[serde(default)]
+    pub merge_tolerance: Option<f64>,
     /// Mixed discretization: each zone takes the volumetric strain averaged over its nodes'
     /// patches instead of its own, so constant-strain triangles do not lock as ν → 0.5
     /// (default false).

@@ -370,6 +370,18 @@ impl Scene {
                 format!("must be in (0, 2], got {}", Num(z.grading)),
             ));
         }
+        if let Some(m) = z.merge_tolerance
+            && !(m > 0.0 && m <= z.edge_at_excavation)
+        {
+            return Err(invalid(
+                "zoning.merge_tolerance",
+                format!(
+                    "must be positive and at most zoning.edge_at_excavation ({} m), got {}",
+                    Num(z.edge_at_excavation),
+                    Num(m)
+                ),
+            ));
+        }
         if !(z.accept_angle >= 0.0 && z.accept_angle < z.min_angle) {
             return Err(invalid(
                 "zoning.accept_angle",

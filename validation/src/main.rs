@@ -399,8 +399,9 @@ fn damped_section(md: &mut String, damped: &[CaseReport], column: &[CaseReport])
          **{}**). What remains from rest is a velocity the deformable block gains in its first \
          milliseconds, while the slide is still slower than the vibration the release starts (released at \
          0.1 m/s, the row after the holding one, the same block follows the closed form). The \
-         damping costs steps: Δt falls by √(1 + ξ_max²) − ξ_max with ξ_max = β_R / Δt_crit (15 to 35 \
-         times more cycles here, more on finer zones: the fastest zone modes are damped hardest).\n",
+         damping costs steps: Δt falls by √(1 + ξ_max²) − ξ_max with ξ_max = β_R / Δt_crit (compare \
+         the cycles with the undamped rows above; more on finer zones, whose fastest modes are damped \
+         hardest).\n",
         100.0 * worst_slide,
         verdict(worst_slide <= 0.02),
         holding,
