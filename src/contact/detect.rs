@@ -6,6 +6,7 @@
 use adit_meshing::EdgeKind;
 use rayon::prelude::*;
 
+use super::edge_grid::{EdgeGrid, MIN_EDGES};
 use super::{Contacts, rounding};
 use crate::joint::JointState;
 use crate::model::blocks::{Blocks, NO_EDGE};
@@ -121,7 +122,9 @@ type Record = (u32, u32, u32, f64, f64, u32, bool, JointState);
 /// Nodes of block `a` touching edges of block `b`. A rounded node (a convex corner of a rigid or
 /// simple block) measures from its rounding centre, less its radius; a rounded node that meets no
 /// edge of b face-on may meet a rounded corner of b, along the line of the two centres.
-fn node_to_edge(d: &Detection, a: usize, b: usize) -> Vec<Found> {
+/// `grid`, when block b has one, gives the edges each node can touch (`EdgeGrid`); the edges are
+/// then taken in the same order as without it, so the contacts are the same.
+fn node_to_edge(d: &Detection, a: usize, b: usize, grid: Option<&EdgeGrid>) -> Vec<Found> {
     let (blo, bhi) = bounds(d.blocks, d.x, b);
     let tol = d.tolerance;
     let mut found = Vec::new();
@@ -139,7 +142,11 @@ fn node_to_edge(d: &Detection, a: usize, b: usize) -> Vec<Found> {
         let mut depth = None;
         // Nearest edge; among equally near ones (a node at a corner of B), the one facing the node.
         let mut best: Option<(f64, f64, Found)> = None;
-        for eb in d.blocks.edge_range(b) {
+        let (listed, all) = match grid {
+            Some(g) => (g.near(c), 0..0),
+            None => (&[][..], d.blocks.edge_range(b)),
+        };
+        for eb in listed.iter().map(|&e| e as usize).chain(all) {
             let [j, k] = d.blocks.edges[eb];
             let (pj, pk) = (d.x[j as usize], d.x[k as usize]);
             let t = [pk[0] - pj[0], pk[1] - pj[1]];
@@ -335,6 +342,16 @@ pub fn detect(
     previous: &Contacts,
     fresh: &(dyn Fn(&Touch) -> JointState + Sync),
 ) -> Contacts {
+    detect_gridded(d, previous, fresh, MIN_EDGES)
+}
+
+/// `detect`, with an edge grid for every block of at least `min_edges` edges.
+fn detect_gridded(
+    d: &Detection,
+    previous: &Contacts,
+    fresh: &(dyn Fn(&Touch) -> JointState + Sync),
+    min_edges: usize,
+) -> Contacts {
     // The previous contacts of each node (compressed rows, a counting sort), to find a persisting
     // one's state without hashing.
     let mut start = vec![0u32; d.x.len() + 1];
@@ -357,16 +374,25 @@ pub fn detect(
             .find(|&c| previous.block[c] == block)
     };
     let pairs = candidate_pairs(d.blocks, d.x, d.tolerance);
+    let near = d.tolerance + d.blocks.round.iter().copied().fold(0.0, f64::max);
+    let grids: Vec<Option<EdgeGrid>> = (0..d.blocks.len())
+        .into_par_iter()
+        .map(|b| {
+            (d.blocks.edge_range(b).len() >= min_edges && !d.blocks.is_removed(b))
+                .then(|| EdgeGrid::new(d.blocks, d.x, b, near))
+        })
+        .collect();
     let per_pair: Vec<Vec<Record>> = pairs
         .par_iter()
         .map(|&(a, b)| {
-            let both = node_to_edge(d, a as usize, b as usize)
+            let (a, b) = (a as usize, b as usize);
+            let both = node_to_edge(d, a, b, grids[b].as_ref())
                 .into_iter()
-                .map(|f| (f, b))
+                .map(|f| (f, b as u32))
                 .chain(
-                    node_to_edge(d, b as usize, a as usize)
+                    node_to_edge(d, b, a, grids[a].as_ref())
                         .into_iter()
-                        .map(|f| (f, a)),
+                        .map(|f| (f, a as u32)),
                 );
             both.filter_map(|((node, edge, xi, mut touch, corner), block_b)| {
                 let (length, face) = contact_length(d, node, edge, block_b as usize);
@@ -458,6 +484,46 @@ mod tests {
             tolerance: 1e-3,
             joint_material: &[0],
             hole_material: &[],
+        }
+    }
+
+    /// The edge grids change nothing: the tunnel model (its non-persistent joints leave large
+    /// blocks with hundreds of boundary edges) gives the same contacts searched edge by edge, with
+    /// grids on its large blocks, and with grids on nearly all.
+    #[test]
+    fn edge_grids_find_the_same_contacts() {
+        let path = concat!(env!("CARGO_MANIFEST_DIR"), "/models/tunnel.json");
+        let scene = crate::Scene::load(std::path::Path::new(path)).unwrap();
+        let model = crate::build::build(&scene).unwrap().model;
+        let x: Vec<[f64; 2]> = model
+            .nodes
+            .pos
+            .iter()
+            .zip(&model.nodes.disp)
+            .map(|(p, u)| [p[0] + u[0], p[1] + u[1]])
+            .collect();
+        let d = Detection {
+            blocks: &model.blocks,
+            x: &x,
+            tolerance: model.contact_tolerance,
+            joint_material: &model.joint_material,
+            hole_material: &model.hole_material,
+        };
+        let largest = (0..model.blocks.len())
+            .map(|b| model.blocks.edge_range(b).len())
+            .max()
+            .unwrap();
+        assert!(largest >= 4 * MIN_EDGES, "{largest}");
+        let fresh = |_: &Touch| JointState::default();
+        let plain = detect_gridded(&d, &Contacts::default(), &fresh, usize::MAX);
+        assert!(plain.len() > 1000, "{}", plain.len());
+        for min_edges in [MIN_EDGES, 4] {
+            let gridded = detect_gridded(&d, &Contacts::default(), &fresh, min_edges);
+            assert_eq!(plain.node, gridded.node);
+            assert_eq!(plain.edge, gridded.edge);
+            assert_eq!(plain.block, gridded.block);
+            assert_eq!(plain.xi, gridded.xi);
+            assert_eq!(plain.length, gridded.length);
         }
     }
 

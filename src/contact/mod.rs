@@ -2,6 +2,7 @@
 //! (UDEC's deformable-block contacts), each with a joint state that persists across re-detection.
 
 pub mod detect;
+mod edge_grid;
 pub mod rounding;
 
 use crate::joint::JointState;
