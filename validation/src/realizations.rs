@@ -123,7 +123,13 @@ pub fn run_all(count: u64, out: &Path) -> anyhow::Result<Vec<Ran>> {
                         .stages
                         .last()
                         .and_then(|s| s.closure.values().next().copied())
-                        .ok_or_else(|| "no closure in the summary".to_string()),
+                        .ok_or_else(|| {
+                            // A run that failed before its excavation: say why.
+                            r.summary
+                                .reason
+                                .clone()
+                                .unwrap_or_else(|| "no closure in the summary".to_string())
+                        }),
                     cycles: r.summary.cycles,
                     seconds,
                 },
