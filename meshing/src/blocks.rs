@@ -242,17 +242,23 @@ pub fn cut_blocks_filled(
 
     // Merging can leave a joint piece running along a wall between two wall vertices, doubling the
     // wall's own pieces there; drop it, so that every wall keeps its exact path.
-    let wall_pieces: Vec<(Point, Point)> = edges
+    let wall_pieces: Vec<Segment> = edges
         .iter()
         .filter(|(_, k)| !matches!(k, EdgeKind::Joint(_)))
-        .map(|(&(u, v), _)| (pts[u as usize], pts[v as usize]))
+        .map(|(&(u, v), &kind)| Segment {
+            a: pts[u as usize],
+            b: pts[v as usize],
+            kind,
+        })
         .collect();
+    let eps = 1e-9 * domain.outer.size();
+    let wall_grid = SegmentGrid::new(&wall_pieces, eps);
     let along_wall = |a: Point, b: Point| {
         let m = [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])];
-        let eps = 1e-9 * domain.outer.size();
-        wall_pieces
-            .iter()
-            .any(|&(p, q)| segment_distance(m, p, q) <= eps)
+        wall_grid.at(m).iter().any(|&w| {
+            let w = &wall_pieces[w as usize];
+            segment_distance(m, w.a, w.b) <= eps
+        })
     };
     edges.retain(|&(u, v), k| {
         !matches!(k, EdgeKind::Joint(_)) || !along_wall(pts[u as usize], pts[v as usize])

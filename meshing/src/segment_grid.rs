@@ -52,6 +52,14 @@ impl SegmentGrid {
         ]
     }
 
+    /// The segments (ascending) whose widened boxes may hold point `p`: those entered in its cell.
+    pub fn at(&self, p: crate::geometry::Point) -> &[u32] {
+        let c = |v: f64| (v / self.cell).floor() as i64;
+        self.cells
+            .get(&(c(p[0]), c(p[1])))
+            .map_or(&[][..], Vec::as_slice)
+    }
+
     /// Into `out`, in increasing order and once each, the segments sharing a cell with segment
     /// `i` (itself included): a superset of those whose widened boxes overlap its own.
     pub fn candidates(&self, i: usize, out: &mut Vec<u32>) {
