@@ -232,7 +232,7 @@ fn mesh_blocks(scene: &Scene) -> Result<Meshed, MeshError> {
     let mut joints = joint_segments(scene, &domain)?;
     let mut repairs = Vec::new();
     loop {
-        let mut meshed = cut_and_zone(scene, domain.clone(), &joints)?;
+        let mut meshed = cut_and_zone(scene, domain.clone(), &joints, tolerance)?;
         let accept = scene.zoning.accept_angle;
         let needle = meshed
             .sharpest_zone()
@@ -288,8 +288,13 @@ fn merge_tolerance(scene: &Scene, domain: &Domain) -> f64 {
     asked.min(0.02 * grain).min(0.9 * fixed_edge)
 }
 
-/// Cut `domain` by `joints` into blocks and zone each.
-fn cut_and_zone(scene: &Scene, domain: Domain, joints: &[Segment]) -> Result<Meshed, MeshError> {
+/// Cut `domain` by `joints` into blocks, merging vertices within `tol` (m), and zone each.
+fn cut_and_zone(
+    scene: &Scene,
+    domain: Domain,
+    joints: &[Segment],
+    tol: f64,
+) -> Result<Meshed, MeshError> {
     let zoning = zoning(scene);
     let filled: Vec<bool> = scene
         .excavations
@@ -297,7 +302,6 @@ fn cut_and_zone(scene: &Scene, domain: Domain, joints: &[Segment]) -> Result<Mes
         .map(|e| scene.is_staged(&e.name))
         .chain(scene.inclusions.iter().map(|_| true))
         .collect();
-    let tol = merge_tolerance(scene, &domain);
     let blocking = if joints.is_empty() && !filled.contains(&true) {
         Blocking {
             blocks: vec![Block::from_domain(&domain)],

@@ -25,6 +25,19 @@ pub struct Detection<'a> {
     pub hole_material: &'a [u32],
 }
 
+impl<'a> Detection<'a> {
+    /// Detection on `model`'s blocks and joint materials at positions `x` (m).
+    pub fn of(model: &'a crate::model::Model, x: &'a [[f64; 2]]) -> Detection<'a> {
+        Detection {
+            blocks: &model.blocks,
+            x,
+            tolerance: model.contact_tolerance,
+            joint_material: &model.joint_material,
+            hole_material: &model.hole_material,
+        }
+    }
+}
+
 /// Marks a hole whose wall makes no contacts (an excavation from the start).
 pub const NO_MATERIAL: u32 = u32::MAX;
 
@@ -495,20 +508,8 @@ mod tests {
         let path = concat!(env!("CARGO_MANIFEST_DIR"), "/models/tunnel.json");
         let scene = crate::Scene::load(std::path::Path::new(path)).unwrap();
         let model = crate::build::build(&scene).unwrap().model;
-        let x: Vec<[f64; 2]> = model
-            .nodes
-            .pos
-            .iter()
-            .zip(&model.nodes.disp)
-            .map(|(p, u)| [p[0] + u[0], p[1] + u[1]])
-            .collect();
-        let d = Detection {
-            blocks: &model.blocks,
-            x: &x,
-            tolerance: model.contact_tolerance,
-            joint_material: &model.joint_material,
-            hole_material: &model.hole_material,
-        };
+        let x = model.nodes.current();
+        let d = Detection::of(&model, &x);
         let largest = (0..model.blocks.len())
             .map(|b| model.blocks.edge_range(b).len())
             .max()

@@ -16,20 +16,8 @@ impl Cycle {
     /// changed facing (below the toe of a neighbour's corner, say) must not get the whole overlap's
     /// force in one cycle.
     pub fn detect(&mut self, model: &mut Model) {
-        let x: Vec<[f64; 2]> = model
-            .nodes
-            .pos
-            .iter()
-            .zip(&model.nodes.disp)
-            .map(|(p, u)| [p[0] + u[0], p[1] + u[1]])
-            .collect();
-        let d = Detection {
-            blocks: &model.blocks,
-            x: &x,
-            tolerance: model.contact_tolerance,
-            joint_material: &model.joint_material,
-            hole_material: &model.hole_material,
-        };
+        let x = model.nodes.current();
+        let d = Detection::of(model, &x);
         let shallow = -0.1 * model.contact_tolerance;
         let fresh = |t: &Touch| JointState {
             normal_displacement: if t.gap >= shallow { t.gap } else { 0.0 },

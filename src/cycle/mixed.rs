@@ -130,11 +130,7 @@ impl Cycle {
                     s[1] += shift;
                     s[2] += shift;
                 }
-                if viscous > 0.0 {
-                    corner_forces(&with_viscous(s, start, viscous), g, area, f);
-                } else {
-                    corner_forces(s, g, area, f);
-                }
+                corner_forces(&with_viscous(s, start, viscous), g, area, f);
             });
     }
 }

@@ -46,9 +46,12 @@ impl CycleParams {
 }
 
 /// The stress that acts on the nodes with stiffness-proportional damping: σ + (β_R / Δt)(σ − σ_old),
-/// the elastic stress plus β_R σ̇ over the step, Pa.
+/// the elastic stress plus β_R σ̇ over the step, Pa; σ itself (`old` unread) when `ratio` is 0.
 #[inline]
 pub(crate) fn with_viscous(s: &Stress, old: &Stress, ratio: f64) -> Stress {
+    if ratio == 0.0 {
+        return *s;
+    }
     std::array::from_fn(|k| s[k] + ratio * (s[k] - old[k]))
 }
 

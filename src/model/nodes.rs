@@ -31,6 +31,15 @@ pub struct Nodes {
 }
 
 impl Nodes {
+    /// Current positions x = X + u, m.
+    pub fn current(&self) -> Vec<[f64; 2]> {
+        self.pos
+            .iter()
+            .zip(&self.disp)
+            .map(|(p, u)| [p[0] + u[0], p[1] + u[1]])
+            .collect()
+    }
+
     /// `n` nodes at the given positions, at rest, free and unloaded (masses zero until set).
     pub fn at(pos: Vec<[f64; 2]>) -> Nodes {
         let n = pos.len();

@@ -55,7 +55,7 @@ pub fn self_weight(h: f64) -> anyhow::Result<CaseReport> {
     let scene = column_scene(h, false);
     let mut b = build(&scene)?;
     let (_, cycles) = settle(&mut b.model, &scene.solve, "column")?;
-    let m = YOUNG * (1.0 - POISSON) / ((1.0 + POISSON) * (1.0 - 2.0 * POISSON));
+    let m = crate::constrained_modulus(YOUNG, POISSON);
     let model = &b.model;
     let (mut num, mut den) = (0.0, 0.0);
     for z in 0..model.zones.len() {
@@ -91,7 +91,7 @@ pub fn in_situ_equilibrium(h: f64) -> anyhow::Result<CaseReport> {
     let scene = column_scene(h, true);
     let mut b = build(&scene)?;
     let (_, cycles) = settle(&mut b.model, &scene.solve, "column")?;
-    let m = YOUNG * (1.0 - POISSON) / ((1.0 + POISSON) * (1.0 - 2.0 * POISSON));
+    let m = crate::constrained_modulus(YOUNG, POISSON);
     let reference = RHO * G * HEIGHT * HEIGHT / (2.0 * m);
     let umax = b
         .model

@@ -52,6 +52,12 @@ pub fn shipped_kirsch() -> anyhow::Result<adit::Scene> {
     )?)
 }
 
+/// Constrained (P-wave) modulus M = K + 4G/3 = E(1 − ν)/((1 + ν)(1 − 2ν)), Pa, of Young's modulus
+/// `young` (Pa) and Poisson's ratio `poisson`: the stiffness of uniaxial strain.
+pub fn constrained_modulus(young: f64, poisson: f64) -> f64 {
+    young * (1.0 - poisson) / ((1.0 + poisson) * (1.0 - 2.0 * poisson))
+}
+
 /// Solve `model` statically to the ratio of `spec`; an error naming `what` unless it converges.
 /// Returns the solver (masses and step set up) and the cycles taken.
 pub fn settle(model: &mut Model, spec: &SolveSpec, what: &str) -> anyhow::Result<(Solver, u64)> {

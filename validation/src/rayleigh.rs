@@ -37,9 +37,14 @@ const PERIODS: f64 = 6.0;
 /// Samples of the top's displacement per period of the fundamental.
 const SAMPLES_PER_PERIOD: usize = 40;
 
-/// Constrained modulus M = E(1 − ν)/((1 + ν)(1 − 2ν)), Pa.
+/// The column's constrained modulus M, Pa.
 fn constrained_modulus() -> f64 {
-    YOUNG * (1.0 - POISSON) / ((1.0 + POISSON) * (1.0 - 2.0 * POISSON))
+    crate::constrained_modulus(YOUNG, POISSON)
+}
+
+/// The top's static settlement u_s(H) = −ρgH²/(2M), m.
+fn static_top() -> f64 {
+    -RHO * G / constrained_modulus() * 0.5 * HEIGHT * HEIGHT
 }
 
 /// Angular frequency ω_n of the column's n-th mode (n from 1), rad/s.
@@ -119,7 +124,6 @@ impl Column {
     /// Top displacement of the closed form at time `t`, m.
     fn exact_top(&self, alpha: f64, beta: f64, t: f64) -> f64 {
         let load = RHO * G / constrained_modulus();
-        let static_top = -load * 0.5 * HEIGHT * HEIGHT;
         let modes: f64 = (1..=200)
             .map(|n| {
                 let k = (2 * n - 1) as f64 * PI / (2.0 * HEIGHT);
@@ -129,7 +133,7 @@ impl Column {
                 a * sign * free_decay(w, 0.5 * (alpha / w + beta * w), t)
             })
             .sum();
-        static_top - modes
+        static_top() - modes
     }
 
     /// Run the column for `PERIODS` periods of its fundamental mode.
@@ -149,7 +153,7 @@ impl Column {
         solver.spec.max_cycles = steps;
         solver.spec.monitor_every = steps;
         let samples = (PERIODS * SAMPLES_PER_PERIOD as f64) as usize;
-        let static_top = -RHO * G / constrained_modulus() * 0.5 * HEIGHT * HEIGHT;
+        let static_top = static_top();
         let (mut worst, mut cycles) = (0.0f64, 0);
         let mut vibration = Vec::with_capacity(samples);
         for k in 1..=samples {

@@ -99,7 +99,7 @@ pub fn tiny(mode: &str, pressure: f64) -> anyhow::Result<Scene> {
 /// joints crossing the vertical at the heights and dips `crossings` (y m, dip rad).
 fn column_settlement(h: f64, pressure: f64, crossings: &[(f64, f64)], rigid: bool) -> f64 {
     let w = DENSITY * GRAVITY;
-    let m = YOUNG * (1.0 - POISSON) / ((1.0 + POISSON) * (1.0 - 2.0 * POISSON));
+    let m = crate::constrained_modulus(YOUNG, POISSON);
     let rock = if rigid {
         0.0
     } else {
