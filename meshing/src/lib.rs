@@ -6,6 +6,7 @@ pub mod domain;
 pub mod error;
 pub mod geometry;
 pub mod joints;
+mod pinch;
 mod segment_grid;
 pub mod triangulate;
 pub mod voronoi;

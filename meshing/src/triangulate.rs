@@ -18,6 +18,7 @@ use crate::error::MeshError;
 use crate::geometry::Polygon;
 use crate::geometry::{Point, distance, segment_distance, segments_intersect};
 use crate::joints::EdgeKind;
+use crate::pinch::split_pinches;
 
 /// Zoning controls. Lengths in metres.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -431,8 +432,9 @@ fn triangulate_once(
         .map(|v| [v.position().x, v.position().y])
         .collect();
     sort_by_morton(&mut tris, &pos);
-    let (points, triangles) = renumber(&tris, &pos);
-    let boundary = label_boundary(block, &points, &triangles)?;
+    let (mut points, mut triangles) = renumber(&tris, &pos);
+    let mut boundary = label_boundary(block, &points, &triangles)?;
+    split_pinches(&mut points, &mut triangles, &mut boundary);
     Ok(TriMesh {
         points,
         triangles,

@@ -126,15 +126,53 @@ pub fn candidate_pairs(blocks: &Blocks, x: &[[f64; 2]], tol: f64) -> Vec<(u32, u
     pairs
 }
 
-/// One candidate: (node, edge, ξ, touch, corner).
-type Found = (u32, u32, f64, Touch, bool);
+/// A node of one block against an edge of another.
+#[derive(Clone, Copy)]
+struct Found {
+    node: u32,
+    edge: u32,
+    /// Where along the edge, 0..1.
+    xi: f64,
+    touch: Touch,
+    /// Rounded corner against rounded corner.
+    corner: bool,
+    /// The other edge of a node that meets two edges of the block at one of its corners (each of
+    /// the node's faces against one of them), else `NO_EDGE`.
+    partner: u32,
+    /// The second of such a pair: it keeps only its own edge's state.
+    second: bool,
+}
+
+impl Found {
+    fn single(node: u32, edge: u32, xi: f64, touch: Touch, corner: bool) -> Found {
+        Found {
+            node,
+            edge,
+            xi,
+            touch,
+            corner,
+            partner: NO_EDGE,
+            second: false,
+        }
+    }
+}
+
+/// A node's faces lie against an edge when their outward normals are within about 25° of
+/// opposite (cosine below −0.9).
+const AGAINST: f64 = 0.9;
+
+/// Two edges meeting at a corner are one face, not two, when their normals are within about 14°.
+const SAME_FACE: f64 = 0.97;
 
 /// One detected contact: node, edge, block B, ξ, length, material, corner, joint state.
 type Record = (u32, u32, u32, f64, f64, u32, bool, JointState);
 
 /// Nodes of block `a` touching edges of block `b`. A rounded node (a convex corner of a rigid or
 /// simple block) measures from its rounding centre, less its radius; a rounded node that meets no
-/// edge of b face-on may meet a rounded corner of b, along the line of the two centres.
+/// edge of b face-on may meet a rounded corner of b, along the line of the two centres. A node at a
+/// corner of b whose two faces lie against b's two edges there (a wedge's apex in a notch of b, or
+/// b's apex in a notch of a) makes a contact with each, as UDEC's corner does with both edges of a
+/// concave corner: one contact would carry the stress of both faces along one normal.
 /// `grid`, when block b has one, gives the edges each node can touch (`EdgeGrid`); the edges are
 /// then taken in the same order as without it, so the contacts are the same.
 fn node_to_edge(d: &Detection, a: usize, b: usize, grid: Option<&EdgeGrid>) -> Vec<Found> {
@@ -150,73 +188,198 @@ fn node_to_edge(d: &Detection, a: usize, b: usize, grid: Option<&EdgeGrid>) -> V
         }
         let r = d.blocks.round_of(n);
         let at = |v: u32| d.x[v as usize];
-        let c = rounding::centre(d.blocks, &at, n, r);
-        let own = edge_normals_at(d, n);
+        let node = Node {
+            id: n,
+            centre: rounding::centre(d.blocks, &at, n, r),
+            radius: r,
+            own: edge_normals_at(d, n),
+        };
         let mut depth = None;
-        // Nearest edge; among equally near ones (a node at a corner of B), the one facing the node.
-        let mut best: Option<(f64, f64, Found)> = None;
+        // Nearest edge the node lies beside, else nearest it lies beyond the end of; among equally
+        // near ones (a node at a corner of B), the one facing the node.
+        let mut best: Option<Candidate> = None;
         let (listed, all) = match grid {
-            Some(g) => (g.near(c), 0..0),
+            Some(g) => (g.near(node.centre), 0..0),
             None => (&[][..], d.blocks.edge_range(b)),
         };
         for eb in listed.iter().map(|&e| e as usize).chain(all) {
-            let [j, k] = d.blocks.edges[eb];
-            let (pj, pk) = (d.x[j as usize], d.x[k as usize]);
-            let t = [pk[0] - pj[0], pk[1] - pj[1]];
-            let len = norm(t[0], t[1]);
-            let xi = ((c[0] - pj[0]) * t[0] + (c[1] - pj[1]) * t[1]) / (len * len);
-            if !(-1e-9..=1.0 + 1e-9).contains(&xi) {
+            let Some(c) = facing_edge(d, b, &node, eb as u32, &mut depth) else {
                 continue;
-            }
-            let xi = xi.clamp(0.0, 1.0);
-            let q = [pj[0] + xi * t[0], pj[1] + xi * t[1]];
-            let normal = [t[1] / len, -t[0] / len];
-            let gap = (c[0] - q[0]) * normal[0] + (c[1] - q[1]) * normal[1] - r;
-            if gap > tol || gap < -0.5 * len {
-                continue;
-            }
-            // Deeper than the tolerance behind the edge's line is an overlap only if the node (its
-            // rounding centre) is inside b and b's boundary is no nearer elsewhere: a node beside
-            // a narrow block, behind the line of its far edge, is not in it, and a node just inside
-            // a corner of b is not deep behind the line of the corner's other edge.
-            if gap < -tol {
-                let depth = *depth.get_or_insert_with(|| depth_in_block(d, b, c));
-                if depth.is_none_or(|depth| -(gap + r) > depth + 1e-9 * len) {
-                    continue;
-                }
-            }
-            let dist = gap.abs();
-            // One of the node's edges must face the edge: a node of a flat surface beside the end of
-            // an edge at right angles to it (a base node ahead of a sliding block's front face) is
-            // no contact, or the block would snag on it.
-            let facing = own
-                .iter()
-                .map(|o| normal[0] * o[0] + normal[1] * o[1])
-                .fold(1.0, f64::min);
-            if facing > -MIN_FACING {
-                continue;
-            }
-            let eps = 1e-9 * len;
-            let better = best
-                .as_ref()
-                .is_none_or(|(bd, bf, _)| dist < bd - eps || (dist <= bd + eps && facing < *bf));
-            if better {
-                let touch = Touch {
-                    point: q,
-                    normal,
-                    gap,
-                    face: false,
-                };
-                best = Some((dist, facing, (n, eb as u32, xi, touch, false)));
+            };
+            if best.as_ref().is_none_or(|best| c.better_than(best)) {
+                best = Some(c);
             }
         }
-        match best {
-            Some((_, _, f)) => found.push(f),
-            None if r > 0.0 => found.extend(corner_to_corner(d, n, c, r, b)),
+        match best.map(|c| c.found) {
+            Some(f) => match corner_partner(d, b, &node, &f, &mut depth) {
+                Some(g) => found.extend([
+                    Found {
+                        partner: g.edge,
+                        ..f
+                    },
+                    Found {
+                        partner: f.edge,
+                        second: true,
+                        ..g
+                    },
+                ]),
+                None => found.push(f),
+            },
+            None if r > 0.0 => found.extend(corner_to_corner(d, n, node.centre, r, b)),
             None => {}
         }
     }
     found
+}
+
+/// A node looking for edges: its id, rounding centre (m) and radius (m), and the outward normals
+/// of its own edges.
+struct Node {
+    id: u32,
+    centre: [f64; 2],
+    radius: f64,
+    own: Vec<[f64; 2]>,
+}
+
+/// An edge a node may touch.
+struct Candidate {
+    /// Whether the node lies beyond an end of the edge (by less than the tolerance).
+    beyond: bool,
+    /// Distance from the edge's line, m.
+    dist: f64,
+    /// How squarely one of the node's faces meets the edge: the smallest cosine between normals.
+    facing: f64,
+    /// Distances closer than this are equal, m (1e-9 of the edge's length).
+    eps: f64,
+    found: Found,
+}
+
+impl Candidate {
+    /// Beside before beyond, then nearer, then (equally near) more squarely faced.
+    fn better_than(&self, other: &Candidate) -> bool {
+        if self.beyond != other.beyond {
+            return !self.beyond;
+        }
+        self.dist < other.dist - self.eps
+            || (self.dist <= other.dist + self.eps && self.facing < other.facing)
+    }
+}
+
+/// Node `n` against edge `eb` of block `b`: the candidate contact, if the node is within the
+/// tolerance of the edge, not deep inside b beyond it, and faces it. `depth` caches the node's
+/// depth inside b.
+fn facing_edge(
+    d: &Detection,
+    b: usize,
+    n: &Node,
+    eb: u32,
+    depth: &mut Option<Option<f64>>,
+) -> Option<Candidate> {
+    let (c, r, tol) = (n.centre, n.radius, d.tolerance);
+    let [j, k] = d.blocks.edges[eb as usize];
+    let (pj, pk) = (d.x[j as usize], d.x[k as usize]);
+    let t = [pk[0] - pj[0], pk[1] - pj[1]];
+    let len = norm(t[0], t[1]);
+    // A node up to the tolerance beyond an end of the edge still meets it, when it meets no edge
+    // it lies beside: a node at a corner of b (where joints end or cross, nodes of both sides
+    // coincide) otherwise loses its contact, and with it its stress, as soon as it moves off the
+    // corner; as with UDEC's rounded corners, a face ends in the tolerance's reach.
+    let slack = tol / len;
+    let xi = ((c[0] - pj[0]) * t[0] + (c[1] - pj[1]) * t[1]) / (len * len);
+    if !(-slack..=1.0 + slack).contains(&xi) {
+        return None;
+    }
+    let beyond = !(-1e-9..=1.0 + 1e-9).contains(&xi);
+    let xi = xi.clamp(0.0, 1.0);
+    let q = [pj[0] + xi * t[0], pj[1] + xi * t[1]];
+    let normal = [t[1] / len, -t[0] / len];
+    let gap = (c[0] - q[0]) * normal[0] + (c[1] - q[1]) * normal[1] - r;
+    if gap > tol || gap < -0.5 * len {
+        return None;
+    }
+    // Deeper than the tolerance behind the edge's line is an overlap only if the node (its
+    // rounding centre) is inside b and b's boundary is no nearer elsewhere: a node beside
+    // a narrow block, behind the line of its far edge, is not in it, and a node just inside
+    // a corner of b is not deep behind the line of the corner's other edge.
+    if gap < -tol {
+        let depth = *depth.get_or_insert_with(|| depth_in_block(d, b, c));
+        if depth.is_none_or(|depth| -(gap + r) > depth + 1e-9 * len) {
+            return None;
+        }
+    }
+    // One of the node's edges must face the edge: a node of a flat surface beside the end of
+    // an edge at right angles to it (a base node ahead of a sliding block's front face) is
+    // no contact, or the block would snag on it.
+    let facing = n
+        .own
+        .iter()
+        .map(|o| normal[0] * o[0] + normal[1] * o[1])
+        .fold(1.0, f64::min);
+    if facing > -MIN_FACING {
+        return None;
+    }
+    let touch = Touch {
+        point: q,
+        normal,
+        gap,
+        face: false,
+    };
+    Some(Candidate {
+        beyond,
+        dist: gap.abs(),
+        facing,
+        eps: 1e-9 * len,
+        found: Found::single(n.id, eb, xi, touch, false),
+    })
+}
+
+/// The second edge of block `b` a node meets at a corner of b, beside the edge of its nearest
+/// contact `f`: the edge sharing f's nearer end, if the node is within the tolerance of it too,
+/// the two edges turn by more than [`SAME_FACE`], and each of the node's two faces lies against
+/// one of them: its outward normal within about 25° of opposite ([`AGAINST`]) and the edge running
+/// along it, within the tolerance for as far as the shorter of the two reaches (diagonal blocks at
+/// a joint crossing face each other's edges but run along their neighbours').
+fn corner_partner(
+    d: &Detection,
+    b: usize,
+    n: &Node,
+    f: &Found,
+    depth: &mut Option<Option<f64>>,
+) -> Option<Found> {
+    let [j, k] = d.blocks.edges[f.edge as usize];
+    let other = if f.xi < 0.5 {
+        d.blocks.node_edges[j as usize][0]
+    } else {
+        d.blocks.node_edges[k as usize][1]
+    };
+    if other == NO_EDGE || n.own.len() < 2 {
+        return None;
+    }
+    let g = facing_edge(d, b, n, other, depth)?.found;
+    let (m1, m2) = (f.touch.normal, g.touch.normal);
+    let dot = |u: [f64; 2], v: [f64; 2]| u[0] * v[0] + u[1] * v[1];
+    let own = d.blocks.node_edges[n.id as usize];
+    let against = |o: usize, m: [f64; 2], e: u32| {
+        dot(n.own[o], m) < -AGAINST && runs_along(d, n.id, own[o], e)
+    };
+    let each = (against(0, m1, f.edge) && against(1, m2, g.edge))
+        || (against(1, m1, f.edge) && against(0, m2, g.edge));
+    (dot(m1, m2) < SAME_FACE && each).then_some(g)
+}
+
+/// Whether node `n`'s boundary edge `own` runs along edge `e` of another block: the point of
+/// `own` half the shorter edge's length away from n lies within the tolerance of `e`.
+fn runs_along(d: &Detection, n: u32, own: u32, e: u32) -> bool {
+    let [a, b] = d.blocks.edges[own as usize];
+    let (p, q) = (d.x[n as usize], d.x[if a == n { b } else { a } as usize]);
+    let [j, k] = d.blocks.edges[e as usize].map(|v| d.x[v as usize]);
+    let (own_len, len) = (
+        norm(q[0] - p[0], q[1] - p[1]),
+        norm(k[0] - j[0], k[1] - j[1]),
+    );
+    let s = 0.5 * own_len.min(len) / own_len;
+    let point = [p[0] + s * (q[0] - p[0]), p[1] + s * (q[1] - p[1])];
+    distance_to_edge(d, point, e) <= d.tolerance
 }
 
 /// The rounded corner of block `b` nearest to node n's rounding centre `c` (radius `r`), if the
@@ -243,7 +406,7 @@ fn corner_to_corner(d: &Detection, n: u32, c: [f64; 2], r: f64, b: usize) -> Opt
                     gap,
                     face: false,
                 };
-                (gap, (n, eb as u32, 0.0, touch, true))
+                (gap, Found::single(n, eb as u32, 0.0, touch, true))
             })
         })
         .min_by(|p, q| p.0.total_cmp(&q.0))
@@ -256,14 +419,23 @@ fn corner_to_corner(d: &Detection, n: u32, c: [f64; 2], r: f64, b: usize) -> Opt
 /// b's edges, which a long edge against a finely zoned block needs), halved again because both sides of a
 /// joint carry contacts (together they cover it once). A corner contact, whose edges both leave
 /// the other block (diagonal blocks at a joint crossing, a corner against a face), takes a quarter
-/// of its shorter edge, halved likewise. Returns the length, m, and whether it is a face contact.
-fn contact_length(d: &Detection, node: u32, edge: u32, b: usize) -> (f64, bool) {
+/// of its shorter edge, halved likewise. Of a node with two contacts at a corner of b (`partner`
+/// the other contact's edge), each takes only the node's edge that lies more squarely against its
+/// own. Returns the length, m, and whether it is a face contact.
+fn contact_length(d: &Detection, node: u32, edge: u32, partner: u32, b: usize) -> (f64, bool) {
     let [j, k] = d.blocks.edges[edge as usize];
     let near = [
         edge,
         d.blocks.node_edges[j as usize][0],
         d.blocks.node_edges[k as usize][1],
     ];
+    let dot = |u: [f64; 2], v: [f64; 2]| u[0] * v[0] + u[1] * v[1];
+    let mine = |e: u32| {
+        partner == NO_EDGE || {
+            let o = edge_normal(d, e);
+            dot(o, edge_normal(d, edge)) <= dot(o, edge_normal(d, partner))
+        }
+    };
     let (mut shared, mut shortest) = (0.0, f64::INFINITY);
     for &e in d.blocks.node_edges[node as usize]
         .iter()
@@ -272,6 +444,9 @@ fn contact_length(d: &Detection, node: u32, edge: u32, b: usize) -> (f64, bool) 
         let [p, q] = d.blocks.edges[e as usize].map(|n| d.x[n as usize]);
         let len = norm(q[0] - p[0], q[1] - p[1]);
         shortest = shortest.min(len);
+        if !mine(e) {
+            continue;
+        }
         let mid = [0.5 * (p[0] + q[0]), 0.5 * (p[1] + q[1])];
         let within = |e: u32| distance_to_edge(d, mid, e) <= d.tolerance;
         let along = near.iter().filter(|&&e| e != NO_EDGE).any(|&e| within(e))
@@ -318,13 +493,17 @@ fn edge_normals_at(d: &Detection, n: u32) -> Vec<[f64; 2]> {
     d.blocks.node_edges[n as usize]
         .iter()
         .filter(|&&e| e != NO_EDGE)
-        .map(|&e| {
-            let [a, b] = d.blocks.edges[e as usize];
-            let (p, q) = (d.x[a as usize], d.x[b as usize]);
-            let len = norm(q[0] - p[0], q[1] - p[1]);
-            [(q[1] - p[1]) / len, -(q[0] - p[0]) / len]
-        })
+        .map(|&e| edge_normal(d, e))
         .collect()
+}
+
+/// Outward unit normal of boundary edge `e` (blocks run anticlockwise: the edge's direction
+/// turned clockwise).
+fn edge_normal(d: &Detection, e: u32) -> [f64; 2] {
+    let [a, b] = d.blocks.edges[e as usize];
+    let (p, q) = (d.x[a as usize], d.x[b as usize]);
+    let len = norm(q[0] - p[0], q[1] - p[1]);
+    [(q[1] - p[1]) / len, -(q[0] - p[0]) / len]
 }
 
 /// Joint material of a contact: the joint its edge lies on, else a joint at the node, else 0.
@@ -380,11 +559,21 @@ fn detect_gridded(
         by_node[fill[n as usize] as usize] = c as u32;
         fill[n as usize] += 1;
     }
-    let persisting = |node: u32, block: u32| {
-        by_node[start[node as usize] as usize..start[node as usize + 1] as usize]
-            .iter()
-            .map(|&c| c as usize)
-            .find(|&c| previous.block[c] == block)
+    // The previous contact of the node with the block on the same edge; else, for a node's only
+    // or first contact, one on another edge (the node slid onto the next edge) that is not its
+    // partner's; the second of a corner pair is new unless its edge had one.
+    let persisting = |f: &Found, block: u32| {
+        let mine = || {
+            by_node[start[f.node as usize] as usize..start[f.node as usize + 1] as usize]
+                .iter()
+                .map(|&c| c as usize)
+                .filter(move |&c| previous.block[c] == block)
+        };
+        mine().find(|&c| previous.edge[c] == f.edge).or_else(|| {
+            (!f.second)
+                .then(|| mine().find(|&c| previous.edge[c] != f.partner))
+                .flatten()
+        })
     };
     let pairs = candidate_pairs(d.blocks, d.x, d.tolerance);
     let near = d.tolerance + d.blocks.round.iter().copied().fold(0.0, f64::max);
@@ -407,10 +596,10 @@ fn detect_gridded(
                         .into_iter()
                         .map(|f| (f, a as u32)),
                 );
-            both.filter_map(|((node, edge, xi, mut touch, corner), block_b)| {
-                let (length, face) = contact_length(d, node, edge, block_b as usize);
-                touch.face = face;
-                let state = match persisting(node, block_b) {
+            both.filter_map(|(f, block_b)| {
+                let (length, face) = contact_length(d, f.node, f.edge, f.partner, block_b as usize);
+                let touch = Touch { face, ..f.touch };
+                let state = match persisting(&f, block_b) {
                     Some(c) => previous.state[c],
                     // Blocks are detected before they touch (detection reruns whenever anything
                     // may have moved half the tolerance), so a new contact deeper than the
@@ -418,8 +607,10 @@ fn detect_gridded(
                     None if !previous.is_empty() && touch.gap < -d.tolerance => return None,
                     None => fresh(&touch),
                 };
-                let material = material_of(d, node, edge);
-                Some((node, edge, block_b, xi, length, material, corner, state))
+                let material = material_of(d, f.node, f.edge);
+                Some((
+                    f.node, f.edge, block_b, f.xi, length, material, f.corner, state,
+                ))
             })
             .collect()
         })
@@ -498,6 +689,59 @@ mod tests {
             joint_material: &[0],
             hole_material: &[],
         }
+    }
+
+    /// A wedge's apex in a notch of another block (a chevron over a diamond, nodes coinciding) and
+    /// the notch's corner against the wedge each make a contact with both edges there, each
+    /// carrying its own face: one contact would push both faces along one normal.
+    #[test]
+    fn a_wedge_in_a_notch_meets_both_faces() {
+        let x = vec![
+            [0.0, 0.0],
+            [1.0, 1.0],
+            [2.0, 0.0],
+            [1.0, 3.0],
+            [0.0, 0.0],
+            [1.0, -1.0],
+            [2.0, 0.0],
+            [1.0, 1.0],
+        ];
+        let blocks = two_quadrilaterals(EdgeKind::Joint(0));
+        let c = detect(&at(&blocks, &x), &Contacts::default(), &|_| {
+            JointState::default()
+        });
+        let quarter = 0.25 * 2f64.sqrt();
+        for (node, block, edges) in [(7, 0, [0, 1]), (1, 1, [6, 7])] {
+            let mine: Vec<usize> = (0..c.len())
+                .filter(|&i| c.node[i] == node && c.block[i] == block)
+                .collect();
+            let mut found: Vec<u32> = mine.iter().map(|&i| c.edge[i]).collect();
+            found.sort();
+            assert_eq!(found, edges, "node {node}");
+            for &i in &mine {
+                assert!((c.length[i] - quarter).abs() < 1e-12, "{}", c.length[i]);
+            }
+        }
+    }
+
+    /// A node at a corner of the other block keeps its contact, and the contact its stress, when
+    /// it moves off the corner by less than the tolerance: the top corner of the left square slides
+    /// 0.5 mm up past the end of the right square's face.
+    #[test]
+    fn a_node_just_past_a_corner_keeps_its_stress() {
+        let (blocks, mut x) = two_squares();
+        let d = at(&blocks, &x);
+        let loaded = |_: &Touch| JointState {
+            normal: -1e6,
+            ..Default::default()
+        };
+        let before = detect(&d, &Contacts::default(), &loaded);
+        let of_node_2 = |c: &Contacts| (0..c.len()).find(|&i| c.node[i] == 2 && c.block[i] == 1);
+        assert!(of_node_2(&before).is_some());
+        x[2] = [1.0, 1.0005];
+        let after = detect(&at(&blocks, &x), &before, &|_| JointState::default());
+        let i = of_node_2(&after).expect("contact kept");
+        assert_eq!((after.edge[i], after.state[i].normal), (7, -1e6));
     }
 
     /// The edge grids change nothing: the tunnel model (its non-persistent joints leave large
