@@ -174,8 +174,15 @@ type Record = (u32, u32, u32, f64, f64, u32, bool, JointState);
 /// b's apex in a notch of a) makes a contact with each, as UDEC's corner does with both edges of a
 /// concave corner: one contact would carry the stress of both faces along one normal.
 /// `grid`, when block b has one, gives the edges each node can touch (`EdgeGrid`); the edges are
-/// then taken in the same order as without it, so the contacts are the same.
-fn node_to_edge(d: &Detection, a: usize, b: usize, grid: Option<&EdgeGrid>) -> Vec<Found> {
+/// then taken in the same order as without it, so the contacts are the same. `held(node, edge)`
+/// tells whether the node had a contact on the edge before this detection.
+fn node_to_edge(
+    d: &Detection,
+    a: usize,
+    b: usize,
+    grid: Option<&EdgeGrid>,
+    held: &dyn Fn(u32, u32) -> bool,
+) -> Vec<Found> {
     let (blo, bhi) = bounds(d.blocks, d.x, b);
     let tol = d.tolerance;
     let mut found = Vec::new();
@@ -195,17 +202,20 @@ fn node_to_edge(d: &Detection, a: usize, b: usize, grid: Option<&EdgeGrid>) -> V
             own: edge_normals_at(d, n),
         };
         let mut depth = None;
-        // Nearest edge the node lies beside, else nearest it lies beyond the end of; among equally
-        // near ones (a node at a corner of B), the one facing the node.
+        // An edge the node lies beside before one it lies beyond the end of; the edge it held
+        // before, while it still lies beside it (a node pressed into b near a corner is as near
+        // the corner's other edge, and there it would be pushed the wrong way); then the nearest;
+        // among equally near ones (a node at a corner of B), the one facing the node.
         let mut best: Option<Candidate> = None;
         let (listed, all) = match grid {
             Some(g) => (g.near(node.centre), 0..0),
             None => (&[][..], d.blocks.edge_range(b)),
         };
         for eb in listed.iter().map(|&e| e as usize).chain(all) {
-            let Some(c) = facing_edge(d, b, &node, eb as u32, &mut depth) else {
+            let Some(mut c) = facing_edge(d, b, &node, eb as u32, &mut depth) else {
                 continue;
             };
+            c.held = held(n, eb as u32);
             if best.as_ref().is_none_or(|best| c.better_than(best)) {
                 best = Some(c);
             }
@@ -251,14 +261,19 @@ struct Candidate {
     facing: f64,
     /// Distances closer than this are equal, m (1e-9 of the edge's length).
     eps: f64,
+    /// Whether the node had a contact on this edge before.
+    held: bool,
     found: Found,
 }
 
 impl Candidate {
-    /// Beside before beyond, then nearer, then (equally near) more squarely faced.
+    /// Beside before beyond, held before, then nearer, then (equally near) more squarely faced.
     fn better_than(&self, other: &Candidate) -> bool {
         if self.beyond != other.beyond {
             return !self.beyond;
+        }
+        if self.held != other.held {
+            return self.held;
         }
         self.dist < other.dist - self.eps
             || (self.dist <= other.dist + self.eps && self.facing < other.facing)
@@ -329,6 +344,7 @@ fn facing_edge(
         dist: gap.abs(),
         facing,
         eps: 1e-9 * len,
+        held: false,
         found: Found::single(n.id, eb, xi, touch, false),
     })
 }
@@ -575,6 +591,11 @@ fn detect_gridded(
                 .flatten()
         })
     };
+    let held = |node: u32, edge: u32| {
+        by_node[start[node as usize] as usize..start[node as usize + 1] as usize]
+            .iter()
+            .any(|&c| previous.edge[c as usize] == edge)
+    };
     let pairs = candidate_pairs(d.blocks, d.x, d.tolerance);
     let near = d.tolerance + d.blocks.round.iter().copied().fold(0.0, f64::max);
     let grids: Vec<Option<EdgeGrid>> = (0..d.blocks.len())
@@ -588,11 +609,11 @@ fn detect_gridded(
         .par_iter()
         .map(|&(a, b)| {
             let (a, b) = (a as usize, b as usize);
-            let both = node_to_edge(d, a, b, grids[b].as_ref())
+            let both = node_to_edge(d, a, b, grids[b].as_ref(), &held)
                 .into_iter()
                 .map(|f| (f, b as u32))
                 .chain(
-                    node_to_edge(d, b, a, grids[a].as_ref())
+                    node_to_edge(d, b, a, grids[a].as_ref(), &held)
                         .into_iter()
                         .map(|f| (f, a as u32)),
                 );
@@ -742,6 +763,38 @@ mod tests {
         let after = detect(&at(&blocks, &x), &before, &|_| JointState::default());
         let i = of_node_2(&after).expect("contact kept");
         assert_eq!((after.edge[i], after.state[i].normal), (7, -1e6));
+    }
+
+    /// A wedge's tip pressed into the block across its joint, near that block's corner on a free
+    /// face at a shallow angle to the joint (18°), stays on the joint: the free face is nearer and
+    /// faced too, and choosing it would push the tip along the free face's normal, out of the
+    /// model (a realization of the tunnel model ran away so).
+    #[test]
+    fn a_pressed_wedge_tip_keeps_its_joint() {
+        let mut x = vec![
+            [0.0, 0.0],
+            [0.0, -3.0],
+            [0.5, -3.0],
+            [1.0, -3.0],
+            [0.0, 0.0],
+            [1.0, -3.0],
+            [3.0, -3.0],
+            [0.0, 3.0],
+        ];
+        let blocks = two_quadrilaterals(EdgeKind::Joint(0));
+        let fresh = |_: &Touch| JointState::default();
+        let tip = |c: &Contacts| {
+            let i = (0..c.len()).find(|&i| c.node[i] == 0 && c.block[i] == 1);
+            c.edge[i.expect("tip contact")]
+        };
+        let before = detect(&at(&blocks, &x), &Contacts::default(), &fresh);
+        assert_eq!(tip(&before), 4);
+        x[0] = [0.0007, 0.0002];
+        assert_eq!(
+            tip(&detect(&at(&blocks, &x), &Contacts::default(), &fresh)),
+            7
+        );
+        assert_eq!(tip(&detect(&at(&blocks, &x), &before, &fresh)), 4);
     }
 
     /// The edge grids change nothing: the tunnel model (its non-persistent joints leave large
