@@ -175,13 +175,15 @@ type Record = (u32, u32, u32, f64, f64, u32, bool, JointState);
 /// concave corner: one contact would carry the stress of both faces along one normal.
 /// `grid`, when block b has one, gives the edges each node can touch (`EdgeGrid`); the edges are
 /// then taken in the same order as without it, so the contacts are the same. `held(node, edge)`
-/// tells whether the node had a contact on the edge before this detection.
+/// and `touched(node, block)` tell whether the node had a contact on the edge, with the block,
+/// before this detection.
 fn node_to_edge(
     d: &Detection,
     a: usize,
     b: usize,
     grid: Option<&EdgeGrid>,
     held: &dyn Fn(u32, u32) -> bool,
+    touched: &dyn Fn(u32, u32) -> bool,
 ) -> Vec<Found> {
     let (blo, bhi) = bounds(d.blocks, d.x, b);
     let tol = d.tolerance;
@@ -200,6 +202,7 @@ fn node_to_edge(
             centre: rounding::centre(d.blocks, &at, n, r),
             radius: r,
             own: edge_normals_at(d, n),
+            past_ends: r == 0.0 && touched(n, b as u32),
         };
         let mut depth = None;
         // An edge the node lies beside before one it lies beyond the end of; the edge it held
@@ -242,13 +245,15 @@ fn node_to_edge(
     found
 }
 
-/// A node looking for edges: its id, rounding centre (m) and radius (m), and the outward normals
-/// of its own edges.
+/// A node looking for edges: its id, rounding centre (m) and radius (m), the outward normals of
+/// its own edges, and whether it reaches past the ends of edges (a sharp node that touched the
+/// block before).
 struct Node {
     id: u32,
     centre: [f64; 2],
     radius: f64,
     own: Vec<[f64; 2]>,
+    past_ends: bool,
 }
 
 /// An edge a node may touch.
@@ -295,11 +300,12 @@ fn facing_edge(
     let (pj, pk) = (d.x[j as usize], d.x[k as usize]);
     let t = [pk[0] - pj[0], pk[1] - pj[1]];
     let len = norm(t[0], t[1]);
-    // A node up to the tolerance beyond an end of the edge still meets it, when it meets no edge
-    // it lies beside: a node at a corner of b (where joints end or cross, nodes of both sides
-    // coincide) otherwise loses its contact, and with it its stress, as soon as it moves off the
-    // corner; as with UDEC's rounded corners, a face ends in the tolerance's reach.
-    let slack = tol / len;
+    // A sharp node that touched b before still meets an edge it lies up to the tolerance beyond
+    // the end of, when it meets no edge it lies beside: a node at a corner of b (where joints end
+    // or cross, nodes of both sides coincide) otherwise loses its contact, and with it its stress,
+    // as soon as it moves off the corner; as with UDEC's rounded corners, a face ends in the
+    // tolerance's reach. A rounded node has its own reach past corners (`corner_to_corner`).
+    let slack = if n.past_ends { tol / len } else { 1e-9 };
     let xi = ((c[0] - pj[0]) * t[0] + (c[1] - pj[1]) * t[1]) / (len * len);
     if !(-slack..=1.0 + slack).contains(&xi) {
         return None;
@@ -596,6 +602,11 @@ fn detect_gridded(
             .iter()
             .any(|&c| previous.edge[c as usize] == edge)
     };
+    let touched = |node: u32, block: u32| {
+        by_node[start[node as usize] as usize..start[node as usize + 1] as usize]
+            .iter()
+            .any(|&c| previous.block[c as usize] == block)
+    };
     let pairs = candidate_pairs(d.blocks, d.x, d.tolerance);
     let near = d.tolerance + d.blocks.round.iter().copied().fold(0.0, f64::max);
     let grids: Vec<Option<EdgeGrid>> = (0..d.blocks.len())
@@ -609,11 +620,11 @@ fn detect_gridded(
         .par_iter()
         .map(|&(a, b)| {
             let (a, b) = (a as usize, b as usize);
-            let both = node_to_edge(d, a, b, grids[b].as_ref(), &held)
+            let both = node_to_edge(d, a, b, grids[b].as_ref(), &held, &touched)
                 .into_iter()
                 .map(|f| (f, b as u32))
                 .chain(
-                    node_to_edge(d, b, a, grids[a].as_ref(), &held)
+                    node_to_edge(d, b, a, grids[a].as_ref(), &held, &touched)
                         .into_iter()
                         .map(|f| (f, a as u32)),
                 );
