@@ -64,6 +64,11 @@ fn norm(x: f64, y: f64) -> f64 {
     (x * x + y * y).sqrt()
 }
 
+/// Dot product of two plane vectors.
+fn dot(u: [f64; 2], v: [f64; 2]) -> f64 {
+    u[0] * v[0] + u[1] * v[1]
+}
+
 /// Bounding box of block b over its boundary nodes, m.
 fn bounds(blocks: &Blocks, x: &[[f64; 2]], b: usize) -> ([f64; 2], [f64; 2]) {
     let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
@@ -331,11 +336,7 @@ fn facing_edge(
     // One of the node's edges must face the edge: a node of a flat surface beside the end of
     // an edge at right angles to it (a base node ahead of a sliding block's front face) is
     // no contact, or the block would snag on it.
-    let facing = n
-        .own
-        .iter()
-        .map(|o| normal[0] * o[0] + normal[1] * o[1])
-        .fold(1.0, f64::min);
+    let facing = n.own.iter().map(|&o| dot(normal, o)).fold(1.0, f64::min);
     if facing > -MIN_FACING {
         return None;
     }
@@ -379,7 +380,6 @@ fn corner_partner(
     }
     let g = facing_edge(d, b, n, other, depth)?.found;
     let (m1, m2) = (f.touch.normal, g.touch.normal);
-    let dot = |u: [f64; 2], v: [f64; 2]| u[0] * v[0] + u[1] * v[1];
     let own = d.blocks.node_edges[n.id as usize];
     let against = |o: usize, m: [f64; 2], e: u32| {
         dot(n.own[o], m) < -AGAINST && runs_along(d, n.id, own[o], e)
@@ -451,12 +451,12 @@ fn contact_length(d: &Detection, node: u32, edge: u32, partner: u32, b: usize) -
         d.blocks.node_edges[j as usize][0],
         d.blocks.node_edges[k as usize][1],
     ];
-    let dot = |u: [f64; 2], v: [f64; 2]| u[0] * v[0] + u[1] * v[1];
+    let normals = (partner != NO_EDGE).then(|| (edge_normal(d, edge), edge_normal(d, partner)));
     let mine = |e: u32| {
-        partner == NO_EDGE || {
+        normals.is_none_or(|(this, other)| {
             let o = edge_normal(d, e);
-            dot(o, edge_normal(d, edge)) <= dot(o, edge_normal(d, partner))
-        }
+            dot(o, this) <= dot(o, other)
+        })
     };
     let (mut shared, mut shortest) = (0.0, f64::INFINITY);
     for &e in d.blocks.node_edges[node as usize]
@@ -584,29 +584,21 @@ fn detect_gridded(
     // The previous contact of the node with the block on the same edge; else, for a node's only
     // or first contact, one on another edge (the node slid onto the next edge) that is not its
     // partner's; the second of a corner pair is new unless its edge had one.
+    let previous_of = |node: u32| {
+        by_node[start[node as usize] as usize..start[node as usize + 1] as usize]
+            .iter()
+            .map(|&c| c as usize)
+    };
     let persisting = |f: &Found, block: u32| {
-        let mine = || {
-            by_node[start[f.node as usize] as usize..start[f.node as usize + 1] as usize]
-                .iter()
-                .map(|&c| c as usize)
-                .filter(move |&c| previous.block[c] == block)
-        };
+        let mine = || previous_of(f.node).filter(move |&c| previous.block[c] == block);
         mine().find(|&c| previous.edge[c] == f.edge).or_else(|| {
             (!f.second)
                 .then(|| mine().find(|&c| previous.edge[c] != f.partner))
                 .flatten()
         })
     };
-    let held = |node: u32, edge: u32| {
-        by_node[start[node as usize] as usize..start[node as usize + 1] as usize]
-            .iter()
-            .any(|&c| previous.edge[c as usize] == edge)
-    };
-    let touched = |node: u32, block: u32| {
-        by_node[start[node as usize] as usize..start[node as usize + 1] as usize]
-            .iter()
-            .any(|&c| previous.block[c as usize] == block)
-    };
+    let held = |node: u32, edge: u32| previous_of(node).any(|c| previous.edge[c] == edge);
+    let touched = |node: u32, block: u32| previous_of(node).any(|c| previous.block[c] == block);
     let pairs = candidate_pairs(d.blocks, d.x, d.tolerance);
     let near = d.tolerance + d.blocks.round.iter().copied().fold(0.0, f64::max);
     let grids: Vec<Option<EdgeGrid>> = (0..d.blocks.len())
