@@ -95,6 +95,17 @@ fn huge_counts_are_refused_naming_the_field() {
     let mut kirsch = model("kirsch");
     kirsch["excavations"][0]["circle"]["segments"] = json!(100_000_000);
     refused(&kirsch, "excavations[0].circle.segments");
+    // A region traced from a terrain model may have 200 000 vertices, not more.
+    let mut terrain = model("kirsch");
+    let ring: Vec<[f64; 2]> = (0..200_001)
+        .map(|k| {
+            let t = std::f64::consts::TAU * k as f64 / 200_001.0;
+            [40.0 * t.cos(), 40.0 * t.sin()]
+        })
+        .collect();
+    terrain["region"] = json!({ "polygon": ring, "material": "rock" });
+    let err = refused(&terrain, "region.polygon");
+    assert!(err.contains("limit of 200000"), "{err}");
 }
 
 #[test]

@@ -11,6 +11,7 @@ use crate::domain::Domain;
 use crate::error::MeshError;
 use crate::geometry::{Point, Polygon, distance, segment_distance};
 use crate::joints::{EdgeKind, Segment};
+use crate::polygon_index::PolygonIndex;
 use crate::segment_grid::SegmentGrid;
 
 /// One block: an outer ring (counter-clockwise) and holes (clockwise), each edge with its kind.
@@ -164,13 +165,12 @@ pub fn cut_blocks_filled(
     joints: &[Segment],
     tol: f64,
 ) -> Result<Blocking, MeshError> {
-    let open = |p: Point| {
-        domain
-            .holes
-            .iter()
-            .zip(filled)
-            .any(|(h, &f)| !f && h.polygon.contains(p))
-    };
+    let holes: Vec<PolygonIndex> = domain
+        .holes
+        .iter()
+        .map(|h| PolygonIndex::new(&h.polygon, 0.0))
+        .collect();
+    let open = |p: Point| holes.iter().zip(filled).any(|(h, &f)| !f && h.contains(p));
     let mut segs: Vec<Segment> = Vec::new();
     for i in 0..domain.outer.len() {
         let (a, b) = domain.outer.edge(i);
@@ -264,38 +264,47 @@ pub fn cut_blocks_filled(
         !matches!(k, EdgeKind::Joint(_)) || !along_wall(pts[u as usize], pts[v as usize])
     });
 
-    // Prune free joint ends until every vertex has degree ≥ 2.
+    // Prune free joint ends until every vertex has degree ≥ 2: from each vertex of degree 1, along
+    // its one edge, and on from the other end if that is left with one.
     let mut degree = vec![0u32; pts.len()];
+    let mut incident: Vec<Vec<(u32, u32)>> = vec![Vec::new(); pts.len()];
     for &(u, v) in edges.keys() {
-        degree[u as usize] += 1;
-        degree[v as usize] += 1;
-    }
-    let mut absorbed = 0.0;
-    loop {
-        let dangling: Vec<(u32, u32)> = edges
-            .keys()
-            .copied()
-            .filter(|&(u, v)| degree[u as usize] < 2 || degree[v as usize] < 2)
-            .collect();
-        if dangling.is_empty() {
-            break;
+        for w in [u, v] {
+            degree[w as usize] += 1;
+            incident[w as usize].push((u, v));
         }
-        for key in dangling {
-            if let Some(kind) = edges.remove(&key) {
-                if !matches!(kind, EdgeKind::Joint(_)) {
-                    return Err(MeshError::Triangulation(format!(
-                        "a {kind} edge has a free end at ({}, {}); the region or an excavation is not closed",
-                        pts[key.0 as usize][0], pts[key.0 as usize][1]
-                    )));
-                }
-                // Only pieces inside the rock count: traces beyond the region are just cut off.
-                let (a, b) = (pts[key.0 as usize], pts[key.1 as usize]);
-                let mid = [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])];
-                if domain.outer.contains(mid) && !open(mid) {
-                    absorbed += distance(a, b);
-                }
-                degree[key.0 as usize] -= 1;
-                degree[key.1 as usize] -= 1;
+    }
+    let outer = PolygonIndex::new(&domain.outer, 0.0);
+    let mut absorbed = 0.0;
+    let mut free: Vec<u32> = (0..pts.len() as u32)
+        .filter(|&v| degree[v as usize] == 1)
+        .collect();
+    free.reverse();
+    while let Some(end) = free.pop() {
+        let Some(key) = incident[end as usize]
+            .iter()
+            .copied()
+            .find(|k| edges.contains_key(k))
+        else {
+            continue;
+        };
+        let kind = edges.remove(&key).expect("found above");
+        if !matches!(kind, EdgeKind::Joint(_)) {
+            return Err(MeshError::Triangulation(format!(
+                "a {kind} edge has a free end at ({}, {}); the region or an excavation is not closed",
+                pts[end as usize][0], pts[end as usize][1]
+            )));
+        }
+        // Only pieces inside the rock count: traces beyond the region are just cut off.
+        let (a, b) = (pts[key.0 as usize], pts[key.1 as usize]);
+        let mid = [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])];
+        if outer.contains(mid) && !open(mid) {
+            absorbed += distance(a, b);
+        }
+        for w in [key.0, key.1] {
+            degree[w as usize] -= 1;
+            if degree[w as usize] == 1 {
+                free.push(w);
             }
         }
     }
@@ -405,7 +414,8 @@ fn assemble_blocks(
     absorbed_joint_length: f64,
 ) -> Result<Blocking, MeshError> {
     let polygon = |c: &Cycle| Polygon::new(c.verts.iter().map(|&v| pts[v as usize]).collect());
-    let inside_material = |p: Point| domain.outer.contains(p) && !open(p);
+    let outer = PolygonIndex::new(&domain.outer, 0.0);
+    let inside_material = |p: Point| outer.contains(p) && !open(p);
     let mut blocks: Vec<Block> = Vec::new();
     let mut floating = Vec::new();
     for c in &cycles {
@@ -438,26 +448,43 @@ fn assemble_blocks(
         }
     }
     // A floating component has a vertex strictly inside its host's outer ring; the region's own
-    // outer cycle is inside no block.
+    // outer cycle is inside no block. A host's box holds the component's box, which leaves few
+    // blocks to ask, each through an index of its outer ring built once.
+    let boxes: Vec<(Point, Point)> = blocks.iter().map(|b| b.outer.bounds()).collect();
+    let mut indexes: HashMap<usize, PolygonIndex> = HashMap::new();
+    let mut holes_of: Vec<(usize, &Cycle)> = Vec::new();
     for c in floating {
-        let strictly_inside = |b: usize| {
-            c.verts.iter().any(|&v| {
-                let p = pts[v as usize];
-                blocks[b].outer.contains(p) && blocks[b].outer.boundary_distance(p) > tol
-            })
-        };
-        let host = (0..blocks.len())
-            .filter(|&b| strictly_inside(b))
-            .min_by(|&x, &y| {
-                blocks[x]
-                    .outer
-                    .signed_area()
-                    .total_cmp(&blocks[y].outer.signed_area())
-            });
-        if let Some(b) = host {
-            blocks[b].holes.push(polygon(c));
-            blocks[b].hole_kinds.push(c.kinds.clone());
+        let hole = polygon(c);
+        let (lo, hi) = hole.bounds();
+        let mut host: Option<usize> = None;
+        for b in 0..blocks.len() {
+            let (blo, bhi) = boxes[b];
+            let holds = (0..2).all(|k| blo[k] - tol <= lo[k] && hi[k] <= bhi[k] + tol);
+            if !holds
+                || host
+                    .is_some_and(|h| blocks[h].outer.signed_area() <= blocks[b].outer.signed_area())
+            {
+                continue;
+            }
+            let index = indexes
+                .entry(b)
+                .or_insert_with(|| PolygonIndex::new(&blocks[b].outer, tol));
+            let strictly_inside = hole
+                .vertices
+                .iter()
+                .any(|&p| !index.near_boundary(p) && index.contains(p));
+            if strictly_inside {
+                host = Some(b);
+            }
         }
+        if let Some(b) = host {
+            holes_of.push((b, c));
+        }
+    }
+    drop(indexes);
+    for (b, c) in holes_of {
+        blocks[b].holes.push(polygon(c));
+        blocks[b].hole_kinds.push(c.kinds.clone());
     }
     let region_area = domain.outer.signed_area();
     let slivers = blocks

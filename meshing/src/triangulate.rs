@@ -17,8 +17,9 @@ use crate::domain::Domain;
 use crate::error::MeshError;
 use crate::geometry::Polygon;
 use crate::geometry::{Point, distance, segment_distance, segments_intersect};
-use crate::joints::EdgeKind;
+use crate::joints::{EdgeKind, Segment};
 use crate::pinch::split_pinches;
+use crate::segment_grid::SegmentGrid;
 
 /// Zoning controls. Lengths in metres.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -565,23 +566,31 @@ fn label_boundary(
     let on = |a: Point, b: Point, p: Point, q: Point| {
         segment_distance(a, p, q) <= tol && segment_distance(b, p, q) <= tol
     };
-    let rings: Vec<(&Polygon, &Vec<EdgeKind>)> =
-        std::iter::once((&block.outer, &block.outer_kinds))
-            .chain(block.holes.iter().zip(&block.hole_kinds))
-            .collect();
+    // The block's ring edges in ring order, found through a grid by each boundary edge's middle.
+    let ring_edges: Vec<Segment> = std::iter::once((&block.outer, &block.outer_kinds))
+        .chain(block.holes.iter().zip(&block.hole_kinds))
+        .flat_map(|(ring, kinds)| {
+            (0..ring.len()).map(|i| {
+                let (a, b) = ring.edge(i);
+                Segment {
+                    a,
+                    b,
+                    kind: kinds[i],
+                }
+            })
+        })
+        .collect();
+    let grid = SegmentGrid::new(&ring_edges, tol);
     let mut edges: Vec<BoundaryEdge> = Vec::new();
     for &(n, nodes) in count.values() {
         if n != 1 {
             continue;
         }
         let (a, b) = (points[nodes[0] as usize], points[nodes[1] as usize]);
-        let kind = rings.iter().find_map(|(ring, kinds)| {
-            (0..ring.len())
-                .find(|&i| {
-                    let (p, q) = ring.edge(i);
-                    on(a, b, p, q)
-                })
-                .map(|i| kinds[i])
+        let middle = [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])];
+        let kind = grid.at(middle).iter().find_map(|&e| {
+            let e = &ring_edges[e as usize];
+            on(a, b, e.a, e.b).then_some(e.kind)
         });
         let Some(kind) = kind else {
             return Err(MeshError::Triangulation(format!(

@@ -18,6 +18,41 @@ pub fn edge_in_part(domain: &Domain, kind: EdgeKind, name: &str) -> bool {
     }
 }
 
+/// The boundary nodes of each part a condition may name (`Scene::part_names`), ascending, in one
+/// pass over the boundary edges: the parts of an edge are `outer` and its region edge's name, or
+/// its excavation's name.
+pub fn part_nodes(
+    scene: &Scene,
+    domain: &Domain,
+    boundary: &[BoundaryEdge],
+) -> BTreeMap<String, Vec<u32>> {
+    let mut parts: BTreeMap<String, Vec<u32>> = scene
+        .part_names()
+        .into_iter()
+        .map(|name| (name, Vec::new()))
+        .collect();
+    let mut add = |name: &str, nodes: [u32; 2]| {
+        if let Some(list) = parts.get_mut(name) {
+            list.extend(nodes);
+        }
+    };
+    for e in boundary {
+        match e.kind {
+            EdgeKind::Region(i) => {
+                add("outer", e.nodes);
+                add(&domain.outer_edge_names[i as usize], e.nodes);
+            }
+            EdgeKind::Excavation(j) => add(&domain.holes[j as usize].name, e.nodes),
+            EdgeKind::Joint(_) => {}
+        }
+    }
+    for list in parts.values_mut() {
+        list.sort_unstable();
+        list.dedup();
+    }
+    parts
+}
+
 /// Fixity flags and consistent nodal loads (N/m) of the boundary conditions `conditions` alone, on
 /// nodes at `pos`, as `build` applies them.
 pub fn boundary_effect(

@@ -16,6 +16,7 @@ use std::collections::BTreeMap;
 
 use adit_meshing::{BoundaryEdge, Domain, EdgeKind, MeshStats};
 
+use boundary::part_nodes;
 pub use boundary::{add_tractions, boundary_effect, edge_in_part};
 pub use geometry::{Meshed, NOT_FILL, domain, joint_segments, mesh, zoning};
 
@@ -286,17 +287,7 @@ pub fn build_meshed(scene: &Scene, meshed: Meshed) -> anyhow::Result<Built> {
     add_zone_weight(&mut nodes, &zones, &laws, scene.gravity);
 
     let domain = &meshed.domain;
-    let mut part_nodes = BTreeMap::new();
-    for name in scene.part_names() {
-        let mut list: Vec<u32> = boundary
-            .iter()
-            .filter(|e| edge_in_part(domain, e.kind, &name))
-            .flat_map(|e| e.nodes)
-            .collect();
-        list.sort_unstable();
-        list.dedup();
-        part_nodes.insert(name, list);
-    }
+    let part_nodes = part_nodes(scene, domain, &boundary);
     let effect = |conditions: &[BoundaryCondition], pos: &[[f64; 2]]| {
         boundary_effect(conditions, scene, &boundary, domain, &part_nodes, pos)
     };

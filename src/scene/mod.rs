@@ -14,7 +14,9 @@ use std::path::Path;
 
 use serde::Deserialize;
 
-pub use limits::{MAX_BOLT_SEGMENTS, MAX_BOLTS, MAX_GRAINS, MAX_JOINTS, MAX_POLYGON_VERTICES};
+pub use limits::{
+    MAX_BOLT_SEGMENTS, MAX_BOLTS, MAX_GRAINS, MAX_JOINTS, MAX_POLYGON_VERTICES, MAX_REGION_VERTICES,
+};
 pub use realization::Scatter;
 pub use supports::{BoltLine, BoltPattern, BoltSpec, LinerSpec};
 pub use validate::SceneError;

@@ -2,6 +2,8 @@
 //! and a CSV column, and the names a boundary condition can mean (boundary parts, excavations,
 //! inclusions) unique among themselves.
 
+use std::collections::HashMap;
+
 use super::Scene;
 use super::validate::{SceneError, invalid};
 
@@ -57,7 +59,10 @@ impl Scene {
         for name in self.joint_materials.keys() {
             check_name(&format!("joint_materials.{}", shown(name)), name)?;
         }
-        let mut parts: Vec<(String, &str)> = vec![("the whole outer boundary".into(), "outer")];
+        // Each part name and the field that first gave it; region edges may share a name (that
+        // groups them into one part), nothing else may.
+        let mut parts: HashMap<&str, String> =
+            HashMap::from([("outer", "the whole outer boundary".to_string())]);
         let edges = self.region.edge_names.iter().flatten().enumerate();
         let named = edges
             .map(|(i, n)| (format!("region.edge_names[{i}]"), n.as_str()))
@@ -75,21 +80,22 @@ impl Scene {
             );
         for (path, name) in named {
             check_name(&path, name)?;
-            // Region edges may share a name: that groups them into one part.
             let edge = path.starts_with("region.");
-            if let Some((first, _)) = parts
-                .iter()
-                .find(|(p, n)| *n == name && !(edge && p.starts_with("region.")))
-            {
-                return Err(invalid(
-                    path,
-                    format!(
-                        "'{name}' already names {first}: boundary parts, excavations and \
-                         inclusions share one namespace"
-                    ),
-                ));
+            match parts.get(name) {
+                Some(first) if !(edge && first.starts_with("region.")) => {
+                    return Err(invalid(
+                        path,
+                        format!(
+                            "'{name}' already names {first}: boundary parts, excavations and \
+                             inclusions share one namespace"
+                        ),
+                    ));
+                }
+                Some(_) => {}
+                None => {
+                    parts.insert(name, path);
+                }
             }
-            parts.push((path, name));
         }
         for (i, st) in self.stages.iter().enumerate() {
             check_name(&format!("stages[{i}].name"), &st.name)?;

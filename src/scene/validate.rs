@@ -578,12 +578,15 @@ impl Scene {
         Ok(())
     }
 
-    /// Names a boundary condition may use in `part`.
+    /// Names a boundary condition may use in `part`, each once (region edges sharing a name are
+    /// one part), in scene order.
     pub fn part_names(&self) -> Vec<String> {
-        let mut names = vec!["outer".to_string()];
-        names.extend(self.edge_names());
-        names.extend(self.excavations.iter().map(|e| e.name.clone()));
-        names
+        let mut seen = std::collections::HashSet::new();
+        std::iter::once("outer".to_string())
+            .chain(self.edge_names())
+            .chain(self.excavations.iter().map(|e| e.name.clone()))
+            .filter(|n| seen.insert(n.clone()))
+            .collect()
     }
 
     /// Edge names of the region polygon (given, or `edge0`, `edge1`, …).

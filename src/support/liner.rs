@@ -125,10 +125,8 @@ impl Liners {
             if self.group[i as usize] != g {
                 continue;
             }
-            self.link_stiffness[l] = (0..self.element.len())
-                .filter(|&e| self.element[e].contains(&i))
-                .map(|e| 2.0 * p.axial_stiffness / self.element_length[e])
-                .fold(0.0, f64::max);
+            // The stiffest element at the node is its shortest (∞ where none: no stiffness).
+            self.link_stiffness[l] = 2.0 * p.axial_stiffness / self.node_length[i as usize];
         }
     }
 

@@ -28,6 +28,7 @@ pub mod render;
 pub mod report;
 pub mod rotation;
 pub mod salencon;
+pub mod scale;
 pub mod scaling;
 pub mod slivers;
 pub mod softening;

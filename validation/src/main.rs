@@ -12,7 +12,7 @@ use adit_validation::report::{CaseReport, StepInfo, fitted_order, observed_order
 use adit_validation::{
     corners, direct_shear, drop, glued, grains, gravity, impact, incline, inclusion,
     incompressible, lined, modes, patch, pullout, random_scenes, rayleigh, readme, realizations,
-    rotation, salencon, scaling, slivers, softening, stiff_joints, unstable,
+    rotation, salencon, scale, scaling, slivers, softening, stiff_joints, unstable,
 };
 use plotters::style::RGBColor;
 
@@ -215,6 +215,40 @@ fn realizations_section(
         );
     }
     Ok(())
+}
+
+/// Builds at scale (issue 14): a terrain region of 20 000 and 100 000 vertices and the tunnel with
+/// about 10 000 joint traces, with their build times and whether their zones tile the rock.
+fn scale_section(md: &mut String, rows: &[scale::Row]) {
+    let _ = writeln!(md, "\n## Builds at scale (issue 14)\n");
+    let _ = writeln!(
+        md,
+        "Each scene cut, meshed and given its blocks and contacts (`adit::build::build`, one run, wall \
+         seconds). The terrain region (`validation/src/scale.rs`) is a 5 km slope section whose ground \
+         surface has the given number of vertices, with a 6 m horseshoe tunnel 300 m down; jointed, it \
+         has two sets 20 m apart in traces of 80 m. The cutter pairs segments, the polygon checks find \
+         crossings and the mesher labels boundary edges through grids, and containment tests on a large \
+         polygon go through an index of its edges in strips: before, the 20 000-vertex region took 17 s \
+         and the 100 000-vertex one 8.4 min. Tiling: zoned area over the rock's area (the region less the \
+         excavations open from the start).\n"
+    );
+    let _ = writeln!(
+        md,
+        "| scene | region vertices | joint traces | blocks | zones | tiling − 1 | build (s) |\n|---|---:|---:|---:|---:|---:|---:|"
+    );
+    for r in rows {
+        let _ = writeln!(
+            md,
+            "| {} | {} | {} | {} | {} | {:.1e} | {:.2} |",
+            r.what,
+            r.region_vertices,
+            r.traces,
+            r.blocks,
+            r.zones,
+            r.tiling - 1.0,
+            r.seconds
+        );
+    }
 }
 
 /// The tunnel model's section: its cost, its stages and what its supports carry.
@@ -786,6 +820,7 @@ fn main() -> anyhow::Result<()> {
         .last()
         .and_then(|s| s.closure.values().next().copied())
         .unwrap_or(f64::NAN);
+    let scale_rows = scale::rows()?;
     let realizations_built = realizations::build_all(REALIZATIONS)?;
     let realizations_ran = realizations::run_all(
         REALIZATIONS_RUN,
@@ -1110,6 +1145,7 @@ fn main() -> anyhow::Result<()> {
         &tunnel,
         &root,
     )?;
+    scale_section(&mut md, &scale_rows);
     let _ = writeln!(md, "\n## Stability: near-incompressible rock (issue 5)\n");
     let _ = writeln!(
         md,
