@@ -64,6 +64,19 @@ pub struct Blocking {
     /// Blocks smaller than `1e-6` of the region's area or thinner than the tolerance
     /// (area / longest edge), by index: kept, but worth a warning.
     pub slivers: Vec<usize>,
+    /// The vertices the cutter moved onto another within the tolerance.
+    pub merges: Merges,
+}
+
+/// Vertices merged into another one within the tolerance by more than a thousandth of it (a
+/// crossing computed twice, from each of its segments, moves by round-off only and is not
+/// counted): joint ends snapped onto a joint or a wall, crossings onto a corner.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Merges {
+    pub count: usize,
+    /// The largest move, m, and where it went.
+    pub largest: f64,
+    pub at: Point,
 }
 
 /// Merges points closer than the tolerance (uniform hash grid). A point merges into the nearest
@@ -77,6 +90,7 @@ struct VertexPool {
     wall: Vec<bool>,
     grid: HashMap<(i64, i64), Vec<u32>>,
     tol: f64,
+    merges: Merges,
 }
 
 impl VertexPool {
@@ -105,7 +119,14 @@ impl VertexPool {
                 }
             }
         }
-        if let Some((_, _, v)) = best {
+        if let Some((_, d, v)) = best {
+            if d > 1e-3 * self.tol {
+                let m = &mut self.merges;
+                m.count += 1;
+                if d > m.largest {
+                    (m.largest, m.at) = (d, self.pts[v as usize]);
+                }
+            }
             return v;
         }
         let id = self.pts.len() as u32;
@@ -199,6 +220,7 @@ pub fn cut_blocks_filled(
         wall: Vec::new(),
         grid: HashMap::new(),
         tol,
+        merges: Merges::default(),
     };
     // The region's and excavations' corners go in first, so that a crossing within the tolerance
     // of a corner merges into it and never the corner into the crossing (which would tilt the
@@ -238,7 +260,7 @@ pub fn cut_blocks_filled(
             prev = Some(v);
         }
     }
-    let pts = pool.pts;
+    let (pts, merges) = (pool.pts, pool.merges);
 
     // Merging can leave a joint piece running along a wall between two wall vertices, doubling the
     // wall's own pieces there; drop it, so that every wall keeps its exact path.
@@ -310,7 +332,8 @@ pub fn cut_blocks_filled(
     }
 
     let faces = trace_faces(&pts, &edges);
-    assemble_blocks(domain, &open, &pts, faces, tol, absorbed)
+    let blocking = assemble_blocks(domain, &open, &pts, faces, tol, absorbed)?;
+    Ok(Blocking { merges, ..blocking })
 }
 
 /// A closed cycle of the arrangement: its vertices and edge kinds, face on the left.
@@ -504,6 +527,7 @@ fn assemble_blocks(
         blocks,
         absorbed_joint_length,
         slivers,
+        merges: Merges::default(),
     })
 }
 

@@ -12,7 +12,7 @@ mod segment_grid;
 pub mod triangulate;
 pub mod voronoi;
 
-pub use blocks::{Block, Blocking, cut_blocks, cut_blocks_filled};
+pub use blocks::{Block, Blocking, Merges, cut_blocks, cut_blocks_filled};
 pub use domain::{Domain, Hole};
 pub use error::MeshError;
 pub use geometry::{Point, Polygon};

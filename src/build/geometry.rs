@@ -107,6 +107,44 @@ pub struct Meshed {
     pub inclusion: Vec<u32>,
     /// The joint pieces dropped to keep zones above `zoning.accept_angle`, in words (warnings).
     pub repairs: Vec<String>,
+    /// The blocks too thin to zone at the finest size asked for (`Thin`), whatever their mode now.
+    pub thin: Vec<Thin>,
+    /// The distance within which the cutter merged vertices, m.
+    pub merge_tolerance: f64,
+}
+
+/// A deformable block thinner than half `zoning.edge_at_excavation`, the finest zone the scene
+/// asks for: its zones must be finer still, and the time step falls with them.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Thin {
+    pub block: usize,
+    /// Its thickness 2 A / P (area over half the perimeter; the width of a long strip), m.
+    pub thickness: f64,
+}
+
+/// Thickness of `b` as a strip: 2 A / P, m.
+fn thickness(b: &Block) -> f64 {
+    let perimeter = b.outer.perimeter() + b.holes.iter().map(Polygon::perimeter).sum::<f64>();
+    2.0 * b.area() / perimeter
+}
+
+/// The deformable blocks (by `modes`) thinner than half the finest zone size; each takes
+/// `blocks.thin` as its mode.
+fn thin_blocks(
+    scene: &Scene,
+    blocks: &[Block],
+    zoning: &Zoning,
+    modes: &mut [BlockMode],
+) -> Vec<Thin> {
+    let mut thin = Vec::new();
+    for (block, b) in blocks.iter().enumerate() {
+        let thickness = thickness(b);
+        if modes[block] == BlockMode::Deformable && thickness < 0.5 * zoning.h_excavation {
+            thin.push(Thin { block, thickness });
+            modes[block] = scene.blocks.thin;
+        }
+    }
+    thin
 }
 
 impl Meshed {
@@ -307,6 +345,7 @@ fn cut_and_zone(
             blocks: vec![Block::from_domain(&domain)],
             absorbed_joint_length: 0.0,
             slivers: vec![],
+            merges: Default::default(),
         }
     } else {
         cut_blocks_filled(&domain, &filled, joints, tol)?
@@ -337,7 +376,8 @@ fn cut_and_zone(
         })
         .collect();
     let excavations: Vec<Polygon> = domain.holes.iter().map(|h| h.polygon.clone()).collect();
-    let modes = block_modes(scene, &blocking.blocks);
+    let mut modes = block_modes(scene, &blocking.blocks);
+    let thin = thin_blocks(scene, &blocking.blocks, &zoning, &mut modes);
     let meshes = blocking
         .blocks
         .par_iter()
@@ -359,6 +399,8 @@ fn cut_and_zone(
         fill,
         inclusion,
         repairs: vec![],
+        thin,
+        merge_tolerance: tol,
     })
 }
 

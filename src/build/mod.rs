@@ -48,6 +48,42 @@ pub struct Built {
     pub warnings: Vec<String>,
 }
 
+/// Most thin blocks named one by one in the warnings; the rest are counted.
+const THIN_NAMED: usize = 10;
+
+/// A warning for each block too thin to zone at the finest size asked for (the first
+/// `THIN_NAMED`, then a count), saying what became of it.
+fn thin_warnings(scene: &Scene, meshed: &Meshed) -> Vec<String> {
+    let made = match scene.blocks.thin {
+        BlockMode::Deformable => {
+            "zoned as finely as it needs (its zones may set the time step; blocks.thin: \
+             \"simple\" or \"rigid\" takes it out of the zoning)"
+        }
+        BlockMode::Simple => "made simple (blocks.thin)",
+        BlockMode::Rigid => "made rigid (blocks.thin)",
+    };
+    let mut out: Vec<String> = meshed
+        .thin
+        .iter()
+        .take(THIN_NAMED)
+        .map(|t| {
+            let c = meshed.blocking.blocks[t.block].outer.centroid();
+            format!(
+                "block {} (centroid ({:.3}, {:.3}) m) is {:.3e} m thick (2 × area / perimeter), \
+                 under half zoning.edge_at_excavation = {} m: {made}",
+                t.block, c[0], c[1], t.thickness, scene.zoning.edge_at_excavation
+            )
+        })
+        .collect();
+    if meshed.thin.len() > THIN_NAMED {
+        out.push(format!(
+            "{} more blocks are as thin, and were treated alike",
+            meshed.thin.len() - THIN_NAMED
+        ));
+    }
+    out
+}
+
 /// The wall edges of excavation `j` on the rock that stays: not the edges of its own fill (the
 /// rock that fills a staged excavation until a stage removes it), nor of any removed block.
 pub fn rock_walls<'a>(
@@ -458,13 +494,18 @@ pub fn build_meshed(scene: &Scene, meshed: Meshed) -> anyhow::Result<Built> {
     };
 
     let mut warnings = Vec::new();
-    for &b in &meshed.blocking.slivers {
+    let mut is_thin = vec![false; meshed.blocking.blocks.len()];
+    for t in &meshed.thin {
+        is_thin[t.block] = true;
+    }
+    for &b in meshed.blocking.slivers.iter().filter(|&&b| !is_thin[b]) {
         let blk = &meshed.blocking.blocks[b];
         warnings.push(format!(
             "block {b} is a sliver (area {:.3e} m²); consider coarser joints or zoning",
             blk.area()
         ));
     }
+    warnings.extend(thin_warnings(scene, &meshed));
     refuse_sharp_zones(scene, &meshed)?;
     warnings.extend(meshed.repairs.iter().cloned());
     for (b, mesh) in meshed.meshes.iter().enumerate() {
@@ -477,6 +518,15 @@ pub fn build_meshed(scene: &Scene, meshed: Meshed) -> anyhow::Result<Built> {
                 c[0], c[1], scene.zoning.min_angle, mesh.angle_limit_deg
             ));
         }
+    }
+    let merges = meshed.blocking.merges;
+    if merges.count > 0 {
+        warnings.push(format!(
+            "cutting moved {} vertices onto others within zoning.merge_tolerance = {:.4} m (joint \
+             ends onto joints or walls, crossings onto corners); the largest move, {:.4} m, onto \
+             ({:.3}, {:.3}) m",
+            merges.count, meshed.merge_tolerance, merges.largest, merges.at[0], merges.at[1]
+        ));
     }
     if meshed.blocking.absorbed_joint_length > 0.0 {
         warnings.push(format!(

@@ -97,3 +97,35 @@ fn non_persistent_joints_leave_no_area_unzoned() {
     let zoned = m.stats().area;
     assert!((zoned - 6400.0).abs() < 1e-6 * 6400.0, "{zoned}");
 }
+
+/// A joint 0.2 m from the region's edge cuts a strip thinner than half the finest zone (0.5 m):
+/// it is named in a warning and zoned by default, and `blocks.thin` makes it rigid or simple.
+#[test]
+fn a_strip_too_thin_to_zone_is_named_and_takes_blocks_thin() {
+    let strip = |thin: &str| {
+        let text = format!(
+            r#"{{ "name": "t", "materials": {{ "rock": {{ "density": 2500, "young": 1e9, "poisson": 0.2 }} }},
+                "region": {{ "polygon": [[0, 0], [10, 0], [10, 10], [0, 10]], "material": "rock" }},
+                "joint_materials": {{ "j": {{ "normal_stiffness": 1e10, "shear_stiffness": 5e9, "friction": 30 }} }},
+                "joints": [{{ "from": [9.8, -1], "to": [9.8, 11], "material": "j" }}],
+                "zoning": {{ "edge_at_excavation": 0.5, "edge_far": 2 }},
+                "blocks": {{ "thin": "{thin}" }} }}"#
+        );
+        build(&Scene::from_json(&text, "test").unwrap()).unwrap()
+    };
+    for (thin, bodies, said) in [
+        ("deformable", 0, "zoned as finely as it needs"),
+        ("rigid", 1, "made rigid (blocks.thin)"),
+        ("simple", 1, "made simple (blocks.thin)"),
+    ] {
+        let b = strip(thin);
+        let warned: Vec<&String> = b.warnings.iter().filter(|w| w.contains("thick")).collect();
+        assert_eq!(warned.len(), 1, "{:?}", b.warnings);
+        assert!(
+            warned[0].contains("1.961e-1 m thick") && warned[0].contains(said),
+            "{}",
+            warned[0]
+        );
+        assert_eq!(b.model.bodies.len(), bodies, "{thin}");
+    }
+}

@@ -417,6 +417,11 @@ pub struct BlocksSpec {
     /// Corner rounding radius of rigid and simple blocks, m (UDEC's `round`); default 1 % of their
     /// mean radius. Each corner's radius is capped so its arc spans at most a quarter of its edges.
     pub round: Option<f64>,
+    /// Mode of a deformable block too thin to zone at the size asked for there (2 A / P, its area
+    /// over half its perimeter, under half the zoning's edge length at its centroid): `simple` or
+    /// `rigid` takes it out of the zoning; by default (`deformable`) it is zoned as finely as it
+    /// needs, and a warning says so either way.
+    pub thin: BlockMode,
 }
 
 /// A block mode for the blocks of one region or the block at one point.
