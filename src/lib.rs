@@ -9,6 +9,7 @@
 pub mod build;
 pub mod contact;
 pub mod cycle;
+pub mod damping;
 pub mod interrupt;
 pub mod joint;
 pub mod law;

@@ -5,6 +5,7 @@
 use rayon::prelude::*;
 
 use super::{Cycle, CycleParams, mass_damping_factors};
+use crate::damping::local_damping;
 use crate::law::StrainIncrement;
 use crate::model::bodies::{BodyMode, DOFS, NO_BODY, apply, velocity_map};
 use crate::model::{Model, Stress};
@@ -94,8 +95,7 @@ impl Cycle {
                         q = std::array::from_fn(|d| if d < dofs { a[d] * m[d] } else { 0.0 });
                     }
                     for d in 0..dofs {
-                        let damped =
-                            q[d] - alpha * q[d].abs() * v[d].signum() * (v[d] != 0.0) as u8 as f64;
+                        let damped = local_damping(q[d], v[d], alpha);
                         v[d] = keep * v[d] + gain * damped / m[d] * dt;
                     }
                     if let Some(p) = &projector[k] {

@@ -13,6 +13,7 @@ use std::time::Instant;
 
 use rayon::prelude::*;
 
+use crate::damping::local_damping;
 use crate::law::StrainIncrement;
 use crate::model::{BODY, FIX_X, FIX_Y, Model, Stress};
 
@@ -274,8 +275,7 @@ impl Cycle {
                     if fixed & flag != 0 {
                         f[d] = 0.0;
                     } else {
-                        let fd =
-                            f[d] - alpha * f[d].abs() * v[d].signum() * (v[d] != 0.0) as u8 as f64;
+                        let fd = local_damping(f[d], v[d], alpha);
                         v[d] = keep * v[d] + gain * fd / m * dt;
                     }
                     u[d] += v[d] * dt;

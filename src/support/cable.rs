@@ -10,6 +10,8 @@
 //! u the displacements along the bolt, ℓ the node's tributary length, N0 the pretension
 //! (Itasca, UDEC *Structural Elements*, "cable elements"; St John & Van Dillen 1983).
 
+use crate::damping::local_damping;
+
 /// Properties of one bolt group, per metre of model thickness.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct CableProps {
@@ -205,7 +207,7 @@ impl Cables {
                 continue;
             }
             let (f, v) = (self.force[n], &mut self.vel[n]);
-            let fd = f - alpha * f.abs() * v.signum() * (*v != 0.0) as u8 as f64;
+            let fd = local_damping(f, *v, alpha);
             *v += fd / self.mass[n] * dt;
             self.disp[n] += *v * dt;
             fastest = fastest.max(v.abs());

@@ -12,6 +12,8 @@
 //! E = E/(1 − ν²) for a shell in plane strain (Przemieniecki, *Theory of Matrix Structural
 //! Analysis*, §4; Itasca, UDEC *Structural Elements*, "beam elements").
 
+use crate::damping::local_damping;
+
 /// Properties of one liner, per metre of model thickness.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LinerProps {
@@ -210,7 +212,7 @@ impl Liners {
             }
             for d in 0..3 {
                 let (f, v) = (self.force[n][d], &mut self.vel[n][d]);
-                let fd = f - alpha * f.abs() * v.signum() * (*v != 0.0) as u8 as f64;
+                let fd = local_damping(f, *v, alpha);
                 *v += fd / self.mass[n][d / 2] * dt;
                 self.disp[n][d] += *v * dt;
             }
