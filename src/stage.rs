@@ -8,7 +8,7 @@ use crate::build::{
     Built, NOT_FILL, add_body_weight, add_tractions, add_zone_weight, boundary_effect,
     in_situ_stress, joint_law, rock_walls, zone_law,
 };
-use crate::contact::Contacts;
+use crate::model::Contacts;
 use crate::model::{FIX_X, FIX_Y, Gather, MaterialId, Model, traction};
 use crate::scene::{BoundaryCondition, Scene, Stage};
 

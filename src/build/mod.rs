@@ -20,12 +20,12 @@ use boundary::part_nodes;
 pub use boundary::{add_tractions, boundary_effect, edge_in_part};
 pub use geometry::{Meshed, NOT_FILL, domain, joint_segments, mesh, zoning};
 
-use crate::contact::Contacts;
 use crate::contact::detect::{Detection, NO_MATERIAL, Touch, detect};
 use crate::joint::{
     ContinuouslyYielding, CoulombSlip, FAILED, Glued, JointLaw, JointState, tan_deg,
 };
 use crate::law::{Elastic, MohrCoulomb, Null, ZoneLaw};
+use crate::model::Contacts;
 use crate::model::blocks::{Blocks, NO_EDGE};
 use crate::model::{BODY, Gather, MaterialId, Model, Nodes, Zones, traction};
 use crate::scene::{

@@ -7,8 +7,9 @@ use adit_meshing::EdgeKind;
 use rayon::prelude::*;
 
 use super::edge_grid::{EdgeGrid, MIN_EDGES};
-use super::{Contacts, rounding};
+use super::rounding;
 use crate::joint::JointState;
+use crate::model::Contacts;
 use crate::model::blocks::{Blocks, NO_EDGE};
 
 /// What detection needs to know.

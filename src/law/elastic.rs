@@ -1,7 +1,6 @@
 //! Isotropic linear elasticity in plane strain.
 
-use super::{StrainIncrement, ZoneLaw};
-use crate::model::Stress;
+use super::{StrainIncrement, Stress, ZoneLaw};
 
 /// Isotropic elastic material.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -8,7 +8,8 @@ pub use elastic::Elastic;
 pub use mohr_coulomb::{MohrCoulomb, SHEAR_NOW, SHEAR_PAST, TENSION_NOW, TENSION_PAST};
 pub use null::Null;
 
-use crate::model::Stress;
+/// Zone stress, Pa, tension positive: [σxx, σyy, σzz, σxy] (σzz from plane strain).
+pub type Stress = [f64; 4];
 
 /// Strain increment of a zone over one step: [Δεxx, Δεyy, Δγxy] (engineering shear), dimensionless.
 pub type StrainIncrement = [f64; 3];

@@ -19,8 +19,7 @@
 //! table of the plastic shear strain e^ps, accumulated from each shear correction as
 //! Δe^ps = √(½[(Δε1 − Δεm)² + Δεm² + (Δε3 − Δεm)²]), Δε1 = λs, Δε3 = −λs Nψ, Δεm = (Δε1 + Δε3)/3.
 
-use super::{Elastic, StrainIncrement, ZoneLaw};
-use crate::model::Stress;
+use super::{Elastic, StrainIncrement, Stress, ZoneLaw};
 
 /// Zone state bit: yielding in shear now.
 pub const SHEAR_NOW: u8 = 1;

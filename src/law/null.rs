@@ -1,7 +1,6 @@
 //! The null law of excavated zones: no stress, no stiffness (FLAC's null model).
 
-use super::{StrainIncrement, ZoneLaw};
-use crate::model::Stress;
+use super::{StrainIncrement, Stress, ZoneLaw};
 
 /// Excavated material.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]

@@ -3,14 +3,15 @@
 
 pub mod blocks;
 pub mod bodies;
+mod contacts;
 pub mod nodes;
 mod velocity;
 pub mod zones;
 
+pub use contacts::Contacts;
 pub use nodes::{BODY, FIX_X, FIX_Y, Nodes};
 pub use zones::{Stress, Zones, traction};
 
-use crate::contact::Contacts;
 use crate::joint::JointLaw;
 use crate::law::ZoneLaw;
 use crate::support::Supports;

@@ -3,8 +3,7 @@
 
 use super::MaterialId;
 
-/// Zone stress, Pa, tension positive: [σxx, σyy, σzz, σxy] (σzz from plane strain).
-pub type Stress = [f64; 4];
+pub use crate::law::Stress;
 
 /// Structure-of-arrays zone state.
 #[derive(Debug, Clone, Default)]
