@@ -1,12 +1,11 @@
 //! adit: a 2D distinct element engine for jointed rock.
 //!
-//! A scene (`scene`) is built (`build`) into a model of structure-of-arrays state (`model`) whose
+//! A scene (`scene`) is set up (`setup`) as a model of structure-of-arrays state (`model`) whose
 //! zones follow constitutive laws (`law`); a solver (`solve`) repeats the cycle's named stages
 //! (`cycle`) to equilibrium or through time, stage after stage (`stage`), and `output` writes the
 //! results. Units are SI
 //! (m, Pa, kg, s), tension positive.
 
-pub mod build;
 pub mod contact;
 pub mod cycle;
 pub mod damping;
@@ -17,6 +16,7 @@ pub mod model;
 pub mod output;
 pub mod run;
 pub mod scene;
+pub mod setup;
 pub mod solve;
 pub mod stage;
 pub mod support;

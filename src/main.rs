@@ -5,9 +5,9 @@ use std::process::ExitCode;
 
 use std::io::Write;
 
-use adit::build::{build, build_meshed, mesh};
 use adit::output::OutputWriter;
 use adit::run::default_out_dir;
+use adit::setup::{mesh, setup, setup_meshed};
 use adit::solve::{HistoryRow, Observer, Status};
 use adit::{Scene, run_scene};
 use clap::{Parser, Subcommand};
@@ -181,7 +181,7 @@ fn check(scene_path: &Path) -> anyhow::Result<()> {
             s.zones, s.nodes, s.min_angle_deg, s.min_edge, s.max_edge, s.area
         ),
     ];
-    let mut built = build_meshed(&scene, meshed)?;
+    let mut built = setup_meshed(&scene, meshed)?;
     let cost = predicted_cost(&scene, &mut built.model)?;
     let mut out = std::io::stdout().lock();
     for line in lines.into_iter().chain([cost]) {
@@ -217,7 +217,7 @@ fn predicted_cost(scene: &Scene, model: &mut adit::model::Model) -> anyhow::Resu
 fn write_mesh(scene_path: &Path, out: Option<PathBuf>) -> anyhow::Result<()> {
     let scene = load(scene_path)?;
     let out = out.unwrap_or_else(|| default_out_dir(&scene));
-    let built = build(&scene)?;
+    let built = setup(&scene)?;
     let mut writer = OutputWriter::new(&out, &format!("{}_mesh", scene.name))?;
     writer.write_step(&built.model, 0.0)?;
     say!(

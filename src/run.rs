@@ -3,18 +3,18 @@
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-use crate::build::{Built, build};
 use crate::cycle::Cycle;
 use crate::model::Model;
 use crate::model::bodies::BodyMode;
 use crate::output::{OutputWriter, StageSummary, Summary, measured};
 use crate::scene::{Scene, Stage};
+use crate::setup::{Setup, setup};
 use crate::solve::{HistoryRow, Observer, Solution, Solver, Status};
 use crate::stage::Staging;
 
 /// The result of a run, with the model in its final state.
 pub struct RunResult {
-    pub built: Built,
+    pub built: Setup,
     pub solution: Solution,
     pub summary: Summary,
     pub out_dir: PathBuf,
@@ -95,7 +95,7 @@ fn build_solve_write(
     observer: &mut dyn Observer,
     start: Instant,
 ) -> anyhow::Result<RunResult> {
-    let mut built = build(scene)?;
+    let mut built = setup(scene)?;
     let single = [Stage {
         name: "solve".into(),
         ..Default::default()

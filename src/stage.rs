@@ -4,13 +4,13 @@
 
 use adit_meshing::BoundaryEdge;
 
-use crate::build::{
-    Built, NOT_FILL, add_body_weight, add_tractions, add_zone_weight, boundary_effect,
-    in_situ_stress, joint_law, rock_walls, zone_law,
-};
 use crate::model::Contacts;
 use crate::model::{FIX_X, FIX_Y, Gather, MaterialId, Model, traction};
 use crate::scene::{BoundaryCondition, Scene, Stage};
+use crate::setup::{
+    NOT_FILL, Setup, add_body_weight, add_tractions, add_zone_weight, boundary_effect,
+    in_situ_stress, joint_law, rock_walls, zone_law,
+};
 
 /// What the stages so far have done.
 #[derive(Debug, Clone, Default)]
@@ -46,7 +46,7 @@ impl Staging {
     /// material, change gravity and the boundary conditions, install the bolts and liners it
     /// names, set the support pressure of every excavation made so far to `support_fraction` × the
     /// in-situ traction on its walls, and reset displacements if asked.
-    pub fn apply(&mut self, stage: &Stage, scene: &Scene, built: &mut Built) {
+    pub fn apply(&mut self, stage: &Stage, scene: &Scene, built: &mut Setup) {
         for name in &stage.excavate {
             let j = scene
                 .excavations
@@ -111,9 +111,9 @@ impl Staging {
 
     /// Replace the boundary conditions in force by `list`: fixities only the old list set are
     /// released, new ones hold their components still, and the loads change by the new list's
-    /// minus the old one's. Nodes of removed rock stay held; `build` refused a change of fixity at a
+    /// minus the old one's. Nodes of removed rock stay held; `setup` refused a change of fixity at a
     /// rigid or simple block's node.
-    fn change_boundary(&mut self, list: &[BoundaryCondition], scene: &Scene, built: &mut Built) {
+    fn change_boundary(&mut self, list: &[BoundaryCondition], scene: &Scene, built: &mut Setup) {
         let effect = |conditions: &[BoundaryCondition]| {
             boundary_effect(
                 conditions,
@@ -152,7 +152,7 @@ impl Staging {
     pub fn closures(
         &self,
         scene: &Scene,
-        built: &Built,
+        built: &Setup,
     ) -> std::collections::BTreeMap<String, f64> {
         let m = &built.model;
         let mut out = std::collections::BTreeMap::new();

@@ -209,7 +209,7 @@ fn sharp_zones_are_refused_unless_a_joint_piece_makes_them() {
     let mut s = model("tunnel");
     s["zoning"]["accept_angle"] = json!(10);
     let scene = adit::Scene::from_json(&s.to_string(), "tunnel").unwrap();
-    let built = adit::build::build(&scene).unwrap();
+    let built = adit::setup::setup(&scene).unwrap();
     assert!(
         built
             .warnings
@@ -260,7 +260,7 @@ fn the_merge_tolerance_is_a_scene_field() {
     refused(&s, "joint_sets[0].spacing");
     s["zoning"]["merge_tolerance"] = json!(0.02);
     let scene = adit::Scene::from_json(&s.to_string(), "slabs").unwrap();
-    let built = adit::build::build(&scene).unwrap();
+    let built = adit::setup::setup(&scene).unwrap();
     assert_eq!(built.model.blocks.len(), 34);
 }
 

@@ -3,7 +3,7 @@
 mod common;
 
 use adit::Scene;
-use adit::build::build;
+use adit::setup::setup;
 use adit::solve::{Quiet, Solver, Status};
 
 fn column(friction: f64, mode: &str) -> Scene {
@@ -34,7 +34,7 @@ fn column_of_blocks_carries_the_weight_above_each_joint() {
 
 fn weight_above_each_joint(mode: &str) {
     let scene = column(30.0, mode);
-    let mut b = build(&scene).unwrap();
+    let mut b = setup(&scene).unwrap();
     assert_eq!(b.model.blocks.len(), 3);
     assert!(!b.model.contacts.is_empty());
     let mut solver = Solver::new(&mut b.model, &scene.solve, 0);
@@ -106,7 +106,7 @@ fn momentum_drift(
 #[test]
 fn free_collision_conserves_momentum_and_exchanges_velocities() {
     let scene = collision_scene("deformable");
-    let mut b = build(&scene).unwrap();
+    let mut b = setup(&scene).unwrap();
     assert_eq!(b.model.blocks.len(), 2);
     let left = b.model.blocks.block_of_node(
         (0..b.model.nodes.len() as u32)
@@ -152,7 +152,7 @@ fn free_collision_conserves_momentum_and_exchanges_velocities() {
 #[test]
 fn free_rigid_collision_exchanges_velocities() {
     let scene = collision_scene("rigid");
-    let mut b = build(&scene).unwrap();
+    let mut b = setup(&scene).unwrap();
     let bodies = &b.model.bodies;
     assert_eq!(bodies.len(), 2);
     let left = if bodies.centroid[0][0] < bodies.centroid[1][0] {
@@ -195,7 +195,7 @@ fn free_rigid_block_spins_without_distortion() {
         "solve": { "mode": "dynamic", "damping": 0, "max_cycles": 1000 }
     }"#;
     let scene = Scene::from_json(text, "spin").unwrap();
-    let mut b = build(&scene).unwrap();
+    let mut b = setup(&scene).unwrap();
     assert_eq!(b.model.bodies.len(), 1);
     assert_eq!(b.model.zones.len(), 0);
     let mut solver = Solver::new(&mut b.model, &scene.solve, 0);
@@ -277,7 +277,7 @@ fn confined_voronoi_grains_carry_the_confining_stress() {
         "solve": { "ratio": 1e-6 }
     }"#;
     let scene = Scene::from_json(text, "grains").unwrap();
-    let mut b = build(&scene).unwrap();
+    let mut b = setup(&scene).unwrap();
     assert!(b.model.blocks.len() > 60, "{} grains", b.model.blocks.len());
     let mut solver = Solver::new(&mut b.model, &scene.solve, 0);
     let sol = solver.solve(&mut b.model, &mut Quiet);
@@ -314,7 +314,7 @@ fn confined_voronoi_grains_carry_the_confining_stress() {
 fn fresh_contacts_found_deep_start_at_zero_overlap() {
     for (sink, deep) in [(0.5, true), (0.05, false)] {
         let scene = column(30.0, "deformable");
-        let mut b = build(&scene).unwrap();
+        let mut b = setup(&scene).unwrap();
         let m = &mut b.model;
         let tol = m.contact_tolerance;
         let top = (0..m.blocks.len())
@@ -374,7 +374,7 @@ fn column_cut_by_an_inclined_joint_holds_without_slipping() {
             y1 = 1.5 + 0.5 * t.tan()
         );
         let scene = Scene::from_json(&text, "inclined").unwrap();
-        let mut b = build(&scene).unwrap();
+        let mut b = setup(&scene).unwrap();
         let mut solver = Solver::new(&mut b.model, &scene.solve, 0);
         let sol = solver.solve(&mut b.model, &mut Quiet);
         assert_eq!(sol.status, Status::Converged, "{mode}: {:?}", sol.status);

@@ -3,8 +3,8 @@
 use std::path::Path;
 
 use adit::Scene;
-use adit::build::build;
 use adit::scene::BlockMode;
+use adit::setup::setup;
 use adit::solve::{Quiet, Solver};
 
 fn run_on(model: &str, mode: BlockMode, threads: usize) -> (Vec<[f64; 2]>, Vec<[f64; 4]>, f64) {
@@ -19,7 +19,7 @@ fn run_on(model: &str, mode: BlockMode, threads: usize) -> (Vec<[f64; 2]>, Vec<[
         .build()
         .unwrap();
     pool.install(|| {
-        let mut b = build(&s).unwrap();
+        let mut b = setup(&s).unwrap();
         let mut solver = Solver::new(&mut b.model, &s.solve, 0);
         let sol = solver.solve(&mut b.model, &mut Quiet);
         let mut stress = b.model.zones.stress;

@@ -3,7 +3,7 @@
 //! body must (dynamic amplification factor 2 for a step load).
 
 use adit::Scene;
-use adit::build::build;
+use adit::setup::setup;
 use adit::solve::{Observer, Solver, Status};
 
 const TEXT: &str = r#"{
@@ -27,7 +27,7 @@ impl Observer for MaxEnergy {
 #[test]
 fn undamped_step_load_overshoots_twice_static_and_stays_bounded() {
     let scene = Scene::from_json(TEXT, "step").unwrap();
-    let mut b = build(&scene).unwrap();
+    let mut b = setup(&scene).unwrap();
     let mut solver = Solver::new(&mut b.model, &scene.solve, 0);
     assert!(solver.params.dt > 0.0 && solver.params.dt == 0.8 * solver.step.dt_critical);
     let top: Vec<usize> = b.part_nodes["top"].iter().map(|&n| n as usize).collect();
@@ -62,7 +62,7 @@ fn undamped_step_load_overshoots_twice_static_and_stays_bounded() {
 #[test]
 fn a_step_three_times_past_the_limit_stops_with_the_node_named() {
     let scene = Scene::from_json(TEXT, "step").unwrap();
-    let mut b = build(&scene).unwrap();
+    let mut b = setup(&scene).unwrap();
     let mut solver = Solver::new(&mut b.model, &scene.solve, 0);
     solver.params.dt = 3.0 * solver.step.dt_critical;
     let sol = solver.solve(&mut b.model, &mut adit::solve::Quiet);

@@ -12,7 +12,7 @@ fn tunnel_model_builds_as_a_set_moves_in_small_steps() {
         .filter_map(|k| {
             let mut sc = base.clone();
             sc.joint_sets[0].origin[0] += -1.0 + 0.05 * k as f64;
-            adit::build::build(&sc)
+            adit::setup::setup(&sc)
                 .err()
                 .map(|e| format!("step {k}: {e}"))
         })
@@ -49,7 +49,7 @@ fn a_joint_crossing_a_wall_near_a_corner_merges_onto_the_wall() {
         set.origin = origin;
         set.trace = Some(trace);
     }
-    adit::build::build(&sc).unwrap();
+    adit::setup::setup(&sc).unwrap();
 }
 
 /// Two sets 0.1° apart around a horseshoe (a drawn scene that stopped with "zoning.accept_angle:
@@ -67,7 +67,7 @@ fn joints_meeting_at_a_tiny_angle_lose_the_piece_that_makes_a_needle() {
         { "dip": 96.1720, "spacing": 1.566017, "origin": [2.328915, -1.223305], "trace": 8.01597, "gap": 1.58997, "material": "j" }],
       "zoning": { "edge_at_excavation": 0.10710, "edge_far": 0.85677 ACCEPT } }"#;
     let repaired = Scene::from_json(&text.replace(" ACCEPT", ""), "f").unwrap();
-    let built = adit::build::build(&repaired).unwrap();
+    let built = adit::setup::setup(&repaired).unwrap();
     let drops: Vec<&String> = built
         .warnings
         .iter()
@@ -80,15 +80,15 @@ fn joints_meeting_at_a_tiny_angle_lose_the_piece_that_makes_a_needle() {
         built.mesh.min_angle_deg
     );
     let any = Scene::from_json(&text.replace(" ACCEPT", ", \"accept_angle\": 0"), "f").unwrap();
-    let built = adit::build::build(&any).unwrap();
+    let built = adit::setup::setup(&any).unwrap();
     assert!(built.warnings.iter().all(|w| !w.contains("dropped")));
     assert!(built.mesh.min_angle_deg < repaired.zoning.accept_angle);
 }
 
 mod drawn {
     use adit::Scene;
-    use adit::build::mesh;
     use adit::scene::Scatter;
+    use adit::setup::mesh;
     use adit_meshing::Polygon;
     use proptest::prelude::*;
 
@@ -224,7 +224,7 @@ fn tunnel_realizations_that_ran_away_settle_in_situ() {
             set.scatter = Some(study);
         }
         sc.realization = n;
-        let mut b = adit::build::build(&sc).unwrap();
+        let mut b = adit::setup::setup(&sc).unwrap();
         let mut solver = adit::solve::Solver::new(&mut b.model, &sc.solve, 0);
         let sol = solver.solve(&mut b.model, &mut adit::solve::Quiet);
         assert_eq!(

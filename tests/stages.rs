@@ -397,7 +397,7 @@ fn a_stage_cannot_change_the_fixity_of_a_rigid_block() {
         )
     };
     let freed = Scene::from_json(&text(r#"[{ "part": "left", "fix": "x" }]"#), "rigid").unwrap();
-    let msg = adit::build::build(&freed)
+    let msg = adit::setup::setup(&freed)
         .err()
         .expect("refused")
         .to_string();
@@ -408,7 +408,7 @@ fn a_stage_cannot_change_the_fixity_of_a_rigid_block() {
     let loaded =
         text(r#"[{ "part": "base", "fix": "xy" }, { "part": "top", "normal_stress": -1e5 }]"#);
     let sc = Scene::from_json(&loaded, "rigid").unwrap();
-    assert!(adit::build::build(&sc).is_ok());
+    assert!(adit::setup::setup(&sc).is_ok());
     let bad = text(r#"[{ "part": "nowhere", "fix": "x" }]"#);
     let msg = Scene::from_json(&bad, "rigid")
         .expect_err("refused")
@@ -466,7 +466,7 @@ fn a_stage_gives_a_region_another_material() {
         "column",
     )
     .unwrap();
-    let msg = adit::build::build(&heavy)
+    let msg = adit::setup::setup(&heavy)
         .err()
         .expect("refused")
         .to_string();

@@ -110,7 +110,7 @@ fn support_input_errors_name_the_field() {
 fn a_bolt_outside_the_rock_is_an_error() {
     let mut sc = hanging_block();
     sc.bolts[0].line.as_mut().unwrap().to = [0.0, 3.0];
-    let err = adit::build::build(&sc).err().unwrap().to_string();
+    let err = adit::setup::setup(&sc).err().unwrap().to_string();
     assert!(
         err.contains("bolts[0]") && err.contains("leaves the rock"),
         "{err}"

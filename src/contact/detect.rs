@@ -808,7 +808,7 @@ mod tests {
     fn edge_grids_find_the_same_contacts() {
         let path = concat!(env!("CARGO_MANIFEST_DIR"), "/models/tunnel.json");
         let scene = crate::Scene::load(std::path::Path::new(path)).unwrap();
-        let model = crate::build::build(&scene).unwrap().model;
+        let model = crate::setup::setup(&scene).unwrap().model;
         let x = model.nodes.current();
         let d = Detection::of(&model, &x);
         let largest = (0..model.blocks.len())

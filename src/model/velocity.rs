@@ -64,8 +64,8 @@ impl Model {
 
 #[cfg(test)]
 mod tests {
-    use crate::build::build;
     use crate::scene::Scene;
+    use crate::setup::setup;
 
     /// A rigid and a deformable block side by side take the affine field: nodes exactly, the rigid
     /// block its centroid's velocity and the field's spin.
@@ -82,7 +82,7 @@ mod tests {
                 { "mode": "rigid", "polygon": [[1,-1],[3,-1],[3,2],[1,2]] } ] }
         }"#;
         let scene = Scene::from_json(text, "affine").unwrap();
-        let mut b = build(&scene).unwrap();
+        let mut b = setup(&scene).unwrap();
         let g = [[0.0, 0.5], [0.0, -1.0]];
         b.model.impose_velocity_gradient(g, [0.0, 0.0]);
         let m = &b.model;

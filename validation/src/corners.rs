@@ -18,7 +18,7 @@
 use std::time::Instant;
 
 use adit::Scene;
-use adit::build::build;
+use adit::setup::setup;
 
 use crate::report::{CaseReport, StepInfo};
 
@@ -45,7 +45,7 @@ fn scene(modes: [&str; 2]) -> anyhow::Result<Scene> {
 pub fn run(modes: [&str; 2]) -> anyhow::Result<CaseReport> {
     let start = Instant::now();
     let sc = scene(modes)?;
-    let mut b = build(&sc)?;
+    let mut b = setup(&sc)?;
     let (solver, cycles) = crate::settle(&mut b.model, &sc.solve, "corner-to-corner blocks")?;
     let m = &b.model;
     let p = 1e6;

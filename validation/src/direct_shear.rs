@@ -8,7 +8,7 @@
 use std::time::Instant;
 
 use adit::Scene;
-use adit::build::build;
+use adit::setup::setup;
 use adit::solve::{Quiet, Status};
 
 use crate::report::CaseReport;
@@ -63,7 +63,7 @@ struct Sample {
 
 /// Load the specimen with σn, then drive the top block sideways to 3 mm; the curve and the cycles.
 fn shear(sc: &Scene) -> anyhow::Result<(Vec<Sample>, u64, usize)> {
-    let mut b = build(sc)?;
+    let mut b = setup(sc)?;
     let (mut solver, settled_cycles) = settle(&mut b.model, &sc.solve, "normal loading")?;
     // The whole top block is driven sideways (x fixed at a constant velocity, y free): like the
     // guided box of a shear rig, it cannot rotate, so the joint shears uniformly.

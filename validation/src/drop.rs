@@ -14,8 +14,8 @@
 use std::time::Instant;
 
 use adit::Scene;
-use adit::build::build;
 use adit::model::Model;
+use adit::setup::setup;
 use adit::solve::{Quiet, Solver, Status};
 
 use crate::report::{CaseReport, StepInfo};
@@ -72,7 +72,7 @@ fn state(m: &Model, b: usize) -> (f64, f64, [f64; 2]) {
 pub fn run(block: &str, base: &str, edge: f64) -> anyhow::Result<CaseReport> {
     let start = Instant::now();
     let sc = scene(block, base, edge)?;
-    let mut b = build(&sc)?;
+    let mut b = setup(&sc)?;
     let m = &mut b.model;
     let top = (0..m.nodes.len())
         .find(|&n| m.nodes.pos[n][1] > 1.4 && m.nodes.pos[n][0] > 2.0)

@@ -19,9 +19,9 @@
 use std::time::Instant;
 
 use adit::Scene;
-use adit::build::build;
 use adit::joint::FAILED;
 use adit::model::FIX_Y;
+use adit::setup::setup;
 use adit::solve::{Quiet, Status};
 use serde::Serialize;
 
@@ -149,7 +149,7 @@ pub fn run(across: usize, size: f64, loading: &Loading) -> anyhow::Result<Grains
     let start = Instant::now();
     let sc = scene(across, size)?;
     let (w, h) = (across as f64 * size, 2.0 * across as f64 * size);
-    let mut b = build(&sc)?;
+    let mut b = setup(&sc)?;
     let mut solver = adit::solve::Solver::new(&mut b.model, &sc.solve, 0);
     let top = b.part_nodes["top"].clone();
     for &n in &top {
@@ -234,7 +234,7 @@ mod tests {
     #[test]
     fn static_masses_follow_the_contacts() {
         let sc = scene(10, 0.1).unwrap();
-        let mut b = build(&sc).unwrap();
+        let mut b = setup(&sc).unwrap();
         let mut solver = adit::solve::Solver::new(&mut b.model, &sc.solve, 0);
         let first = b.model.nodes.mass.clone();
         let top = b.part_nodes["top"].clone();

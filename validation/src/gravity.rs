@@ -8,7 +8,7 @@
 use std::time::Instant;
 
 use adit::Scene;
-use adit::build::build;
+use adit::setup::setup;
 
 use crate::report::CaseReport;
 use crate::settle;
@@ -53,7 +53,7 @@ fn column_scene(h: f64, in_situ: bool) -> Scene {
 pub fn self_weight(h: f64) -> anyhow::Result<CaseReport> {
     let start = Instant::now();
     let scene = column_scene(h, false);
-    let mut b = build(&scene)?;
+    let mut b = setup(&scene)?;
     let (_, cycles) = settle(&mut b.model, &scene.solve, "column")?;
     let m = crate::constrained_modulus(YOUNG, POISSON);
     let model = &b.model;
@@ -89,7 +89,7 @@ pub fn self_weight(h: f64) -> anyhow::Result<CaseReport> {
 pub fn in_situ_equilibrium(h: f64) -> anyhow::Result<CaseReport> {
     let start = Instant::now();
     let scene = column_scene(h, true);
-    let mut b = build(&scene)?;
+    let mut b = setup(&scene)?;
     let (_, cycles) = settle(&mut b.model, &scene.solve, "column")?;
     let m = crate::constrained_modulus(YOUNG, POISSON);
     let reference = RHO * G * HEIGHT * HEIGHT / (2.0 * m);

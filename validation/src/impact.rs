@@ -11,7 +11,7 @@
 use std::time::Instant;
 
 use adit::Scene;
-use adit::build::build;
+use adit::setup::setup;
 use adit::solve::{Quiet, Solver, Status};
 
 use crate::report::{CaseReport, StepInfo};
@@ -73,7 +73,7 @@ fn launch(m: &mut adit::model::Model, vy: f64) -> anyhow::Result<usize> {
 pub fn run(mode: &str) -> anyhow::Result<CaseReport> {
     let start = Instant::now();
     let sc = scene(mode, 0.0)?;
-    let mut b = build(&sc)?;
+    let mut b = setup(&sc)?;
     let m = &mut b.model;
     let block = launch(m, -1.0)?;
     let mut solver = Solver::new(m, &sc.solve, 0);
@@ -114,7 +114,7 @@ pub fn settles(mode: &str) -> anyhow::Result<u64> {
     sc.solve.mode = adit::scene::SolveMode::Static;
     sc.solve.max_cycles = 100_000;
     sc.solve.ratio = 1e-6;
-    let mut b = build(&sc)?;
+    let mut b = setup(&sc)?;
     launch(&mut b.model, -1e-4)?;
     let (_, cycles) = crate::settle(&mut b.model, &sc.solve, "damped impact")?;
     Ok(cycles)

@@ -12,10 +12,10 @@
 use std::time::Instant;
 
 use adit::Scene;
-use adit::build::build;
 use adit::joint::{CoulombSlip, tan_deg};
 use adit::model::{FIX_X, FIX_Y};
 use adit::scene::{BlockMode, Rayleigh, RayleighComponents};
+use adit::setup::setup;
 use adit::solve::{Quiet, Solver, Status};
 
 use crate::flutter::{SlidingBlock, deformable_growth_rate};
@@ -133,7 +133,7 @@ impl Slide {
         let start = Instant::now();
         let settle_phi = if phi_deg >= alpha_deg { phi_deg } else { 80.0 };
         let mut sc = scene(alpha_deg, settle_phi, h, mode, kn);
-        let mut b = build(&sc)?;
+        let mut b = setup(&sc)?;
         anyhow::ensure!(b.model.blocks.len() == 2, "expected a base and a block");
         // The base (block owning the node at the origin) is held fixed.
         let base = b.model.blocks.block_of_node(

@@ -19,8 +19,8 @@
 use std::time::Instant;
 
 use adit::Scene;
-use adit::build::build;
 use adit::scene::{Circle, Inclusion as InclusionSpec, Material};
+use adit::setup::setup;
 use adit::solve::{Quiet, Solver, Status};
 use serde::Serialize;
 
@@ -187,7 +187,7 @@ pub fn run(scene: &Scene, case: &str) -> anyhow::Result<InclusionResult> {
     let mut s = scene.clone();
     s.in_situ = Default::default();
     let start = Instant::now();
-    let mut built = build(&s)?;
+    let mut built = setup(&s)?;
     load_outer_exactly(&mut built, |x, y| exact.stress(x, y));
     let mut solver = Solver::new(&mut built.model, &s.solve, 0);
     let solution = solver.solve(&mut built.model, &mut Quiet);

@@ -4,8 +4,8 @@
 use std::time::Instant;
 
 use adit::Scene;
-use adit::build::{Built, add_tractions, build};
 use adit::model::traction;
+use adit::setup::{Setup, add_tractions, setup};
 use adit::solve::{Quiet, Solver, Status};
 use adit_meshing::EdgeKind;
 use serde::Serialize;
@@ -101,7 +101,7 @@ pub enum OuterLoad {
 
 /// Replace the loads on the region's outer boundary by the traction σ(p)·n of an exact stress field
 /// [σxx, σyy, σxy] (Pa): the discrete problem's exact solution is then the field itself.
-pub fn load_outer_exactly(built: &mut Built, stress: impl Fn(f64, f64) -> [f64; 3]) {
+pub fn load_outer_exactly(built: &mut Setup, stress: impl Fn(f64, f64) -> [f64; 3]) {
     for &n in &built.part_nodes["outer"] {
         built.model.nodes.applied[n as usize] = [0.0; 2];
     }
@@ -119,7 +119,7 @@ pub fn load_outer_exactly(built: &mut Built, stress: impl Fn(f64, f64) -> [f64; 
 pub fn run(scene: &Scene, case: &str, load: OuterLoad) -> anyhow::Result<KirschResult> {
     let exact = closed_form(scene)?;
     let start = Instant::now();
-    let mut built = build(scene)?;
+    let mut built = setup(scene)?;
     if load == OuterLoad::Exact {
         load_outer_exactly(&mut built, |x, y| exact.stress(x, y));
     }

@@ -33,8 +33,8 @@
 use std::time::Instant;
 
 use adit::Scene;
-use adit::build::build;
 use adit::scene::LinerSpec;
+use adit::setup::setup;
 
 use crate::kirsch_case::scaled;
 use crate::report::CaseReport;
@@ -197,7 +197,7 @@ fn scene(kirsch: &Scene, factor: f64, thickness: f64) -> (Scene, EinsteinSchwart
 pub fn run(kirsch: &Scene, factor: f64, thickness: f64) -> anyhow::Result<CaseReport> {
     let start = Instant::now();
     let (sc, exact) = scene(kirsch, factor, thickness);
-    let mut b = build(&sc)?;
+    let mut b = setup(&sc)?;
     let (_, cycles) = crate::settle(&mut b.model, &sc.solve, "lined tunnel")?;
     let l = &b.model.supports.liners;
     let [n0, n2, m2] = exact.thin_ring();

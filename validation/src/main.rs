@@ -223,7 +223,7 @@ fn scale_section(md: &mut String, rows: &[scale::Row]) {
     let _ = writeln!(md, "\n## Builds at scale (issue 14)\n");
     let _ = writeln!(
         md,
-        "Each scene cut, meshed and given its blocks and contacts (`adit::build::build`, one run, wall \
+        "Each scene cut, meshed and given its blocks and contacts (`adit::setup::setup`, one run, wall \
          seconds). The terrain region (`validation/src/scale.rs`) is a 5 km slope section whose ground \
          surface has the given number of vertices, with a 6 m horseshoe tunnel 300 m down; jointed, it \
          has two sets 20 m apart in traces of 80 m. The cutter pairs segments, the polygon checks find \

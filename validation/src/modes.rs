@@ -14,9 +14,9 @@
 use std::time::Instant;
 
 use adit::Scene;
-use adit::build::build;
 use adit::model::Model;
 use adit::scene::BlockMode;
+use adit::setup::setup;
 use adit::solve::{Quiet, Solver, Status};
 
 use crate::incline::mode_name;
@@ -68,7 +68,7 @@ pub fn run(scene: &Scene, mode: BlockMode, stiffen: f64) -> anyhow::Result<ModeR
 /// Run `scene` with its own block modes, reporting it as `label`.
 pub fn run_as(sc: &Scene, label: String) -> anyhow::Result<ModeRun> {
     let start = Instant::now();
-    let mut b = build(sc)?;
+    let mut b = setup(sc)?;
     let mut solver = Solver::new(&mut b.model, &sc.solve, 0);
     let sol = solver.solve(&mut b.model, &mut Quiet);
     anyhow::ensure!(

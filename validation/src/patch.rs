@@ -4,8 +4,8 @@
 use std::time::Instant;
 
 use adit::Scene;
-use adit::build::{Built, build};
 use adit::model::{FIX_X, FIX_Y};
+use adit::setup::{Setup, setup};
 use adit::solve::{Quiet, Solver, Status};
 
 use crate::report::CaseReport;
@@ -44,7 +44,7 @@ fn hooke(e: [f64; 3]) -> [f64; 4] {
     ]
 }
 
-fn max_stress_error(built: &Built, exact: [f64; 4]) -> f64 {
+fn max_stress_error(built: &Setup, exact: [f64; 4]) -> f64 {
     let scale = exact.iter().map(|v| v.abs()).fold(0.0, f64::max);
     built
         .model
@@ -58,7 +58,7 @@ fn max_stress_error(built: &Built, exact: [f64; 4]) -> f64 {
 
 fn report(
     case: &str,
-    built: &Built,
+    built: &Setup,
     cycles: u64,
     wall_s: f64,
     errors: &[(&str, f64)],
@@ -72,7 +72,7 @@ fn report(
 pub fn linear_displacement(h: f64) -> anyhow::Result<CaseReport> {
     let start = Instant::now();
     let scene = pentagon_scene(h, r#"{ "part": "outer", "fix": "xy" }"#, 1e-14);
-    let mut built = build(&scene)?;
+    let mut built = setup(&scene)?;
     let a = [[2e-4, -1e-4], [0.5e-4, -3e-4]];
     let c = [1e-3, -2e-3];
     let field = |p: [f64; 2]| {
@@ -141,7 +141,7 @@ pub fn uniform_stress(h: f64) -> anyhow::Result<CaseReport> {
     let bcs = r#"{ "part": "outer", "stress": { "sxx": -3e6, "syy": 1e6, "sxy": 2e6 } },
                  { "at": [0, 0], "fix": "xy" }, { "at": [1.3, 0.1], "fix": "y" }"#;
     let scene = pentagon_scene(h, bcs, 1e-14);
-    let mut built = build(&scene)?;
+    let mut built = setup(&scene)?;
     let (_, cycles) = settle(&mut built.model, &scene.solve, "patch test")?;
     let sxx = -3e6;
     let syy = 1e6;
@@ -179,7 +179,7 @@ pub fn uniaxial(h: f64) -> anyhow::Result<CaseReport> {
         -p
     );
     let scene = Scene::from_json(&text, "uniaxial scene")?;
-    let mut built = build(&scene)?;
+    let mut built = setup(&scene)?;
     let (_, cycles) = settle(&mut built.model, &scene.solve, "uniaxial test")?;
     let axial = -p * (1.0 - POISSON * POISSON) * 2.0 / YOUNG;
     let lateral = p * POISSON * (1.0 + POISSON) * 2.0 / YOUNG;

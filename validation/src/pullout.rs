@@ -17,7 +17,7 @@
 
 use std::time::Instant;
 
-use adit::build::build;
+use adit::setup::setup;
 
 use crate::report::CaseReport;
 
@@ -121,7 +121,7 @@ pub fn run(fraction: f64, segment: f64) -> anyhow::Result<(CaseReport, Vec<Profi
     let start = Instant::now();
     let exact = CASE;
     let scene = scene(segment)?;
-    let mut b = build(&scene)?;
+    let mut b = setup(&scene)?;
     let pull = fraction * exact.bond_strength * exact.length;
     // Pull the head out of the rock: against the bolt's axis (head to toe, +x).
     b.model.supports.cables.applied[0] = -pull;
@@ -190,7 +190,7 @@ mod tests {
     fn the_bolt_pulls_out_beyond_its_bond_capacity() {
         let mut sc = scene(0.1).unwrap();
         sc.solve.max_cycles = 20_000;
-        let mut b = build(&sc).unwrap();
+        let mut b = setup(&sc).unwrap();
         // 5 % over s·L = 150 kN: the grout slips along the whole bolt and it keeps moving.
         b.model.supports.cables.applied[0] = -1.05 * 1.5e5;
         let mut solver = adit::solve::Solver::new(&mut b.model, &sc.solve, 0);

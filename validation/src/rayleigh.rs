@@ -20,8 +20,8 @@ use std::f64::consts::PI;
 use std::time::Instant;
 
 use adit::Scene;
-use adit::build::build;
 use adit::scene::RayleighComponents;
+use adit::setup::setup;
 use adit::solve::{Quiet, Solver, Status};
 
 use crate::report::CaseReport;
@@ -141,7 +141,7 @@ impl Column {
         let start = Instant::now();
         let scene = self.scene();
         let (alpha, beta) = self.coefficients(&scene);
-        let mut b = build(&scene)?;
+        let mut b = setup(&scene)?;
         let model = &mut b.model;
         let top: Vec<usize> = (0..model.nodes.len())
             .filter(|&n| (model.nodes.pos[n][1] - HEIGHT).abs() < 1e-9)

@@ -36,7 +36,7 @@ pub fn failures(count: u64, first: u64) -> anyhow::Result<Vec<String>> {
     let base = Scene::load(&crate::repository_root().join("models/tunnel.json"))?;
     Ok((first..first + count)
         .filter_map(|n| {
-            adit::build::build(&realization(&base, n))
+            adit::setup::setup(&realization(&base, n))
                 .err()
                 .map(|e| format!("realization {n}: {e}"))
         })
@@ -73,7 +73,7 @@ pub fn build_all(count: u64) -> anyhow::Result<Vec<Built>> {
     Ok((1..=count)
         .map(|n| {
             let start = Instant::now();
-            let built = adit::build::build(&realization(&base, n));
+            let built = adit::setup::setup(&realization(&base, n));
             let seconds = start.elapsed().as_secs_f64();
             match built {
                 Ok(b) => {

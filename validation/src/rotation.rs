@@ -13,8 +13,8 @@
 use std::time::Instant;
 
 use adit::Scene;
-use adit::build::build;
 use adit::model::{FIX_X, FIX_Y};
+use adit::setup::setup;
 use adit::solve::Solver;
 
 use crate::report::{CaseReport, StepInfo};
@@ -88,7 +88,7 @@ impl Spin {
 pub fn spin(large_strain: bool, turns: f64) -> anyhow::Result<Spin> {
     let start = Instant::now();
     let sc = block(large_strain)?;
-    let mut b = build(&sc)?;
+    let mut b = setup(&sc)?;
     let mut solver = Solver::new(&mut b.model, &sc.solve, 0);
     let m = &mut b.model;
     for (v, p) in m.nodes.vel.iter_mut().zip(&m.nodes.pos) {
@@ -170,7 +170,7 @@ pub fn turned(large_strain: bool) -> anyhow::Result<Turned> {
     let start = Instant::now();
     let mut sc = block(large_strain)?;
     sc.in_situ.sxx = -PRESTRESS;
-    let mut b = build(&sc)?;
+    let mut b = setup(&sc)?;
     let mut solver = Solver::new(&mut b.model, &sc.solve, 0);
     let m = &mut b.model;
     let steps = 400;

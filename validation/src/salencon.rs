@@ -21,9 +21,9 @@
 use std::time::Instant;
 
 use adit::Scene;
-use adit::build::build;
 use adit::law::{SHEAR_NOW, SHEAR_PAST};
 use adit::scene::{Stage, ZoneLawKind};
+use adit::setup::setup;
 use adit::solve::{Quiet, Solver, Status};
 use adit::stage::Staging;
 
@@ -256,7 +256,7 @@ fn measure(
     let (mut sc, exact) = scene(kirsch, factor, pi, rock);
     sc.solve.ramp = ramp;
     sc.solve.max_cycles += ramp;
-    let mut b = build(&sc)?;
+    let mut b = setup(&sc)?;
     let mut solver = Solver::new(&mut b.model, &sc.solve, 0);
     let sol = solver.solve(&mut b.model, &mut Quiet);
     anyhow::ensure!(
@@ -495,10 +495,10 @@ pub fn ground_reaction(
                 .map(|&f| stage(format!("support {f}"), vec![], f)),
         )
         .collect();
-    let mut b = build(&sc)?;
+    let mut b = setup(&sc)?;
     let p0 = exact.p0;
     // The wall nodes of the rock that stays (the fill's own wall nodes go with it).
-    let fill = |n: u32| b.model.fill[b.model.blocks.block_of_node(n)] != adit::build::NOT_FILL;
+    let fill = |n: u32| b.model.fill[b.model.blocks.block_of_node(n)] != adit::setup::NOT_FILL;
     let wall: Vec<u32> = b.part_nodes[&hole]
         .iter()
         .copied()

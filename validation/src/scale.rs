@@ -22,7 +22,7 @@ pub struct Row {
     pub zones: usize,
     /// Zoned area over the region's area less the open excavations' (1 when the blocks tile it).
     pub tiling: f64,
-    /// Wall seconds of `adit::build::build`, s.
+    /// Wall seconds of `adit::setup::setup`, s.
     pub seconds: f64,
 }
 
@@ -89,10 +89,10 @@ pub fn dense_joints() -> anyhow::Result<Scene> {
 
 /// Build `scene` and measure it.
 pub fn measure(what: &str, scene: &Scene) -> anyhow::Result<Row> {
-    let domain = adit::build::domain(scene)?;
-    let traces = adit::build::joint_segments(scene, &domain)?.len();
+    let domain = adit::setup::domain(scene)?;
+    let traces = adit::setup::joint_segments(scene, &domain)?.len();
     let start = Instant::now();
-    let built = adit::build::build(scene)?;
+    let built = adit::setup::setup(scene)?;
     let seconds = start.elapsed().as_secs_f64();
     let m = &built.model;
     let zoned: f64 = (0..m.zones.len())

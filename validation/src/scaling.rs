@@ -5,9 +5,9 @@
 use std::time::Instant;
 
 use adit::Scene;
-use adit::build::build;
 use adit::contact::detect::{Detection, detect};
 use adit::joint::JointState;
+use adit::setup::setup;
 use serde::Serialize;
 
 /// Detection cost at one size.
@@ -44,7 +44,7 @@ fn grid_scene(n: usize) -> Scene {
 /// Build an n × n block grid and time its detection.
 pub fn measure(n: usize) -> anyhow::Result<DetectionCost> {
     let start = Instant::now();
-    let b = build(&grid_scene(n))?;
+    let b = setup(&grid_scene(n))?;
     let build_s = start.elapsed().as_secs_f64();
     let m = &b.model;
     let d = Detection {

@@ -261,7 +261,7 @@ mod tests {
     fn tiny_blocks_settle_with_their_neighbours() {
         for mode in ["deformable", "rigid"] {
             let sc = tiny(mode, 1e6).unwrap();
-            assert_eq!(adit::build::build(&sc).unwrap().model.blocks.len(), 7);
+            assert_eq!(adit::setup::setup(&sc).unwrap().model.blocks.len(), 7);
             let r = run_tiny(mode).unwrap();
             eprintln!("{r:?}");
             assert!(r.errors["settlement"] < 0.02, "{r:?}");

@@ -12,8 +12,8 @@
 use std::time::Instant;
 
 use adit::Scene;
-use adit::build::build;
 use adit::model::FIX_Y;
+use adit::setup::setup;
 use adit::solve::{Quiet, Status};
 use serde::Serialize;
 
@@ -109,7 +109,7 @@ impl SofteningResult {
 pub fn run(edge: f64, end_strain: f64, rate: f64) -> anyhow::Result<SofteningResult> {
     let start = Instant::now();
     let sc = scene(edge)?;
-    let mut b = build(&sc)?;
+    let mut b = setup(&sc)?;
     let (mut solver, mut cycles) = crate::settle(&mut b.model, &sc.solve, "confinement")?;
     let top = b.part_nodes["top"].clone();
     for &n in &top {

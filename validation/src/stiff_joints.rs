@@ -9,7 +9,7 @@
 use std::time::Instant;
 
 use adit::Scene;
-use adit::build::build;
+use adit::setup::setup;
 
 use crate::report::{CaseReport, StepInfo};
 
@@ -38,7 +38,7 @@ fn scene(ratio: f64, law: &str) -> anyhow::Result<Scene> {
 pub fn run(ratio: f64, law: &str) -> anyhow::Result<CaseReport> {
     let start = Instant::now();
     let sc = scene(ratio, law)?;
-    let mut b = build(&sc)?;
+    let mut b = setup(&sc)?;
     anyhow::ensure!(b.model.blocks.len() == 9, "expected nine blocks");
     let (solver, cycles) = crate::settle(&mut b.model, &sc.solve, "stiff joints")?;
     let m = &b.model;

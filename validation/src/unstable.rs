@@ -6,7 +6,7 @@
 
 use std::time::Instant;
 
-use adit::build::build;
+use adit::setup::setup;
 use adit::solve::{Quiet, Solver, Status};
 
 use crate::report::{CaseReport, StepInfo};
@@ -51,7 +51,7 @@ pub fn run(factor: f64) -> anyhow::Result<Forced> {
     let mut sc = crate::shipped_kirsch()?;
     sc.zoning.edge_at_excavation *= 3.0;
     sc.zoning.edge_far *= 3.0;
-    let mut b = build(&sc)?;
+    let mut b = setup(&sc)?;
     let mut solver = Solver::new(&mut b.model, &sc.solve, 0);
     solver.params.dt *= factor;
     let sol = solver.solve(&mut b.model, &mut Quiet);

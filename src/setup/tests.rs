@@ -15,7 +15,7 @@ fn scene_with(region: &str, excavation: &str) -> Scene {
 #[test]
 fn self_intersecting_region_names_the_field() {
     let s = scene_with("[[0, 0], [10, 10], [10, 0], [0, 10]]", "");
-    let msg = build(&s).err().unwrap().to_string();
+    let msg = setup(&s).err().unwrap().to_string();
     assert!(
         msg.starts_with("region.polygon:") && msg.contains("self-intersecting"),
         "{msg}"
@@ -28,7 +28,7 @@ fn hole_outside_region_names_the_excavation() {
         "[[0, 0], [10, 0], [10, 10], [0, 10]]",
         r#"{ "name": "adit", "circle": { "center": [20, 5], "radius": 1 } }"#,
     );
-    let msg = build(&s).err().unwrap().to_string();
+    let msg = setup(&s).err().unwrap().to_string();
     assert!(
         msg.starts_with("excavations[0]:") && msg.contains("not inside the region"),
         "{msg}"
@@ -45,7 +45,7 @@ fn tractions_of_a_uniform_stress_balance_on_a_closed_boundary() {
         r#"[{ "part": "outer", "stress": { "sxx": -1e6, "syy": -2e6, "sxy": 5e5 } }]"#,
     )
     .unwrap();
-    let b = build(&s).unwrap();
+    let b = setup(&s).unwrap();
     let (mut fx, mut fy, mut m) = (0.0, 0.0, 0.0);
     for (p, f) in b.model.nodes.pos.iter().zip(&b.model.nodes.applied) {
         fx += f[0];
@@ -73,7 +73,7 @@ fn horseshoe_excavation_has_its_area() {
         "[[-10, -10], [10, -10], [10, 10], [-10, 10]]",
         r#"{ "name": "drive", "horseshoe": { "center": [0, 0], "radius": 3, "wall_height": 2, "segments": 256 } }"#,
     );
-    let b = build(&s).unwrap();
+    let b = setup(&s).unwrap();
     let hole = b.domain.holes[0].polygon.signed_area().abs();
     let exact = 0.5 * std::f64::consts::PI * 9.0 + 6.0 * 2.0;
     assert!((hole - exact).abs() < 1e-3 * exact, "{hole} vs {exact}");
@@ -111,7 +111,7 @@ fn a_strip_too_thin_to_zone_is_named_and_takes_blocks_thin() {
                 "zoning": {{ "edge_at_excavation": 0.5, "edge_far": 2 }},
                 "blocks": {{ "thin": "{thin}" }} }}"#
         );
-        build(&Scene::from_json(&text, "test").unwrap()).unwrap()
+        setup(&Scene::from_json(&text, "test").unwrap()).unwrap()
     };
     for (thin, bodies, said) in [
         ("deformable", 0, "zoned as finely as it needs"),

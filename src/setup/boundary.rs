@@ -54,7 +54,7 @@ pub fn part_nodes(
 }
 
 /// Fixity flags and consistent nodal loads (N/m) of the boundary conditions `conditions` alone, on
-/// nodes at `pos`, as `build` applies them.
+/// nodes at `pos`, as `setup` applies them.
 pub fn boundary_effect(
     conditions: &[BoundaryCondition],
     scene: &Scene,

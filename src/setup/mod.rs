@@ -33,7 +33,7 @@ use crate::scene::{
 };
 
 /// A model ready to cycle, with what was learnt while building it.
-pub struct Built {
+pub struct Setup {
     pub model: Model,
     pub mesh: MeshStats,
     /// Boundary nodes of each named part (`outer`, region edge names, excavation names), sorted.
@@ -238,8 +238,8 @@ pub fn joint_law(j: &JointMaterial) -> Box<dyn JointLaw> {
 }
 
 /// Build the model of a validated scene.
-pub fn build(scene: &Scene) -> anyhow::Result<Built> {
-    build_meshed(scene, mesh(scene)?)
+pub fn setup(scene: &Scene) -> anyhow::Result<Setup> {
+    setup_meshed(scene, mesh(scene)?)
 }
 
 /// The mesh's sharpest zone against `zoning.accept_angle`: an error naming the block and where.
@@ -259,8 +259,8 @@ fn refuse_sharp_zones(scene: &Scene, meshed: &Meshed) -> anyhow::Result<()> {
     }
 }
 
-/// [`build`] from the blocks and zones `mesh` made of `scene`.
-pub fn build_meshed(scene: &Scene, meshed: Meshed) -> anyhow::Result<Built> {
+/// [`setup`] from the blocks and zones `mesh` made of `scene`.
+pub fn setup_meshed(scene: &Scene, meshed: Meshed) -> anyhow::Result<Setup> {
     let stats = meshed.stats();
     let Assembled {
         pos,
@@ -584,7 +584,7 @@ pub fn build_meshed(scene: &Scene, meshed: Meshed) -> anyhow::Result<Built> {
             model.supports.install(name, &model.nodes.disp);
         }
     }
-    Ok(Built {
+    Ok(Setup {
         model,
         mesh: stats,
         part_nodes,
