@@ -5,7 +5,7 @@ use crate::cycle::timestep::{
     Limiter, StepLimit, add_contact_stiffness, body_masses, body_step, body_stiffness,
     critical_step, damped_margin, lumped_masses, scaled_masses, viscous_margin, zone_stiffness,
 };
-use crate::cycle::{Cycle, CycleParams, Monitor};
+use crate::cycle::{Cycle, CycleParams, Monitor, ZoneScheme};
 use crate::model::Model;
 use crate::model::bodies::{NO_BODY, projector};
 use crate::scene::{SolveMode, SolveSpec};
@@ -97,7 +97,7 @@ impl Solver {
             params: CycleParams {
                 dt,
                 damping: spec.damping_coefficient(),
-                large_strain: spec.large_strain,
+                scheme: ZoneScheme::of(model, spec.large_strain),
                 mass_damping: spec.rayleigh.map_or(0.0, |r| r.coefficients().0),
                 stiffness_damping: spec.rayleigh.map_or(0.0, |r| r.coefficients().1),
             },

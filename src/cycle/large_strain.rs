@@ -20,7 +20,7 @@ use crate::model::zones::cst_gradients;
 
 impl Cycle {
     /// The zone stage on the zones' current shapes (see the module).
-    pub fn zone_forces_large(&mut self, model: &mut Model, p: &CycleParams) {
+    pub(super) fn zone_forces_large(&mut self, model: &mut Model, p: &CycleParams) {
         let Model {
             nodes, zones, laws, ..
         } = model;

@@ -56,7 +56,7 @@ fn own_share(law: &dyn ZoneLaw) -> f64 {
 
 impl Cycle {
     /// The zone stage with the volumetric strain averaged over node patches (see the module).
-    pub fn zone_forces_mixed(&mut self, model: &mut Model, p: &CycleParams) {
+    pub(super) fn zone_forces_mixed(&mut self, model: &mut Model, p: &CycleParams) {
         let Model {
             nodes,
             zones,

@@ -26,12 +26,41 @@ pub struct CycleParams {
     pub dt: f64,
     /// Local non-viscous damping coefficient α (0.8 is UDEC's default for static runs).
     pub damping: f64,
-    /// Zones on their current shape with their stress turned by their spin (`solve.large_strain`).
-    pub large_strain: bool,
+    /// How the zones turn node velocities into stress.
+    pub scheme: ZoneScheme,
     /// Mass-proportional Rayleigh coefficient α_R, 1/s (0 for none; `scene::Rayleigh`).
     pub mass_damping: f64,
     /// Stiffness-proportional Rayleigh coefficient β_R, s (0 for none).
     pub stiffness_damping: f64,
+}
+
+/// How the zone stage turns node velocities into stress and corner forces: one of three, fixed
+/// for a solve (`solve.large_strain` for the solve, `zoning.mixed` for the model; the two together
+/// are refused by the scene's validation).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ZoneScheme {
+    /// Constant-strain triangles on their initial shape (`Cycle::zone_forces_small`).
+    SmallStrain,
+    /// `zoning.mixed`: each zone's volumetric strain increment replaced by its nodes' patch average
+    /// (`mixed.rs`).
+    Mixed,
+    /// `solve.large_strain`: zones on their current shape, stress turned by their spin
+    /// (`large_strain.rs`).
+    LargeStrain,
+}
+
+impl ZoneScheme {
+    /// The scheme of a solve with `large_strain` on `model` (mixed when the model was set up
+    /// with `zoning.mixed`).
+    pub fn of(model: &Model, large_strain: bool) -> ZoneScheme {
+        if large_strain {
+            ZoneScheme::LargeStrain
+        } else if model.mixed.is_some() {
+            ZoneScheme::Mixed
+        } else {
+            ZoneScheme::SmallStrain
+        }
+    }
 }
 
 impl CycleParams {
@@ -165,16 +194,19 @@ impl Cycle {
             .cycle(&model.nodes.disp, &mut self.support_force, p.damping, p.dt);
     }
 
-    /// Zone stage: strain increment from node velocities, Δε = sym(∇v)Δt with the CST gradients,
-    /// stress update by the zone law, then corner forces f_i = −A σ·∇N_i
-    /// (the virtual-work nodal force of a constant-stress triangle).
+    /// Zone stage, by the solve's `ZoneScheme`.
     pub fn zone_forces(&mut self, model: &mut Model, p: &CycleParams) {
-        if p.large_strain {
-            return self.zone_forces_large(model, p);
+        match p.scheme {
+            ZoneScheme::SmallStrain => self.zone_forces_small(model, p),
+            ZoneScheme::Mixed => self.zone_forces_mixed(model, p),
+            ZoneScheme::LargeStrain => self.zone_forces_large(model, p),
         }
-        if model.mixed.is_some() {
-            return self.zone_forces_mixed(model, p);
-        }
+    }
+
+    /// Small-strain zone stage: strain increment from node velocities, Δε = sym(∇v)Δt with the CST
+    /// gradients, stress update by the zone law, then corner forces f_i = −A σ·∇N_i
+    /// (the virtual-work nodal force of a constant-stress triangle).
+    fn zone_forces_small(&mut self, model: &mut Model, p: &CycleParams) {
         let Model {
             nodes, zones, laws, ..
         } = model;
