@@ -328,7 +328,15 @@ fn fresh_contacts_found_deep_start_at_zero_overlap() {
         }
         m.contacts = Default::default();
         let mut cycle = adit::cycle::Cycle::new(m);
-        cycle.detect(m);
+        let x = m.nodes.current();
+        let d = adit::contact::detect::Detection {
+            blocks: &m.blocks,
+            x: &x,
+            tolerance: m.contact_tolerance,
+            joint_material: &m.joint_material,
+            hole_material: &m.hole_material,
+        };
+        cycle.detect(&d, &mut m.contacts, &mut m.contact_gather);
         let c = &m.contacts;
         let sunk: Vec<usize> = (0..c.len())
             .filter(|&k| m.blocks.block_of_node(c.node[k]) == top)

@@ -6,9 +6,9 @@ use rayon::prelude::*;
 
 use super::{Cycle, CycleParams, mass_damping_factors};
 use crate::damping::local_damping;
-use crate::law::StrainIncrement;
-use crate::model::bodies::{BodyMode, DOFS, NO_BODY, apply, velocity_map};
-use crate::model::{Model, Stress};
+use crate::law::{StrainIncrement, ZoneLaw};
+use crate::model::bodies::{Bodies, BodyMode, DOFS, NO_BODY, apply, velocity_map};
+use crate::model::{Nodes, Stress};
 
 /// σ' = R σ Rᵀ for an in-plane rotation by `angle` (rad): the stress of a simple block turns with it.
 pub(super) fn rotate(s: &mut Stress, angle: f64) {
@@ -29,16 +29,16 @@ impl Cycle {
     /// offsets map as r ← A r, with A the exact rotation by ωΔt for a rigid block and I + LΔt for a
     /// simple one, whose stress takes the strain increment through its zone law and turns by ωΔt.
     /// Nodes then take the chord velocity (x_new − x)/Δt. Returns the largest body-node speed, m/s.
-    pub fn body_motion(&mut self, model: &mut Model, p: &CycleParams) -> f64 {
-        if model.bodies.is_empty() {
+    pub fn body_motion(
+        &mut self,
+        nodes: &mut Nodes,
+        bodies: &mut Bodies,
+        laws: &[Box<dyn ZoneLaw>],
+        p: &CycleParams,
+    ) -> f64 {
+        if bodies.is_empty() {
             return 0.0;
         }
-        let Model {
-            nodes,
-            bodies,
-            laws,
-            ..
-        } = model;
         let (alpha, dt, viscous) = (p.damping, p.dt, p.viscous_ratio());
         let (keep, gain) = mass_damping_factors(p);
         let (pos, disp, force) = (&nodes.pos, &nodes.disp, &nodes.force);

@@ -5,8 +5,9 @@ use rayon::prelude::*;
 use super::{Cycle, CycleParams};
 use crate::contact::detect::{Detection, Touch, detect};
 use crate::contact::rounding;
-use crate::joint::{FAILED, JointState};
-use crate::model::{Gather, Model};
+use crate::joint::{FAILED, JointLaw, JointState};
+use crate::model::blocks::Blocks;
+use crate::model::{Contacts, Gather, Nodes};
 
 impl Cycle {
     /// Detect stage: re-detect contacts at the current positions. Persisting contacts keep their
@@ -15,22 +16,16 @@ impl Cycle {
     /// then growing from zero as in UDEC's incremental contacts: a node found behind an edge by a
     /// changed facing (below the toe of a neighbour's corner, say) must not get the whole overlap's
     /// force in one cycle.
-    pub fn detect(&mut self, model: &mut Model) {
-        let x = model.nodes.current();
-        let d = Detection::of(model, &x);
-        let shallow = -0.1 * model.contact_tolerance;
+    pub fn detect(&mut self, d: &Detection, contacts: &mut Contacts, contact_gather: &mut Gather) {
+        let shallow = -0.1 * d.tolerance;
         let fresh = |t: &Touch| JointState {
             normal_displacement: if t.gap >= shallow { t.gap } else { 0.0 },
             flags: FAILED,
             ..Default::default()
         };
-        model.contacts = detect(&d, &model.contacts, &fresh);
-        model.contact_gather = Gather::new(
-            model.nodes.len(),
-            &model.contacts.triples(&model.blocks.edges),
-        );
-        self.contact_force
-            .resize(3 * model.contacts.len(), [0.0; 2]);
+        *contacts = detect(d, contacts, &fresh);
+        *contact_gather = Gather::new(d.x.len(), &contacts.triples(&d.blocks.edges));
+        self.contact_force.resize(3 * contacts.len(), [0.0; 2]);
         self.moved = 0.0;
         self.detections += 1;
     }
@@ -42,14 +37,14 @@ impl Cycle {
     /// F = −L(σn n + τ t) acts on the node while −(1 − ξ)F and −ξF act on the edge's nodes, so
     /// momentum is conserved exactly. With stiffness-proportional Rayleigh damping σn and τ take
     /// β_R times their rate over the step on top (`CycleParams::viscous_ratio`).
-    pub fn contact_forces(&mut self, model: &mut Model, p: &CycleParams) {
-        let Model {
-            nodes,
-            blocks,
-            contacts,
-            joint_laws,
-            ..
-        } = model;
+    pub fn contact_forces(
+        &mut self,
+        nodes: &Nodes,
+        blocks: &Blocks,
+        contacts: &mut Contacts,
+        joint_laws: &[Box<dyn JointLaw>],
+        p: &CycleParams,
+    ) {
         let (pos, disp, vel) = (&nodes.pos, &nodes.disp, &nodes.vel);
         let x = |n: u32| {
             let (p, u) = (pos[n as usize], disp[n as usize]);

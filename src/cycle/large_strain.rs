@@ -15,15 +15,19 @@ use rayon::prelude::*;
 
 use super::bodies::rotate;
 use super::{Cycle, CycleParams, corner_forces, strain_increment, velocity_gradient, with_viscous};
-use crate::model::Model;
+use crate::law::ZoneLaw;
 use crate::model::zones::cst_gradients;
+use crate::model::{Nodes, Zones};
 
 impl Cycle {
     /// The zone stage on the zones' current shapes (see the module).
-    pub(super) fn zone_forces_large(&mut self, model: &mut Model, p: &CycleParams) {
-        let Model {
-            nodes, zones, laws, ..
-        } = model;
+    pub(super) fn zone_forces_large(
+        &mut self,
+        nodes: &Nodes,
+        zones: &mut Zones,
+        laws: &[Box<dyn ZoneLaw>],
+        p: &CycleParams,
+    ) {
         let (vel, pos, disp) = (&nodes.vel, &nodes.pos, &nodes.disp);
         let (dt, viscous) = (p.dt, p.viscous_ratio());
         zones

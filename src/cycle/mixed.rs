@@ -35,7 +35,7 @@ use rayon::prelude::*;
 
 use super::{Cycle, CycleParams, corner_forces, strain_increment, velocity_gradient, with_viscous};
 use crate::law::ZoneLaw;
-use crate::model::{Gather, Model};
+use crate::model::{Gather, Nodes, Zones};
 
 /// c of the mixed discretization's stabilization: a zone's own volumetric strain is resisted with
 /// a modulus min(K, c G) (see the module). Of 0.5, 1, 2 and 4 tried, 2 is the smallest that kept
@@ -56,16 +56,15 @@ fn own_share(law: &dyn ZoneLaw) -> f64 {
 
 impl Cycle {
     /// The zone stage with the volumetric strain averaged over node patches (see the module).
-    pub(super) fn zone_forces_mixed(&mut self, model: &mut Model, p: &CycleParams) {
-        let Model {
-            nodes,
-            zones,
-            laws,
-            gather,
-            mixed,
-            ..
-        } = model;
-        let inv_patch = mixed.as_ref().expect("mixed discretization set up");
+    pub(super) fn zone_forces_mixed(
+        &mut self,
+        nodes: &Nodes,
+        zones: &mut Zones,
+        laws: &[Box<dyn ZoneLaw>],
+        gather: &Gather,
+        inv_patch: &[f64],
+        p: &CycleParams,
+    ) {
         let (vel, dt, viscous) = (&nodes.vel, p.dt, p.viscous_ratio());
         self.zone_strain
             .par_iter_mut()

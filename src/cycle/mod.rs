@@ -13,9 +13,12 @@ use std::time::Instant;
 
 use rayon::prelude::*;
 
+use crate::contact::detect::Detection;
 use crate::damping::local_damping;
 use crate::law::StrainIncrement;
-use crate::model::{BODY, FIX_X, FIX_Y, Model, Stress};
+use crate::law::ZoneLaw;
+use crate::model::{BODY, FIX_X, FIX_Y, Gather, Model, Nodes, Stress, Zones};
+use crate::support::Supports;
 
 pub use monitor::Monitor;
 
@@ -150,20 +153,49 @@ impl Cycle {
         }
     }
 
-    /// Advance the model by one step.
+    /// Advance the model by one step: the stages in order, each handed the parts of the model it
+    /// reads (shared) and writes (exclusive).
     pub fn run(&mut self, model: &mut Model, p: &CycleParams) {
+        let Model {
+            nodes,
+            zones,
+            gather,
+            laws,
+            blocks,
+            bodies,
+            contacts,
+            contact_gather,
+            joint_laws,
+            joint_material,
+            contact_tolerance,
+            hole_material,
+            supports,
+            mixed,
+            support_gather,
+            ..
+        } = model;
         let t0 = Instant::now();
-        if model.blocks.len() > 1 && self.moved > 0.5 * model.contact_tolerance {
-            self.detect(model);
+        if blocks.len() > 1 && self.moved > 0.5 * *contact_tolerance {
+            let x = nodes.current();
+            let d = Detection {
+                blocks,
+                x: &x,
+                tolerance: *contact_tolerance,
+                joint_material,
+                hole_material,
+            };
+            self.detect(&d, contacts, contact_gather);
         }
         let t1 = Instant::now();
-        self.contact_forces(model, p);
+        self.contact_forces(nodes, blocks, contacts, joint_laws, p);
         let t2 = Instant::now();
-        self.zone_forces(model, p);
+        self.zone_forces(nodes, zones, laws, gather, mixed.as_deref(), p);
         let t3 = Instant::now();
-        self.structural_forces(model, p);
+        self.structural_forces(supports, &nodes.disp, p);
         let t4 = Instant::now();
-        let speed = self.motion(model, p).max(self.body_motion(model, p));
+        let speed = self
+            .motion(nodes, gather, contact_gather, support_gather, p)
+            .max(self.body_motion(nodes, bodies, laws, p));
         self.moved += speed * p.dt;
         let t5 = Instant::now();
         self.seconds.detect += (t1 - t0).as_secs_f64();
@@ -178,38 +210,69 @@ impl Cycle {
     /// gives the out-of-balance force of a state before its first cycle.
     pub fn prime(&mut self, model: &mut Model, p: &CycleParams) {
         let still = CycleParams { dt: 0.0, ..*p };
-        self.contact_forces(model, &still);
-        self.zone_forces(model, &still);
-        self.structural_forces(model, &still);
+        let Model {
+            nodes,
+            zones,
+            gather,
+            laws,
+            blocks,
+            contacts,
+            joint_laws,
+            supports,
+            mixed,
+            ..
+        } = model;
+        self.contact_forces(nodes, blocks, contacts, joint_laws, &still);
+        self.zone_forces(nodes, zones, laws, gather, mixed.as_deref(), &still);
+        self.structural_forces(supports, &nodes.disp, &still);
     }
 
-    /// Structural stage: bolts and liners take the rock's displacements, push back on the rock
-    /// through the support slots, and move their own nodes (`support::Supports::cycle`).
-    pub fn structural_forces(&mut self, model: &mut Model, p: &CycleParams) {
-        if model.supports.is_empty() {
+    /// Structural stage: bolts and liners take the rock's displacements `rock` (m), push back on
+    /// the rock through the support slots, and move their own nodes (`support::Supports::cycle`).
+    pub fn structural_forces(
+        &mut self,
+        supports: &mut Supports,
+        rock: &[[f64; 2]],
+        p: &CycleParams,
+    ) {
+        if supports.is_empty() {
             return;
         }
-        model
-            .supports
-            .cycle(&model.nodes.disp, &mut self.support_force, p.damping, p.dt);
+        supports.cycle(rock, &mut self.support_force, p.damping, p.dt);
     }
 
-    /// Zone stage, by the solve's `ZoneScheme`.
-    pub fn zone_forces(&mut self, model: &mut Model, p: &CycleParams) {
+    /// Zone stage, by the solve's `ZoneScheme`: the zones' stresses and corner forces from the
+    /// nodes' motion and the zone laws; the mixed scheme also reads the zone gather and each
+    /// node's 1 / patch area (`Model::mixed`), 1/m².
+    pub fn zone_forces(
+        &mut self,
+        nodes: &Nodes,
+        zones: &mut Zones,
+        laws: &[Box<dyn ZoneLaw>],
+        gather: &Gather,
+        inv_patch: Option<&[f64]>,
+        p: &CycleParams,
+    ) {
         match p.scheme {
-            ZoneScheme::SmallStrain => self.zone_forces_small(model, p),
-            ZoneScheme::Mixed => self.zone_forces_mixed(model, p),
-            ZoneScheme::LargeStrain => self.zone_forces_large(model, p),
+            ZoneScheme::SmallStrain => self.zone_forces_small(nodes, zones, laws, p),
+            ZoneScheme::Mixed => {
+                let inv_patch = inv_patch.expect("the mixed scheme is chosen only with patches");
+                self.zone_forces_mixed(nodes, zones, laws, gather, inv_patch, p)
+            }
+            ZoneScheme::LargeStrain => self.zone_forces_large(nodes, zones, laws, p),
         }
     }
 
     /// Small-strain zone stage: strain increment from node velocities, Δε = sym(∇v)Δt with the CST
     /// gradients, stress update by the zone law, then corner forces f_i = −A σ·∇N_i
     /// (the virtual-work nodal force of a constant-stress triangle).
-    fn zone_forces_small(&mut self, model: &mut Model, p: &CycleParams) {
-        let Model {
-            nodes, zones, laws, ..
-        } = model;
+    fn zone_forces_small(
+        &mut self,
+        nodes: &Nodes,
+        zones: &mut Zones,
+        laws: &[Box<dyn ZoneLaw>],
+        p: &CycleParams,
+    ) {
         let vel = &nodes.vel;
         let (dt, viscous) = (p.dt, p.viscous_ratio());
         zones
@@ -260,14 +323,14 @@ impl Cycle {
     /// the scene or a test prescribes one), as FLAC's FIX. Returns the largest node speed, m/s,
     /// and records in `jump` the largest step relative to the node's zone size (an explicit
     /// scheme past its stability limit grows such steps by a large factor every cycle).
-    pub fn motion(&mut self, model: &mut Model, p: &CycleParams) -> f64 {
-        let Model {
-            nodes,
-            gather,
-            contact_gather,
-            support_gather,
-            ..
-        } = model;
+    pub fn motion(
+        &mut self,
+        nodes: &mut Nodes,
+        gather: &Gather,
+        contact_gather: &Gather,
+        support_gather: &Gather,
+        p: &CycleParams,
+    ) -> f64 {
         let (zf, cf, sf) = (&self.zone_force, &self.contact_force, &self.support_force);
         let inv_size = &self.inv_size;
         let (alpha, dt) = (p.damping, p.dt);

@@ -191,7 +191,14 @@ pub fn turned(large_strain: bool) -> anyhow::Result<Turned> {
             m.nodes.vel[i] = [(b[0] - a[0]) / dt, (b[1] - a[1]) / dt];
             m.nodes.disp[i] = [b[0] - p[0], b[1] - p[1]];
         }
-        solver.cycle.zone_forces(m, &solver.params);
+        solver.cycle.zone_forces(
+            &m.nodes,
+            &mut m.zones,
+            &m.laws,
+            &m.gather,
+            m.mixed.as_deref(),
+            &solver.params,
+        );
     }
     Ok(Turned {
         large_strain,
