@@ -4,8 +4,7 @@
 
 use adit_meshing::BoundaryEdge;
 
-use crate::model::Contacts;
-use crate::model::{FIX_X, FIX_Y, Gather, MaterialId, Model, traction};
+use crate::model::{FIX_X, FIX_Y, MaterialId, Model, traction};
 use crate::scene::{BoundaryCondition, Scene, Stage};
 use crate::setup::{
     NOT_FILL, Setup, add_body_weight, add_tractions, add_zone_weight, boundary_effect,
@@ -253,21 +252,7 @@ pub fn remove_fill(model: &mut Model, j: u32) {
             !blocks.is_removed(node_block) && !blocks.is_removed(model.contacts.block[c] as usize)
         })
         .collect();
-    let old = std::mem::take(&mut model.contacts);
-    let mut kept = Contacts::default();
-    for (c, _) in keep.iter().enumerate().filter(|(_, k)| **k) {
-        kept.node.push(old.node[c]);
-        kept.edge.push(old.edge[c]);
-        kept.block.push(old.block[c]);
-        kept.xi.push(old.xi[c]);
-        kept.length.push(old.length[c]);
-        kept.material.push(old.material[c]);
-        kept.corner.push(old.corner[c]);
-        kept.state.push(old.state[c]);
-    }
-    model.contacts = kept;
-    model.contact_gather = Gather::new(
-        model.nodes.len(),
-        &model.contacts.triples(&model.blocks.edges),
-    );
+    model.contacts = model
+        .contacts
+        .kept(&keep, model.nodes.len(), &model.blocks.edges);
 }

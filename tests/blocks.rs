@@ -336,7 +336,7 @@ fn fresh_contacts_found_deep_start_at_zero_overlap() {
             joint_material: &m.joint_material,
             hole_material: &m.hole_material,
         };
-        cycle.detect(&d, &mut m.contacts, &mut m.contact_gather);
+        cycle.detect(&d, &mut m.contacts);
         let c = &m.contacts;
         let sunk: Vec<usize> = (0..c.len())
             .filter(|&k| m.blocks.block_of_node(c.node[k]) == top)

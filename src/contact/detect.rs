@@ -651,7 +651,7 @@ fn detect_gridded(
         out.corner.push(corner);
         out.state.push(state);
     }
-    out
+    out.indexed(d.x.len(), &d.blocks.edges)
 }
 
 #[cfg(test)]

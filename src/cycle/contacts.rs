@@ -7,7 +7,7 @@ use crate::contact::detect::{Detection, Touch, detect};
 use crate::contact::rounding;
 use crate::joint::{FAILED, JointLaw, JointState};
 use crate::model::blocks::Blocks;
-use crate::model::{Contacts, Gather, Nodes};
+use crate::model::{Contacts, Nodes};
 
 impl Cycle {
     /// Detect stage: re-detect contacts at the current positions. Persisting contacts keep their
@@ -16,7 +16,7 @@ impl Cycle {
     /// then growing from zero as in UDEC's incremental contacts: a node found behind an edge by a
     /// changed facing (below the toe of a neighbour's corner, say) must not get the whole overlap's
     /// force in one cycle.
-    pub fn detect(&mut self, d: &Detection, contacts: &mut Contacts, contact_gather: &mut Gather) {
+    pub fn detect(&mut self, d: &Detection, contacts: &mut Contacts) {
         let shallow = -0.1 * d.tolerance;
         let fresh = |t: &Touch| JointState {
             normal_displacement: if t.gap >= shallow { t.gap } else { 0.0 },
@@ -24,7 +24,6 @@ impl Cycle {
             ..Default::default()
         };
         *contacts = detect(d, contacts, &fresh);
-        *contact_gather = Gather::new(d.x.len(), &contacts.triples(&d.blocks.edges));
         self.contact_force.resize(3 * contacts.len(), [0.0; 2]);
         self.moved = 0.0;
         self.detections += 1;

@@ -164,7 +164,6 @@ impl Cycle {
             blocks,
             bodies,
             contacts,
-            contact_gather,
             joint_laws,
             joint_material,
             contact_tolerance,
@@ -184,7 +183,7 @@ impl Cycle {
                 joint_material,
                 hole_material,
             };
-            self.detect(&d, contacts, contact_gather);
+            self.detect(&d, contacts);
         }
         let t1 = Instant::now();
         self.contact_forces(nodes, blocks, contacts, joint_laws, p);
@@ -194,7 +193,7 @@ impl Cycle {
         self.structural_forces(supports, &nodes.disp, p);
         let t4 = Instant::now();
         let speed = self
-            .motion(nodes, gather, contact_gather, support_gather, p)
+            .motion(nodes, gather, &contacts.gather, support_gather, p)
             .max(self.body_motion(nodes, bodies, laws, p));
         self.moved += speed * p.dt;
         let t5 = Instant::now();
@@ -302,7 +301,7 @@ impl Cycle {
         let mut f = model.nodes.applied[n];
         let sources = [
             (&model.gather, &self.zone_force),
-            (&model.contact_gather, &self.contact_force),
+            (&model.contacts.gather, &self.contact_force),
             (&model.support_gather, &self.support_force),
         ];
         for (gather, forces) in sources {

@@ -40,7 +40,7 @@ impl Cycle {
                         let z = self.zone_force[s as usize];
                         gross += (z[0] * z[0] + z[1] * z[1]).sqrt();
                     }
-                    for &s in model.contact_gather.of(i) {
+                    for &s in model.contacts.gather.of(i) {
                         let c = self.contact_force[s as usize];
                         gross += (c[0] * c[0] + c[1] * c[1]).sqrt();
                     }

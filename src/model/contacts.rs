@@ -2,6 +2,7 @@
 //! another (UDEC's deformable-block contacts), each with a joint state that persists across
 //! re-detection (`contact::detect`).
 
+use super::Gather;
 use crate::joint::JointState;
 
 /// Structure-of-arrays contact data.
@@ -24,6 +25,9 @@ pub struct Contacts {
     /// ξ = 0, along the line of the rounding centres) rather than node against edge.
     pub corner: Vec<bool>,
     pub state: Vec<JointState>,
+    /// For each node, the slots of the contact-force buffer acting on it (contact·3 + role): made
+    /// with the list (`indexed`, `none`, `kept`), so it always follows it.
+    pub gather: Gather,
 }
 
 impl Contacts {
@@ -33,6 +37,33 @@ impl Contacts {
 
     pub fn is_empty(&self) -> bool {
         self.node.is_empty()
+    }
+
+    /// No contacts, among `nodes` nodes.
+    pub fn none(nodes: usize) -> Contacts {
+        Contacts::default().indexed(nodes, &[])
+    }
+
+    /// The list with its gather made for `nodes` nodes and the blocks' `edges`.
+    pub fn indexed(mut self, nodes: usize, edges: &[[u32; 2]]) -> Contacts {
+        self.gather = Gather::new(nodes, &self.triples(edges));
+        self
+    }
+
+    /// The contacts `c` with `keep[c]`, in order, indexed as `indexed` does.
+    pub fn kept(&self, keep: &[bool], nodes: usize, edges: &[[u32; 2]]) -> Contacts {
+        let mut kept = Contacts::default();
+        for (c, _) in keep.iter().enumerate().filter(|(_, k)| **k) {
+            kept.node.push(self.node[c]);
+            kept.edge.push(self.edge[c]);
+            kept.block.push(self.block[c]);
+            kept.xi.push(self.xi[c]);
+            kept.length.push(self.length[c]);
+            kept.material.push(self.material[c]);
+            kept.corner.push(self.corner[c]);
+            kept.state.push(self.state[c]);
+        }
+        kept.indexed(nodes, edges)
     }
 
     /// The three nodes each contact acts on: its node, then the edge's two nodes.

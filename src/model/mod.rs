@@ -82,9 +82,8 @@ pub struct Model {
     pub blocks: blocks::Blocks,
     /// Rigid and simple blocks (deformable blocks have zones instead).
     pub bodies: bodies::Bodies,
+    /// Contacts, with the gather of their force slots.
     pub contacts: Contacts,
-    /// For each node, the slots of the contact-force buffer acting on it (contact·3 + role).
-    pub contact_gather: Gather,
     /// Joint laws, indexed by joint material id.
     pub joint_laws: Vec<Box<dyn JointLaw>>,
     pub joint_material_names: Vec<String>,

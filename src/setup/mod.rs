@@ -490,7 +490,7 @@ pub fn setup_meshed(scene: &Scene, meshed: Meshed) -> anyhow::Result<Setup> {
         };
         detect(&d, &Contacts::default(), &in_situ_joint)
     } else {
-        Contacts::default()
+        Contacts::none(nodes.len())
     };
 
     let mut warnings = Vec::new();
@@ -537,7 +537,6 @@ pub fn setup_meshed(scene: &Scene, meshed: Meshed) -> anyhow::Result<Setup> {
 
     let size = domain.outer.size();
     let gather = Gather::new(nodes.len(), &zones.nodes);
-    let contact_gather = Gather::new(nodes.len(), &contacts.triples(&blocks.edges));
     let mut model = Model {
         nodes,
         zones,
@@ -548,7 +547,6 @@ pub fn setup_meshed(scene: &Scene, meshed: Meshed) -> anyhow::Result<Setup> {
         blocks,
         bodies,
         contacts,
-        contact_gather,
         joint_laws,
         joint_material_names,
         joint_material,
