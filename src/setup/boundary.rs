@@ -53,6 +53,10 @@ pub fn part_nodes(
     parts
 }
 
+/// Fixity flags of each node (`FIX_X`, `FIX_Y`) and its consistent nodal load, N/m, from a list of
+/// boundary conditions.
+pub type BoundaryEffect = (Vec<u8>, Vec<[f64; 2]>);
+
 /// Fixity flags and consistent nodal loads (N/m) of the boundary conditions `conditions` alone, on
 /// nodes at `pos`, as `setup` applies them.
 pub fn boundary_effect(
@@ -62,7 +66,7 @@ pub fn boundary_effect(
     domain: &Domain,
     part_nodes: &BTreeMap<String, Vec<u32>>,
     pos: &[[f64; 2]],
-) -> (Vec<u8>, Vec<[f64; 2]>) {
+) -> BoundaryEffect {
     let mut scratch = Nodes::at(pos.to_vec());
     for bc in conditions {
         let part = bc.part.as_deref().unwrap_or("");

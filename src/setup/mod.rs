@@ -1,36 +1,39 @@
 //! From a validated scene to a model: cut the region into blocks, zone each block, initialise the
 //! in-situ stress in zones and joints, apply fixities, boundary tractions and gravity, and detect
-//! the contacts along the joints.
+//! the contacts along the joints. `setup_meshed` is the recipe; the material catalogues are in
+//! `catalogue.rs`, what is worth a warning in `warnings.rs`.
 
 mod bodies;
 pub use bodies::add_body_weight;
 mod boundary;
+mod catalogue;
 mod geometry;
 mod repair;
 mod stage_regions;
 mod supports;
 #[cfg(test)]
 mod tests;
+mod warnings;
 
 use std::collections::BTreeMap;
 
 use adit_meshing::{BoundaryEdge, Domain, EdgeKind, MeshStats};
 
 use boundary::part_nodes;
-pub use boundary::{add_tractions, boundary_effect, edge_in_part};
+pub use boundary::{BoundaryEffect, add_tractions, boundary_effect, edge_in_part};
 pub use geometry::{Meshed, NOT_FILL, domain, joint_segments, mesh, zoning};
 
-use crate::contact::detect::{Detection, NO_MATERIAL, Touch, detect};
-use crate::joint::{
-    ContinuouslyYielding, CoulombSlip, FAILED, Glued, JointLaw, JointState, tan_deg,
-};
-use crate::law::{Elastic, MohrCoulomb, Null, ZoneLaw};
+use catalogue::{JointCatalogue, ZoneCatalogue};
+pub use catalogue::{joint_law, zone_law};
+use warnings::warnings;
+
+use crate::contact::detect::{Detection, Touch, detect};
+use crate::joint::{FAILED, JointState};
+use crate::law::ZoneLaw;
 use crate::model::Contacts;
 use crate::model::blocks::{Blocks, NO_EDGE};
 use crate::model::{BODY, Gather, MaterialId, Model, Nodes, Zones, traction};
-use crate::scene::{
-    BlockMode, BoundaryCondition, InSitu, JointLawKind, JointMaterial, Material, Scene, ZoneLawKind,
-};
+use crate::scene::{BlockMode, BoundaryCondition, InSitu, Scene};
 
 /// A model ready to cycle, with what was learnt while building it.
 pub struct Setup {
@@ -46,42 +49,6 @@ pub struct Setup {
     pub stage_materials: Vec<Vec<(u32, MaterialId)>>,
     /// Things worth a warning: sliver blocks, joints absorbed into blocks.
     pub warnings: Vec<String>,
-}
-
-/// Most thin blocks named one by one in the warnings; the rest are counted.
-const THIN_NAMED: usize = 10;
-
-/// A warning for each block too thin to zone at the finest size asked for (the first
-/// `THIN_NAMED`, then a count), saying what became of it.
-fn thin_warnings(scene: &Scene, meshed: &Meshed) -> Vec<String> {
-    let made = match scene.blocks.thin {
-        BlockMode::Deformable => {
-            "zoned as finely as it needs (its zones may set the time step; blocks.thin: \
-             \"simple\" or \"rigid\" takes it out of the zoning)"
-        }
-        BlockMode::Simple => "made simple (blocks.thin)",
-        BlockMode::Rigid => "made rigid (blocks.thin)",
-    };
-    let mut out: Vec<String> = meshed
-        .thin
-        .iter()
-        .take(THIN_NAMED)
-        .map(|t| {
-            let c = meshed.blocking.blocks[t.block].outer.centroid();
-            format!(
-                "block {} (centroid ({:.3}, {:.3}) m) is {:.3e} m thick (2 × area / perimeter), \
-                 under half zoning.edge_at_excavation = {} m: {made}",
-                t.block, c[0], c[1], t.thickness, scene.zoning.edge_at_excavation
-            )
-        })
-        .collect();
-    if meshed.thin.len() > THIN_NAMED {
-        out.push(format!(
-            "{} more blocks are as thin, and were treated alike",
-            meshed.thin.len() - THIN_NAMED
-        ));
-    }
-    out
 }
 
 /// The wall edges of excavation `j` on the rock that stays: not the edges of its own fill (the
@@ -176,26 +143,6 @@ fn assemble(meshed: &Meshed) -> Assembled {
     }
 }
 
-/// The zone law of a material (scene-validated).
-pub fn zone_law(m: &Material) -> Box<dyn ZoneLaw> {
-    let elastic = Elastic::from_young(m.young, m.poisson, m.density);
-    match m.law {
-        ZoneLawKind::Elastic => Box::new(elastic),
-        ZoneLawKind::MohrCoulomb => {
-            let c = m.cohesion.expect("validated");
-            let phi = m.friction.expect("validated");
-            let tension = m.tensile_strength.unwrap_or(f64::INFINITY);
-            let mut law = MohrCoulomb::new(elastic, c, phi, m.dilation, tension);
-            law.softening = m
-                .softening
-                .iter()
-                .map(|p| (p.plastic_strain, p.cohesion, p.friction.to_radians()))
-                .collect();
-            Box::new(law)
-        }
-    }
-}
-
 /// Add the weight of the zones under gravity `g` (m/s²) to their corners' applied loads: ρ g A / 3
 /// on each corner (lumped), N/m.
 pub fn add_zone_weight(nodes: &mut Nodes, zones: &Zones, laws: &[Box<dyn ZoneLaw>], g: [f64; 2]) {
@@ -211,60 +158,19 @@ pub fn add_zone_weight(nodes: &mut Nodes, zones: &Zones, laws: &[Box<dyn ZoneLaw
     }
 }
 
-/// The joint law of a joint material (scene-validated).
-pub fn joint_law(j: &JointMaterial) -> Box<dyn JointLaw> {
-    let (normal_stiffness, shear_stiffness) = (j.normal_stiffness, j.shear_stiffness);
-    match j.law {
-        JointLawKind::Glued => Box::new(Glued {
-            normal_stiffness,
-            shear_stiffness,
-        }),
-        JointLawKind::Coulomb => Box::new(CoulombSlip {
-            normal_stiffness,
-            shear_stiffness,
-            tan_friction: tan_deg(j.friction),
-            cohesion: j.cohesion,
-            tensile_strength: j.tensile_strength,
-            tan_dilation: tan_deg(j.dilation),
-        }),
-        JointLawKind::ContinuouslyYielding => Box::new(ContinuouslyYielding {
-            normal_stiffness,
-            shear_stiffness,
-            friction: j.friction.to_radians(),
-            initial_friction: j.initial_friction.unwrap_or(j.friction).to_radians(),
-            roughness: j.roughness.expect("validated"),
-        }),
-    }
-}
-
 /// Build the model of a validated scene.
 pub fn setup(scene: &Scene) -> anyhow::Result<Setup> {
     setup_meshed(scene, mesh(scene)?)
 }
 
-/// The mesh's sharpest zone against `zoning.accept_angle`: an error naming the block and where.
-fn refuse_sharp_zones(scene: &Scene, meshed: &Meshed) -> anyhow::Result<()> {
-    let sharpest = meshed.sharpest_zone();
-    let accept = scene.zoning.accept_angle;
-    match sharpest {
-        Some((angle, at, b)) if angle < accept => anyhow::bail!(
-            "zoning.accept_angle: a zone of block {b} near ({:.3}, {:.3}) m has an angle of \
-             {angle:.2}°, below the {accept}° accepted (joints or walls meet at such an angle, or \
-             lie closer than the zoning there; it would set a tiny time step): move or coarsen \
-             the joints, or lower `zoning.accept_angle` (0 accepts any)",
-            at[0],
-            at[1]
-        ),
-        _ => Ok(()),
-    }
-}
-
-/// [`setup`] from the blocks and zones `mesh` made of `scene`.
+/// [`setup`] from the blocks and zones `mesh` made of `scene`: join the block meshes, give the
+/// zones their materials and in-situ stress, load and fix the boundary, make the rigid and simple
+/// blocks, set up the joint laws and the contacts along the joints, then the supports.
 pub fn setup_meshed(scene: &Scene, meshed: Meshed) -> anyhow::Result<Setup> {
     let stats = meshed.stats();
     let Assembled {
         pos,
-        triangles: tris,
+        triangles,
         zone_block,
         outline,
         outline_block,
@@ -272,62 +178,134 @@ pub fn setup_meshed(scene: &Scene, meshed: Meshed) -> anyhow::Result<Setup> {
         boundary,
     } = assemble(&meshed);
     let mut nodes = Nodes::at(pos);
-    let mut zones = Zones::from_triangles(&tris, &nodes.pos);
+    let mut zones = Zones::from_triangles(&triangles, &nodes.pos);
     zones.block = zone_block;
 
-    let mut material_names: Vec<String> = scene.materials.keys().cloned().collect();
-    let mut laws: Vec<Box<dyn ZoneLaw>> = scene.materials.values().map(zone_law).collect();
-    let region_mat = material_names
-        .iter()
-        .position(|n| *n == scene.region.material)
-        .expect("validated");
-    // Excavated zones take the null law (the last material).
-    let null_material = (!scene.stages.is_empty()).then(|| {
-        material_names.push("excavated".into());
-        laws.push(Box::new(Null));
-        MaterialId((laws.len() - 1) as u32)
-    });
-    // Each block's material: the region's, or its inclusion's.
-    let material_id = |name: &str| {
-        MaterialId(
-            material_names
-                .iter()
-                .position(|n| n == name)
-                .expect("validated") as u32,
-        )
+    let zone_laws = ZoneCatalogue::of(scene);
+    let block_material = zone_laws.of_blocks(scene, &meshed);
+    let stage_materials =
+        stage_regions::stage_materials(scene, &meshed.blocking.blocks, &block_material, &|name| {
+            zone_laws.id(name)
+        })?;
+    let stress_at = |c: [f64; 2], m: MaterialId| {
+        in_situ_stress(&scene.in_situ, c[1], zone_laws.poisson[m.0 as usize])
     };
-    let block_material: Vec<MaterialId> = meshed
-        .inclusion
-        .iter()
-        .map(|&i| match scene.inclusions.get(i as usize) {
-            Some(inc) => material_id(&inc.material),
-            None => MaterialId(region_mat as u32),
-        })
-        .collect();
-    let stage_materials = stage_regions::stage_materials(
-        scene,
-        &meshed.blocking.blocks,
-        &block_material,
-        &material_id,
-    )?;
-    let poisson: Vec<f64> = scene.materials.values().map(|m| m.poisson).collect();
-    let stress_at =
-        |c: [f64; 2], m: MaterialId| in_situ_stress(&scene.in_situ, c[1], poisson[m.0 as usize]);
-    for z in 0..zones.len() {
-        let m = block_material[zones.block[z] as usize];
-        zones.material[z] = m;
-        zones.stress[z] = stress_at(zones.centroid(z, &nodes.pos), m);
-    }
-
-    // Gravity: body force ρ g A / 3 on each corner (lumped).
-    add_zone_weight(&mut nodes, &zones, &laws, scene.gravity);
+    stress_zones(&mut zones, &nodes.pos, &block_material, stress_at);
+    add_zone_weight(&mut nodes, &zones, &zone_laws.laws, scene.gravity);
 
     let domain = &meshed.domain;
     let part_nodes = part_nodes(scene, domain, &boundary);
     let effect = |conditions: &[BoundaryCondition], pos: &[[f64; 2]]| {
         boundary_effect(conditions, scene, &boundary, domain, &part_nodes, pos)
     };
-    let (fixed, applied) = effect(&scene.boundary, &nodes.pos);
+    let conditions = effect(&scene.boundary, &nodes.pos);
+    let fixed = apply(&mut nodes, conditions);
+
+    let mut bodies = bodies::bodies(
+        &meshed.modes,
+        &blocks,
+        &mut nodes,
+        &block_material,
+        &zone_laws.laws,
+        stress_at,
+        scene.gravity,
+    );
+    if !bodies.is_empty() {
+        blocks.round = bodies::round(scene, &bodies, &blocks, &nodes.pos, &meshed.modes);
+    }
+    bodies.outline = outline;
+    refuse_body_fixity_changes(scene, &nodes, fixed, effect)?;
+    let body_of_block: BTreeMap<u32, u32> = bodies
+        .block
+        .iter()
+        .enumerate()
+        .map(|(k, &b)| (b, k as u32))
+        .collect();
+    bodies.outline_body = outline_block.iter().map(|b| body_of_block[b]).collect();
+
+    let joint_laws = JointCatalogue::of(scene, &meshed);
+    anyhow::ensure!(
+        blocks.len() == 1 || !joint_laws.laws.is_empty(),
+        "joint_materials: {} blocks need at least one joint material for their contacts",
+        blocks.len()
+    );
+    let contact_tolerance = scene
+        .contacts
+        .tolerance
+        .unwrap_or(0.05 * scene.zoning.edge_at_excavation);
+    let contacts = if blocks.len() > 1 {
+        let d = Detection {
+            blocks: &blocks,
+            x: &nodes.pos,
+            tolerance: contact_tolerance,
+            joint_material: &joint_laws.feature,
+            hole_material: &joint_laws.hole,
+        };
+        let region_poisson = zone_laws.poisson[zone_laws.region.0 as usize];
+        detect(&d, &Contacts::default(), &|t: &Touch| {
+            in_situ_joint(&scene.in_situ, region_poisson, t)
+        })
+    } else {
+        Contacts::none(nodes.len())
+    };
+
+    let warnings = warnings(scene, &meshed)?;
+
+    let size = domain.outer.size();
+    let gather = Gather::new(nodes.len(), &zones.nodes);
+    let mixed = scene
+        .zoning
+        .mixed
+        .then(|| inverse_patch_areas(&zones, nodes.len()));
+    let mut model = Model {
+        nodes,
+        zones,
+        gather,
+        laws: zone_laws.laws,
+        material_names: zone_laws.names,
+        size,
+        blocks,
+        bodies,
+        contacts,
+        joint_laws: joint_laws.laws,
+        joint_material_names: joint_laws.names,
+        joint_material: joint_laws.feature,
+        contact_tolerance,
+        hole_material: joint_laws.hole,
+        fill: meshed.fill.clone(),
+        null_material: zone_laws.null,
+        supports: Default::default(),
+        support_gather: Gather::default(),
+        mixed,
+    };
+    install_supports(scene, &mut model, &meshed.domain, &boundary)?;
+    Ok(Setup {
+        model,
+        mesh: stats,
+        part_nodes,
+        boundary,
+        domain: meshed.domain,
+        stage_materials,
+        warnings,
+    })
+}
+
+/// Each zone takes its block's material and the in-situ stress at its centroid.
+fn stress_zones(
+    zones: &mut Zones,
+    pos: &[[f64; 2]],
+    block_material: &[MaterialId],
+    stress_at: impl Fn([f64; 2], MaterialId) -> [f64; 4],
+) {
+    for z in 0..zones.len() {
+        let m = block_material[zones.block[z] as usize];
+        zones.material[z] = m;
+        zones.stress[z] = stress_at(zones.centroid(z, pos), m);
+    }
+}
+
+/// Add the boundary's fixities and loads `(fixed, applied)` to the nodes; the fixities.
+fn apply(nodes: &mut Nodes, (fixed, applied): BoundaryEffect) -> Vec<u8> {
     for n in 0..nodes.len() {
         nodes.fixed[n] |= fixed[n];
         nodes.applied[n] = [
@@ -335,28 +313,18 @@ pub fn setup_meshed(scene: &Scene, meshed: Meshed) -> anyhow::Result<Setup> {
             nodes.applied[n][1] + applied[n][1],
         ];
     }
+    fixed
+}
 
-    let mut bodies = bodies::bodies(
-        &meshed.modes,
-        &blocks,
-        &mut nodes,
-        &block_material,
-        &laws,
-        stress_at,
-        scene.gravity,
-    );
-    if !bodies.is_empty() {
-        blocks.round = bodies::round(scene, &bodies, &blocks, &nodes.pos, &meshed.modes);
-    }
-    let body_of_block: BTreeMap<u32, u32> = bodies
-        .block
-        .iter()
-        .enumerate()
-        .map(|(k, &b)| (b, k as u32))
-        .collect();
-    bodies.outline = outline;
-    // A stage's boundary conditions change node fixities and loads; the fixities of a rigid or
-    // simple block's nodes are folded into its constraint here, once, so they cannot change.
+/// A stage's boundary conditions change node fixities and loads; the fixities of a rigid or simple
+/// block's nodes are folded into its constraint once, when it is made, so a stage that changes one
+/// is an error naming the stage. `fixed`: the fixities of the top-level `boundary`.
+fn refuse_body_fixity_changes(
+    scene: &Scene,
+    nodes: &Nodes,
+    fixed: Vec<u8>,
+    effect: impl Fn(&[BoundaryCondition], &[[f64; 2]]) -> BoundaryEffect,
+) -> anyhow::Result<()> {
     let mut before = fixed;
     for (i, stage) in scene.stages.iter().enumerate() {
         let Some(list) = &stage.boundary else {
@@ -377,204 +345,60 @@ pub fn setup_meshed(scene: &Scene, meshed: Meshed) -> anyhow::Result<Setup> {
         }
         before = after;
     }
-    bodies.outline_body = outline_block.iter().map(|b| body_of_block[b]).collect();
+    Ok(())
+}
 
-    // Joint laws, and the material of each joint feature (sets first, then explicit joints).
-    let mut joint_material_names: Vec<String> = scene.joint_materials.keys().cloned().collect();
-    let mut joint_laws: Vec<Box<dyn JointLaw>> =
-        scene.joint_materials.values().map(joint_law).collect();
-    let material_index = |name: &str| {
-        joint_material_names
-            .iter()
-            .position(|n| n == name)
-            .expect("validated") as u32
-    };
-    let joint_material: Vec<u32> = scene
-        .joint_sets
-        .iter()
-        .map(|s| material_index(&s.material))
-        .chain(scene.joints.iter().map(|j| material_index(&j.material)))
-        .chain(scene.voronoi.iter().map(|v| material_index(&v.material)))
-        .collect();
-    let contact_tolerance = scene
-        .contacts
-        .tolerance
-        .unwrap_or(0.05 * scene.zoning.edge_at_excavation);
-    // The rock filling a staged excavation is glued to its surroundings until it is removed, with
-    // the stiffness of the stiffest joint material, or of the rock over a wall zone (E/h) if there
-    // is none (so that filling adds nothing stiffer than the model already has).
-    let fill_material = meshed.fill.iter().any(|&f| f != NOT_FILL).then(|| {
-        let (kn, ks) = joint_laws
-            .iter()
-            .map(|l| l.stiffness())
-            .fold(None, |m: Option<(f64, f64)>, k| {
-                Some(m.map_or(k, |m| (m.0.max(k.0), m.1.max(k.1))))
-            })
-            .unwrap_or_else(|| {
-                let e = scene.materials[&scene.region.material].young;
-                let k = e / scene.zoning.edge_at_excavation;
-                (k, 0.5 * k)
-            });
-        joint_material_names.push("excavation fill".into());
-        joint_laws.push(Box::new(Glued {
-            normal_stiffness: kn,
-            shear_stiffness: ks,
-        }));
-        (joint_laws.len() - 1) as u32
-    });
-    // Inclusions are bonded to the rock around: glued, kn = (largest E of the rock and the
-    // inclusions) / h at the excavation, so the interface is stiffer than a zone of either side.
-    let inclusion_material = (!scene.inclusions.is_empty()).then(|| {
-        let e = scene
-            .inclusions
-            .iter()
-            .map(|i| &i.material)
-            .chain([&scene.region.material])
-            .map(|m| scene.materials[m].young)
-            .fold(0.0, f64::max);
-        let k = e / scene.zoning.edge_at_excavation;
-        joint_material_names.push("inclusion interface".into());
-        joint_laws.push(Box::new(Glued {
-            normal_stiffness: k,
-            shear_stiffness: 0.5 * k,
-        }));
-        (joint_laws.len() - 1) as u32
-    });
-    // The joint material of each hole's wall: a staged excavation's fill, an inclusion's
-    // interface, none for a hole from the start.
-    let hole_material: Vec<u32> = (0..meshed.domain.holes.len())
-        .map(|j| match scene.excavations.get(j) {
-            Some(e) if scene.is_staged(&e.name) => fill_material,
-            Some(_) => None,
-            None => inclusion_material,
-        })
-        .map(|m| m.unwrap_or(NO_MATERIAL))
-        .collect();
-    anyhow::ensure!(
-        blocks.len() == 1 || !joint_laws.is_empty(),
-        "joint_materials: {} blocks need at least one joint material for their contacts",
-        blocks.len()
-    );
-
-    // Joints present from the start are intact and carry the in-situ traction; corner contacts
-    // (blocks meeting at a point, not along a joint) start unstressed, without strength, at their
-    // gap if apart (rounded corners of diagonal blocks at a joint crossing), else at zero overlap
-    // (the cut geometry has none; a negative gap is an artefact of the corner).
-    let in_situ_joint = |t: &Touch| {
-        if !t.face {
-            return JointState {
-                normal_displacement: t.gap.max(0.0),
-                flags: FAILED,
-                ..Default::default()
-            };
-        }
-        let s = in_situ_stress(&scene.in_situ, t.point[1], poisson[region_mat]);
-        let n = t.normal;
-        let tangent = [-n[1], n[0]];
-        let t = traction(&s, n);
-        let normal = t[0] * n[0] + t[1] * n[1];
-        JointState {
-            normal,
-            shear: t[0] * tangent[0] + t[1] * tangent[1],
-            initial_normal: normal,
+/// The joint state a contact found at setup starts in. Joints present from the start are intact
+/// and carry the in-situ traction of the region's rock (Poisson's ratio `poisson`); corner contacts
+/// (blocks meeting at a point, not along a joint) start unstressed, without strength, at their gap
+/// if apart (rounded corners of diagonal blocks at a joint crossing), else at zero overlap (the cut
+/// geometry has none; a negative gap is an artefact of the corner).
+fn in_situ_joint(in_situ: &InSitu, poisson: f64, t: &Touch) -> JointState {
+    if !t.face {
+        return JointState {
+            normal_displacement: t.gap.max(0.0),
+            flags: FAILED,
             ..Default::default()
-        }
-    };
-    let contacts = if blocks.len() > 1 {
-        let d = Detection {
-            blocks: &blocks,
-            x: &nodes.pos,
-            tolerance: contact_tolerance,
-            joint_material: &joint_material,
-            hole_material: &hole_material,
         };
-        detect(&d, &Contacts::default(), &in_situ_joint)
-    } else {
-        Contacts::none(nodes.len())
-    };
+    }
+    let s = in_situ_stress(in_situ, t.point[1], poisson);
+    let n = t.normal;
+    let tangent = [-n[1], n[0]];
+    let t = traction(&s, n);
+    let normal = t[0] * n[0] + t[1] * n[1];
+    JointState {
+        normal,
+        shear: t[0] * tangent[0] + t[1] * tangent[1],
+        initial_normal: normal,
+        ..Default::default()
+    }
+}
 
-    let mut warnings = Vec::new();
-    let mut is_thin = vec![false; meshed.blocking.blocks.len()];
-    for t in &meshed.thin {
-        is_thin[t.block] = true;
-    }
-    for &b in meshed.blocking.slivers.iter().filter(|&&b| !is_thin[b]) {
-        let blk = &meshed.blocking.blocks[b];
-        warnings.push(format!(
-            "block {b} is a sliver (area {:.3e} m²); consider coarser joints or zoning",
-            blk.area()
-        ));
-    }
-    warnings.extend(thin_warnings(scene, &meshed));
-    refuse_sharp_zones(scene, &meshed)?;
-    warnings.extend(meshed.repairs.iter().cloned());
-    for (b, mesh) in meshed.meshes.iter().enumerate() {
-        if meshed.modes[b] == BlockMode::Deformable && mesh.angle_limit_deg < scene.zoning.min_angle
-        {
-            let c = meshed.blocking.blocks[b].outer.centroid();
-            warnings.push(format!(
-                "block {b} (centroid ({:.3}, {:.3}) m): refinement to zoning.min_angle = {}° did not \
-                 end (its constraints meet at small angles); zoned aiming at {}°",
-                c[0], c[1], scene.zoning.min_angle, mesh.angle_limit_deg
-            ));
+/// The mixed discretization's 1 / (area of the zones around each node), 1/m² (0 at a node without
+/// zones).
+fn inverse_patch_areas(zones: &Zones, nodes: usize) -> Vec<f64> {
+    let mut patch = vec![0.0; nodes];
+    for (t, &a) in zones.nodes.iter().zip(&zones.area) {
+        for &n in t {
+            patch[n as usize] += a;
         }
     }
-    let merges = meshed.blocking.merges;
-    if merges.count > 0 {
-        warnings.push(format!(
-            "cutting moved {} vertices onto others within zoning.merge_tolerance = {:.4} m (joint \
-             ends onto joints or walls, crossings onto corners); the largest move, {:.4} m, onto \
-             ({:.3}, {:.3}) m",
-            merges.count, meshed.merge_tolerance, merges.largest, merges.at[0], merges.at[1]
-        ));
-    }
-    if meshed.blocking.absorbed_joint_length > 0.0 {
-        warnings.push(format!(
-            "{:.3} m of joint traces end inside blocks and were absorbed into them",
-            meshed.blocking.absorbed_joint_length
-        ));
-    }
+    patch
+        .into_iter()
+        .map(|a| if a > 0.0 { 1.0 / a } else { 0.0 })
+        .collect()
+}
 
-    let size = domain.outer.size();
-    let gather = Gather::new(nodes.len(), &zones.nodes);
-    let mut model = Model {
-        nodes,
-        zones,
-        gather,
-        laws,
-        material_names,
-        size,
-        blocks,
-        bodies,
-        contacts,
-        joint_laws,
-        joint_material_names,
-        joint_material,
-        contact_tolerance,
-        hole_material,
-        fill: meshed.fill.clone(),
-        null_material,
-        supports: Default::default(),
-        support_gather: Gather::default(),
-        mixed: None,
-    };
-    if scene.zoning.mixed {
-        let mut patch = vec![0.0; model.nodes.len()];
-        for (t, &a) in model.zones.nodes.iter().zip(&model.zones.area) {
-            for &n in t {
-                patch[n as usize] += a;
-            }
-        }
-        model.mixed = Some(
-            patch
-                .into_iter()
-                .map(|a| if a > 0.0 { 1.0 / a } else { 0.0 })
-                .collect(),
-        );
-    }
-    model.supports = supports::supports(scene, &model, &meshed.domain, &boundary)?;
+/// The scene's bolts and liners on `model`, with their gather; those no stage installs are there
+/// from the start.
+fn install_supports(
+    scene: &Scene,
+    model: &mut Model,
+    domain: &Domain,
+    boundary: &[BoundaryEdge],
+) -> anyhow::Result<()> {
+    model.supports = supports::supports(scene, model, domain, boundary)?;
     model.support_gather = Gather::from_slots(model.nodes.len(), &model.supports.slot_nodes());
-    // Supports no stage installs are there from the start.
     let staged: Vec<&String> = scene.stages.iter().flat_map(|s| &s.install).collect();
     let from_start = scene.bolts.iter().map(|b| &b.name);
     for name in from_start.chain(scene.liners.iter().map(|l| &l.name)) {
@@ -582,13 +406,5 @@ pub fn setup_meshed(scene: &Scene, meshed: Meshed) -> anyhow::Result<Setup> {
             model.supports.install(name, &model.nodes.disp);
         }
     }
-    Ok(Setup {
-        model,
-        mesh: stats,
-        part_nodes,
-        boundary,
-        domain: meshed.domain,
-        stage_materials,
-        warnings,
-    })
+    Ok(())
 }

@@ -1,0 +1,106 @@
+//! What setting up a scene found worth saying: sliver and thin blocks, repairs, refinement that
+//! did not reach its angle, merged vertices, absorbed joints; and the one mesh fault that is an
+//! error, a zone sharper than the scene accepts.
+
+use super::geometry::Meshed;
+use crate::scene::{BlockMode, Scene};
+
+/// Most thin blocks named one by one in the warnings; the rest are counted.
+const THIN_NAMED: usize = 10;
+
+/// A warning for each block too thin to zone at the finest size asked for (the first
+/// `THIN_NAMED`, then a count), saying what became of it.
+fn thin_warnings(scene: &Scene, meshed: &Meshed) -> Vec<String> {
+    let made = match scene.blocks.thin {
+        BlockMode::Deformable => {
+            "zoned as finely as it needs (its zones may set the time step; blocks.thin: \
+             \"simple\" or \"rigid\" takes it out of the zoning)"
+        }
+        BlockMode::Simple => "made simple (blocks.thin)",
+        BlockMode::Rigid => "made rigid (blocks.thin)",
+    };
+    let mut out: Vec<String> = meshed
+        .thin
+        .iter()
+        .take(THIN_NAMED)
+        .map(|t| {
+            let c = meshed.blocking.blocks[t.block].outer.centroid();
+            format!(
+                "block {} (centroid ({:.3}, {:.3}) m) is {:.3e} m thick (2 × area / perimeter), \
+                 under half zoning.edge_at_excavation = {} m: {made}",
+                t.block, c[0], c[1], t.thickness, scene.zoning.edge_at_excavation
+            )
+        })
+        .collect();
+    if meshed.thin.len() > THIN_NAMED {
+        out.push(format!(
+            "{} more blocks are as thin, and were treated alike",
+            meshed.thin.len() - THIN_NAMED
+        ));
+    }
+    out
+}
+
+/// The mesh's sharpest zone against `zoning.accept_angle`: an error naming the block and where.
+fn refuse_sharp_zones(scene: &Scene, meshed: &Meshed) -> anyhow::Result<()> {
+    let sharpest = meshed.sharpest_zone();
+    let accept = scene.zoning.accept_angle;
+    match sharpest {
+        Some((angle, at, b)) if angle < accept => anyhow::bail!(
+            "zoning.accept_angle: a zone of block {b} near ({:.3}, {:.3}) m has an angle of \
+             {angle:.2}°, below the {accept}° accepted (joints or walls meet at such an angle, or \
+             lie closer than the zoning there; it would set a tiny time step): move or coarsen \
+             the joints, or lower `zoning.accept_angle` (0 accepts any)",
+            at[0],
+            at[1]
+        ),
+        _ => Ok(()),
+    }
+}
+
+/// The warnings of `meshed`, in the order `adit check` prints them; an error when a zone is sharper
+/// than `zoning.accept_angle`.
+pub(super) fn warnings(scene: &Scene, meshed: &Meshed) -> anyhow::Result<Vec<String>> {
+    let mut warnings = Vec::new();
+    let mut is_thin = vec![false; meshed.blocking.blocks.len()];
+    for t in &meshed.thin {
+        is_thin[t.block] = true;
+    }
+    for &b in meshed.blocking.slivers.iter().filter(|&&b| !is_thin[b]) {
+        let blk = &meshed.blocking.blocks[b];
+        warnings.push(format!(
+            "block {b} is a sliver (area {:.3e} m²); consider coarser joints or zoning",
+            blk.area()
+        ));
+    }
+    warnings.extend(thin_warnings(scene, meshed));
+    refuse_sharp_zones(scene, meshed)?;
+    warnings.extend(meshed.repairs.iter().cloned());
+    for (b, mesh) in meshed.meshes.iter().enumerate() {
+        if meshed.modes[b] == BlockMode::Deformable && mesh.angle_limit_deg < scene.zoning.min_angle
+        {
+            let c = meshed.blocking.blocks[b].outer.centroid();
+            warnings.push(format!(
+                "block {b} (centroid ({:.3}, {:.3}) m): refinement to zoning.min_angle = {}° did not \
+                 end (its constraints meet at small angles); zoned aiming at {}°",
+                c[0], c[1], scene.zoning.min_angle, mesh.angle_limit_deg
+            ));
+        }
+    }
+    let merges = meshed.blocking.merges;
+    if merges.count > 0 {
+        warnings.push(format!(
+            "cutting moved {} vertices onto others within zoning.merge_tolerance = {:.4} m (joint \
+             ends onto joints or walls, crossings onto corners); the largest move, {:.4} m, onto \
+             ({:.3}, {:.3}) m",
+            merges.count, meshed.merge_tolerance, merges.largest, merges.at[0], merges.at[1]
+        ));
+    }
+    if meshed.blocking.absorbed_joint_length > 0.0 {
+        warnings.push(format!(
+            "{:.3} m of joint traces end inside blocks and were absorbed into them",
+            meshed.blocking.absorbed_joint_length
+        ));
+    }
+    Ok(warnings)
+}
