@@ -203,11 +203,13 @@ fn node_to_edge(
         }
         let r = d.blocks.round_of(n);
         let at = |v: u32| d.x[v as usize];
+        let (own, owned) = edge_normals_at(d, n);
         let node = Node {
             id: n,
             centre: rounding::centre(d.blocks, &at, n, r),
             radius: r,
-            own: edge_normals_at(d, n),
+            own,
+            owned,
             past_ends: r == 0.0 && touched(n, b as u32),
         };
         let mut depth = None;
@@ -258,8 +260,17 @@ struct Node {
     id: u32,
     centre: [f64; 2],
     radius: f64,
-    own: Vec<[f64; 2]>,
+    /// The outward normals of its edges, the first `owned` of them (no allocation per node).
+    own: [[f64; 2]; 2],
+    owned: usize,
     past_ends: bool,
+}
+
+impl Node {
+    /// The outward normals of the node's edges (two, or one at a free end).
+    fn normals(&self) -> &[[f64; 2]] {
+        &self.own[..self.owned]
+    }
 }
 
 /// An edge a node may touch.
@@ -337,7 +348,11 @@ fn facing_edge(
     // One of the node's edges must face the edge: a node of a flat surface beside the end of
     // an edge at right angles to it (a base node ahead of a sliding block's front face) is
     // no contact, or the block would snag on it.
-    let facing = n.own.iter().map(|&o| dot(normal, o)).fold(1.0, f64::min);
+    let facing = n
+        .normals()
+        .iter()
+        .map(|&o| dot(normal, o))
+        .fold(1.0, f64::min);
     if facing > -MIN_FACING {
         return None;
     }
@@ -376,7 +391,7 @@ fn corner_partner(
     } else {
         d.blocks.node_edges[k as usize][1]
     };
-    if other == NO_EDGE || n.own.len() < 2 {
+    if other == NO_EDGE || n.owned < 2 {
         return None;
     }
     let g = facing_edge(d, b, n, other, depth)?.found;
@@ -511,13 +526,17 @@ fn distance_to_edge(d: &Detection, p: [f64; 2], e: u32) -> f64 {
     norm(p[0] - a[0] - s * t[0], p[1] - a[1] - s * t[1])
 }
 
-/// Outward unit normals of the (up to two) boundary edges meeting at node `n`.
-fn edge_normals_at(d: &Detection, n: u32) -> Vec<[f64; 2]> {
-    d.blocks.node_edges[n as usize]
-        .iter()
-        .filter(|&&e| e != NO_EDGE)
-        .map(|&e| edge_normal(d, e))
-        .collect()
+/// Outward unit normals of the (up to two) boundary edges meeting at node `n`, and how many.
+fn edge_normals_at(d: &Detection, n: u32) -> ([[f64; 2]; 2], usize) {
+    let mut out = [[0.0; 2]; 2];
+    let mut k = 0;
+    for &e in &d.blocks.node_edges[n as usize] {
+        if e != NO_EDGE {
+            out[k] = edge_normal(d, e);
+            k += 1;
+        }
+    }
+    (out, k)
 }
 
 /// Outward unit normal of boundary edge `e` (blocks run anticlockwise: the edge's direction

@@ -271,7 +271,7 @@ pub fn scaled_masses(stiffness: &[f64], safety: f64, alpha: f64) -> Vec<f64> {
 /// μ ≥ (1 + α) s². Meshes of well-shaped zones never reach their Gershgorin bound and did without
 /// it; a node whose stiffness sits in one spring (a joint contact between two blocks, a sliver
 /// zone) does reach it, and with α = 0.8, s = 0.8 the run diverged there (the sliver case of
-/// `tests/slivers.rs`). The price is √μ = 1.07× more cycles at the defaults.
+/// `validation/src/slivers.rs`). The price is √μ = 1.07× more cycles at the defaults.
 pub fn damped_margin(safety: f64, alpha: f64) -> f64 {
     ((1.0 + alpha) * safety * safety).max(1.0)
 }
