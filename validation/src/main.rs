@@ -226,7 +226,7 @@ fn scale_section(md: &mut String, rows: &[scale::Row]) {
         "Each scene cut, meshed and given its blocks and contacts (`adit::setup::setup`, one run, wall \
          seconds). The terrain region (`validation/src/scale.rs`) is a 5 km slope section whose ground \
          surface has the given number of vertices, with a 6 m horseshoe tunnel 300 m down; jointed, it \
-         has two sets 20 m apart in traces of 80 m. The cutter pairs segments, the polygon checks find \
+         has two sets 25 m apart in traces of 100 m. The cutter pairs segments, the polygon checks find \
          crossings and the mesher labels boundary edges through grids, and containment tests on a large \
          polygon go through an index of its edges in strips: before, the 20 000-vertex region took 17 s \
          and the 100 000-vertex one 8.4 min. Tiling: zoned area over the rock's area (the region less the \

@@ -28,7 +28,7 @@ pub struct Row {
 
 /// A 5 km slope section: a flat base 800 m down, sides, and a ground surface of `vertices` points
 /// (two waves, 20 m and 3 m high); a 6 m horseshoe tunnel 300 m under the surface; with `joints`,
-/// two sets 20 m apart in traces of 80 m (gaps 40 m), under gravity.
+/// two sets 25 m apart in traces of 100 m (gaps 50 m), under gravity.
 pub fn terrain(vertices: usize, joints: bool) -> Scene {
     let width = 5000.0;
     let n = vertices.max(4) - 2;
@@ -49,8 +49,8 @@ pub fn terrain(vertices: usize, joints: bool) -> Scene {
     names.push("left".to_string());
     let sets = if joints {
         serde_json::json!([
-            { "dip": 30, "spacing": 20, "origin": [0.4, 0.3], "trace": 80, "gap": 40, "material": "joint" },
-            { "dip": 105, "spacing": 20, "origin": [-0.2, 0.5], "trace": 80, "gap": 40, "material": "joint" }
+            { "dip": 30, "spacing": 25, "origin": [0.4, 0.3], "trace": 100, "gap": 50, "material": "joint" },
+            { "dip": 105, "spacing": 25, "origin": [-0.2, 0.5], "trace": 100, "gap": 50, "material": "joint" }
         ])
     } else {
         serde_json::json!([])
@@ -72,7 +72,7 @@ pub fn terrain(vertices: usize, joints: bool) -> Scene {
         "solve": { "ratio": 1e-5, "max_cycles": 10 },
         "stages": [{ "name": "gravity" }]
     });
-    serde_json::from_value(scene).expect("a valid terrain scene")
+    Scene::from_json(&scene.to_string(), "terrain").expect("a valid terrain scene")
 }
 
 /// `models/tunnel.json` with both joint sets 0.25 m apart in traces of 3 m (gaps 2 m): about
@@ -84,11 +84,13 @@ pub fn dense_joints() -> anyhow::Result<Scene> {
         set.trace = Some(3.0);
         set.gap = 2.0;
     }
+    scene.validate()?;
     Ok(scene)
 }
 
 /// Build `scene` and measure it.
 pub fn measure(what: &str, scene: &Scene) -> anyhow::Result<Row> {
+    scene.validate()?;
     let domain = adit::setup::domain(scene)?;
     let traces = adit::setup::joint_segments(scene, &domain)?.len();
     let start = Instant::now();
