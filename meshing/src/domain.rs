@@ -3,6 +3,7 @@
 
 use crate::error::MeshError;
 use crate::geometry::{Point, Polygon};
+use crate::polygon_index::PolygonIndex;
 
 /// An excavation (hole) in the region.
 #[derive(Debug, Clone, PartialEq)]
@@ -78,13 +79,14 @@ impl Domain {
                 ),
             });
         }
+        let region = PolygonIndex::new(&outer, 0.0);
         for hole in &holes {
             check_polygon(&hole.name, &hole.polygon)?;
             if let Some(v) = hole
                 .polygon
                 .vertices
                 .iter()
-                .position(|&p| !outer.contains(p))
+                .position(|&p| !region.contains(p))
             {
                 let p: Point = hole.polygon.vertices[v];
                 return Err(MeshError::HoleOutside {
