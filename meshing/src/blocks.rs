@@ -297,6 +297,7 @@ pub fn cut_blocks_filled(
         }
     }
     let outer = PolygonIndex::new(&domain.outer, 0.0);
+    let in_rock = |p: Point| outer.contains(p) && !open(p);
     let mut absorbed = 0.0;
     let mut free: Vec<u32> = (0..pts.len() as u32)
         .filter(|&v| degree[v as usize] == 1)
@@ -320,7 +321,7 @@ pub fn cut_blocks_filled(
         // Only pieces inside the rock count: traces beyond the region are just cut off.
         let (a, b) = (pts[key.0 as usize], pts[key.1 as usize]);
         let mid = [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])];
-        if outer.contains(mid) && !open(mid) {
+        if in_rock(mid) {
             absorbed += distance(a, b);
         }
         for w in [key.0, key.1] {
@@ -332,7 +333,7 @@ pub fn cut_blocks_filled(
     }
 
     let faces = trace_faces(&pts, &edges);
-    let blocking = assemble_blocks(domain, &open, &pts, faces, tol, absorbed)?;
+    let blocking = assemble_blocks(domain, &in_rock, &pts, faces, tol, absorbed)?;
     Ok(Blocking { merges, ..blocking })
 }
 
@@ -427,18 +428,17 @@ fn split_pinches(verts: Vec<u32>, kinds: Vec<EdgeKind>) -> Vec<(Vec<u32>, Vec<Ed
     out
 }
 
-/// Keep the faces inside the region and outside the excavations; attach floating components as holes.
+/// Keep the faces whose inside is rock (`in_rock`: inside the region, outside the open excavations);
+/// attach floating components as holes.
 fn assemble_blocks(
     domain: &Domain,
-    open: &dyn Fn(Point) -> bool,
+    in_rock: &dyn Fn(Point) -> bool,
     pts: &[Point],
     cycles: Vec<Cycle>,
     tol: f64,
     absorbed_joint_length: f64,
 ) -> Result<Blocking, MeshError> {
     let polygon = |c: &Cycle| Polygon::new(c.verts.iter().map(|&v| pts[v as usize]).collect());
-    let outer = PolygonIndex::new(&domain.outer, 0.0);
-    let inside_material = |p: Point| outer.contains(p) && !open(p);
     let mut blocks: Vec<Block> = Vec::new();
     let mut floating = Vec::new();
     for c in &cycles {
@@ -461,7 +461,7 @@ fn assemble_blocks(
             0.5 * (a[0] + b[0]) - eps * (b[1] - a[1]) / len,
             0.5 * (a[1] + b[1]) + eps * (b[0] - a[0]) / len,
         ];
-        if inside_material(probe) {
+        if in_rock(probe) {
             blocks.push(Block {
                 outer: poly,
                 outer_kinds: c.kinds.clone(),
