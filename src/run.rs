@@ -7,7 +7,7 @@ use crate::cycle::Cycle;
 use crate::model::Model;
 use crate::model::bodies::BodyMode;
 use crate::output::{OutputWriter, StageSummary, Summary, measured};
-use crate::scene::{Scene, Stage};
+use crate::scene::Scene;
 use crate::setup::{Setup, setup};
 use crate::solve::{HistoryRow, Observer, Solution, Solver, Status};
 use crate::stage::Staging;
@@ -96,24 +96,15 @@ fn build_solve_write(
     start: Instant,
 ) -> anyhow::Result<RunResult> {
     let mut built = setup(scene)?;
-    let single = [Stage {
-        name: "solve".into(),
-        ..Default::default()
-    }];
-    let stages = if scene.stages.is_empty() {
-        &single[..]
-    } else {
-        &scene.stages[..]
-    };
-    let mut staging = Staging::new(scene);
+    let Setup { model, plan, .. } = &mut built;
+    let mut staging = Staging::new(plan);
     let (mut history, mut cycles, mut output_seconds) = (Vec::new(), 0u64, 0.0);
     let mut seconds = crate::cycle::StageSeconds::default();
     let mut stage_summaries = Vec::new();
     let mut last: Option<(Solver, Solution)> = None;
-    for stage in stages {
-        staging.apply(stage, scene, &mut built);
-        let spec = stage.solve.as_ref().unwrap_or(&scene.solve);
-        let mut solver = Solver::new(&mut built.model, spec, scene.output.every);
+    for stage in &plan.stages {
+        staging.apply(stage, model, plan);
+        let mut solver = Solver::new(model, &stage.solve, scene.output.every);
         ensure_time_step(&solver)?;
         let mut writing = Writing {
             writer,
@@ -122,7 +113,7 @@ fn build_solve_write(
             error: None,
             offset: cycles,
         };
-        let solution = solver.solve(&mut built.model, &mut writing);
+        let solution = solver.solve(model, &mut writing);
         output_seconds += writing.output_seconds;
         if let Some(e) = writing.error {
             return Err(e);
@@ -144,13 +135,13 @@ fn build_solve_write(
             status: solution.status.label().to_string(),
             final_ratio: measured(solution.final_ratio),
             support_fraction: staging.support_fraction(),
-            closure: staging.closures(scene, &built),
+            closure: staging.closures(model, plan),
         });
         let t = Instant::now();
         let failed = matches!(solution.status, Status::Failed(_));
         let interrupted = solution.status == Status::Interrupted;
         if !failed {
-            writer.write_step(&built.model, cycles as f64)?;
+            writer.write_step(model, cycles as f64)?;
         }
         output_seconds += t.elapsed().as_secs_f64();
         last = Some((solver, solution));
@@ -167,9 +158,8 @@ fn build_solve_write(
     };
     let t = Instant::now();
     writer.write_history(&solution.history)?;
-    if !scene.stages.is_empty() {
-        let names: Vec<String> = scene.excavations.iter().map(|e| e.name.clone()).collect();
-        writer.write_ground_reaction(&stage_summaries, &names)?;
+    if plan.staged {
+        writer.write_ground_reaction(&stage_summaries, &plan.excavations)?;
     }
     output_seconds += t.elapsed().as_secs_f64();
     seconds.output = output_seconds;
@@ -218,10 +208,10 @@ fn build_solve_write(
         critical_limiter: solver.step.describe(),
         min_zone_angle: built.mesh.min_angle_deg,
         warnings: built.warnings.clone(),
-        stages: if scene.stages.is_empty() {
-            vec![]
-        } else {
+        stages: if built.plan.staged {
             stage_summaries
+        } else {
+            vec![]
         },
     };
     writer.write_summary(&summary)?;

@@ -5,10 +5,10 @@
 use adit_meshing::BoundaryEdge;
 
 use crate::model::{FIX_X, FIX_Y, MaterialId, Model, traction};
-use crate::scene::{BoundaryCondition, Scene, Stage};
+use crate::scene::BoundaryCondition;
 use crate::setup::{
-    NOT_FILL, Setup, add_body_weight, add_tractions, add_zone_weight, boundary_effect,
-    in_situ_stress, joint_law, rock_walls, zone_law,
+    NOT_FILL, Plan, StagePlan, add_body_weight, add_tractions, add_zone_weight, boundary_effect,
+    joint_law, rock_walls, zone_law,
 };
 
 /// What the stages so far have done.
@@ -21,22 +21,15 @@ pub struct Staging {
     gravity: [f64; 2],
     /// Boundary conditions now in force.
     boundary: Vec<BoundaryCondition>,
-    /// Stages applied so far.
-    applied: usize,
 }
 
 impl Staging {
-    /// Excavations that no stage names are open from the start, unsupported.
-    pub fn new(scene: &Scene) -> Staging {
+    /// The state before the first stage: excavations that no stage names are open, unsupported.
+    pub fn new(plan: &Plan) -> Staging {
         Staging {
-            support: scene
-                .excavations
-                .iter()
-                .map(|e| (!scene.is_staged(&e.name)).then_some(0.0))
-                .collect(),
-            gravity: scene.gravity,
-            boundary: scene.boundary.clone(),
-            applied: 0,
+            support: plan.open.iter().map(|&open| open.then_some(0.0)).collect(),
+            gravity: plan.gravity,
+            boundary: plan.conditions.clone(),
         }
     }
 
@@ -45,66 +38,53 @@ impl Staging {
     /// material, change gravity and the boundary conditions, install the bolts and liners it
     /// names, set the support pressure of every excavation made so far to `support_fraction` × the
     /// in-situ traction on its walls, and reset displacements if asked.
-    pub fn apply(&mut self, stage: &Stage, scene: &Scene, built: &mut Setup) {
-        for name in &stage.excavate {
-            let j = scene
-                .excavations
-                .iter()
-                .position(|e| e.name == *name)
-                .expect("validated");
+    pub fn apply(&mut self, stage: &StagePlan, model: &mut Model, plan: &Plan) {
+        for &j in &stage.excavate {
             // The rock's contacts go with it: the wall is unsupported until a pressure is set.
-            remove_fill(&mut built.model, j as u32);
-            self.support[j] = Some(0.0);
+            remove_fill(model, &plan.fill, j);
+            self.support[j as usize] = Some(0.0);
         }
-        for (name, spec) in &stage.materials {
-            built.model.laws[index_of(&scene.materials, name)] = zone_law(spec);
+        for (m, spec) in &stage.materials {
+            model.materials.zone[m.0 as usize] = zone_law(spec);
         }
-        // The stage's regions, resolved when the model was built (none for a scene without stages).
-        let regions = built
-            .stage_materials
-            .get(self.applied)
-            .cloned()
-            .unwrap_or_default();
-        self.applied += 1;
-        for (b, m) in regions {
-            set_block_material(&mut built.model, b as usize, m);
+        for &(b, m) in &stage.regions {
+            set_block_material(model, b as usize, m);
         }
         if let Some(g) = stage.gravity {
             let now = self.gravity;
-            let model = &mut built.model;
             let change = [g[0] - now[0], g[1] - now[1]];
-            add_zone_weight(&mut model.nodes, &model.zones, &model.laws, change);
-            add_body_weight(&mut model.bodies, &model.laws, change);
+            let laws = &model.materials.zone;
+            add_zone_weight(&mut model.nodes, &model.zones, laws, change);
+            add_body_weight(&mut model.bodies, laws, change);
             self.gravity = g;
         }
-        for (name, spec) in &stage.joint_materials {
-            built.model.joint_laws[index_of(&scene.joint_materials, name)] = joint_law(spec);
+        for (k, spec) in &stage.joint_materials {
+            model.materials.joint[*k as usize] = joint_law(spec);
         }
         if let Some(list) = &stage.boundary {
-            self.change_boundary(list, scene, built);
+            self.change_boundary(list, model, plan);
         }
-        for name in &stage.install {
-            let model = &mut built.model;
-            let known = model.supports.install(name, &model.nodes.disp);
-            debug_assert!(known, "validated: '{name}' is a bolt group or liner");
+        for &id in &stage.install {
+            model.supports.install(id, &model.nodes.disp);
         }
-        let poisson = scene.materials[&scene.region.material].poisson;
         for (j, support) in self.support.iter_mut().enumerate() {
             let Some(now) = support else { continue };
             let change = stage.support_fraction - *now;
             if change != 0.0 {
-                let walls: Vec<BoundaryEdge> = rock_walls(&built.boundary, &built.model, j as u32)
-                    .copied()
-                    .collect();
-                add_tractions(&mut built.model.nodes, walls.iter(), |p, n| {
-                    let t = traction(&in_situ_stress(&scene.in_situ, p[1], poisson), n);
+                let edges = &plan.boundary.edges;
+                let walls: Vec<BoundaryEdge> =
+                    rock_walls(edges, &model.blocks, &plan.fill, j as u32)
+                        .copied()
+                        .collect();
+                add_tractions(&mut model.nodes, walls.iter(), |p, n| {
+                    let t = traction(&plan.in_situ.at(p[1]), n);
                     [change * t[0], change * t[1]]
                 });
                 *now = stage.support_fraction;
             }
         }
         if stage.reset_displacements {
-            built.model.nodes.origin.clone_from(&built.model.nodes.disp);
+            model.nodes.origin.clone_from(&model.nodes.disp);
         }
     }
 
@@ -112,20 +92,12 @@ impl Staging {
     /// released, new ones hold their components still, and the loads change by the new list's
     /// minus the old one's. Nodes of removed rock stay held; `setup` refused a change of fixity at a
     /// rigid or simple block's node.
-    fn change_boundary(&mut self, list: &[BoundaryCondition], scene: &Scene, built: &mut Setup) {
+    fn change_boundary(&mut self, list: &[BoundaryCondition], model: &mut Model, plan: &Plan) {
         let effect = |conditions: &[BoundaryCondition]| {
-            boundary_effect(
-                conditions,
-                scene,
-                &built.boundary,
-                &built.domain,
-                &built.part_nodes,
-                &built.model.nodes.pos,
-            )
+            boundary_effect(conditions, &plan.boundary, &plan.in_situ, &model.nodes.pos)
         };
         let (old_fixed, old_load) = effect(&self.boundary);
         let (new_fixed, new_load) = effect(list);
-        let model = &mut built.model;
         let nodes = &mut model.nodes;
         for n in 0..nodes.len() {
             if model
@@ -148,19 +120,15 @@ impl Staging {
 
     /// Mean closure (m, inward positive) of the wall of each excavation made so far: the
     /// displacement of the rock's wall nodes along the inward normal of their wall edges.
-    pub fn closures(
-        &self,
-        scene: &Scene,
-        built: &Setup,
-    ) -> std::collections::BTreeMap<String, f64> {
-        let m = &built.model;
+    pub fn closures(&self, model: &Model, plan: &Plan) -> std::collections::BTreeMap<String, f64> {
+        let m = model;
         let mut out = std::collections::BTreeMap::new();
         for (j, support) in self.support.iter().enumerate() {
             if support.is_none() {
                 continue;
             }
             let (mut sum, mut count) = (0.0, 0usize);
-            for e in rock_walls(&built.boundary, m, j as u32) {
+            for e in rock_walls(&plan.boundary.edges, &m.blocks, &plan.fill, j as u32) {
                 let [a, b] = e.nodes.map(|n| n as usize);
                 let (pa, pb) = (m.nodes.pos[a], m.nodes.pos[b]);
                 let len = (pb[0] - pa[0]).hypot(pb[1] - pa[1]);
@@ -175,7 +143,7 @@ impl Staging {
             let closure = sum / count.max(1) as f64;
             // A failed run's state may not be finite: its closure is left out, not written null.
             if closure.is_finite() {
-                out.insert(scene.excavations[j].name.clone(), closure);
+                out.insert(plan.excavations[j].clone(), closure);
             }
         }
         out
@@ -185,15 +153,6 @@ impl Staging {
     pub fn support_fraction(&self) -> f64 {
         self.support.iter().flatten().copied().next().unwrap_or(0.0)
     }
-}
-
-/// Index of the law of material `name`: zone and joint laws are indexed in the order of the
-/// scene's `materials` and `joint_materials` (sorted names).
-fn index_of<V>(materials: &std::collections::BTreeMap<String, V>, name: &str) -> usize {
-    materials
-        .keys()
-        .position(|n| n == name)
-        .expect("validated: a material of the scene")
 }
 
 /// Give block `b` zone material `m`, keeping its stress, yield state and plastic strain; removed
@@ -211,17 +170,18 @@ fn set_block_material(model: &mut Model, b: usize, m: MaterialId) {
     }
 }
 
-/// Remove the rock filling excavation `j`: its blocks are marked removed (detection skips them),
-/// their zones take the null law, their nodes and bodies are held still and unloaded, and the
+/// Remove the rock filling excavation `j` (`fill`: the staged excavation whose rock each block
+/// is): its blocks are marked removed (detection skips them), their zones take the null law (a
+/// staged scene's catalogue has one), their nodes and bodies are held still and unloaded, and the
 /// contacts they made are dropped, so the walls lose the traction the rock gave them.
-pub fn remove_fill(model: &mut Model, j: u32) {
-    let null = model
-        .null_material
-        .expect("a staged scene has the null law");
+pub fn remove_fill(model: &mut Model, fill: &[u32], j: u32) {
+    let Some(null) = model.materials.null else {
+        return;
+    };
     let n_blocks = model.blocks.len();
     model.blocks.removed.resize(n_blocks, false);
     for b in 0..n_blocks {
-        if model.fill.get(b).copied().unwrap_or(NOT_FILL) != j {
+        if fill.get(b).copied().unwrap_or(NOT_FILL) != j {
             continue;
         }
         model.blocks.removed[b] = true;

@@ -333,8 +333,8 @@ fn fresh_contacts_found_deep_start_at_zero_overlap() {
             blocks: &m.blocks,
             x: &x,
             tolerance: m.contact_tolerance,
-            joint_material: &m.joint_material,
-            hole_material: &m.hole_material,
+            joint_material: &m.materials.feature,
+            hole_material: &m.materials.hole,
         };
         cycle.detect(&d, &mut m.contacts);
         let c = &m.contacts;

@@ -30,7 +30,10 @@ fn undamped_step_load_overshoots_twice_static_and_stays_bounded() {
     let mut b = setup(&scene).unwrap();
     let mut solver = Solver::new(&mut b.model, &scene.solve, 0);
     assert!(solver.params.dt > 0.0 && solver.params.dt == 0.8 * solver.step.dt_critical);
-    let top: Vec<usize> = b.part_nodes["top"].iter().map(|&n| n as usize).collect();
+    let top: Vec<usize> = b.plan.boundary.part_nodes["top"]
+        .iter()
+        .map(|&n| n as usize)
+        .collect();
     // Confined column (sides on rollers): static top displacement −p H / M, M = K + 4G/3 = E(1−ν)/((1+ν)(1−2ν)).
     let m = 10e9 * 0.75 / (1.25 * 0.5);
     let u_static = -1e6 * 4.0 / m;

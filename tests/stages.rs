@@ -65,7 +65,7 @@ fn staged_excavation_releases_the_wall_stage_by_stage() {
     // Elastic wall displacement: −Δp a/(2G) for the pressure released, Δp = 10 MPa in all.
     let m = &r.built.model;
     let g = 10e9 / 2.5;
-    let wall: Vec<u32> = r.built.part_nodes["tunnel"]
+    let wall: Vec<u32> = r.built.plan.boundary.part_nodes["tunnel"]
         .iter()
         .copied()
         .filter(|&n| !m.blocks.is_removed(m.blocks.block_of_node(n)))
@@ -81,7 +81,7 @@ fn staged_excavation_releases_the_wall_stage_by_stage() {
     let exact = -10e6 / (2.0 * g);
     assert!((u - exact).abs() < 0.03 * exact.abs(), "{u} vs {exact}");
     // The excavated zones carry no stress.
-    let null = m.null_material.unwrap();
+    let null = m.materials.null.unwrap();
     let excavated: Vec<usize> = (0..m.zones.len())
         .filter(|&z| m.zones.material[z] == null)
         .collect();

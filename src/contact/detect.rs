@@ -33,8 +33,8 @@ impl<'a> Detection<'a> {
             blocks: &model.blocks,
             x,
             tolerance: model.contact_tolerance,
-            joint_material: &model.joint_material,
-            hole_material: &model.hole_material,
+            joint_material: &model.materials.feature,
+            hole_material: &model.materials.hole,
         }
     }
 }

@@ -160,19 +160,17 @@ impl Cycle {
             nodes,
             zones,
             gather,
-            laws,
             blocks,
             bodies,
             contacts,
-            joint_laws,
-            joint_material,
             contact_tolerance,
-            hole_material,
             supports,
             mixed,
             support_gather,
+            materials,
             ..
         } = model;
+        let (laws, joint_laws) = (&materials.zone, &materials.joint);
         let t0 = Instant::now();
         if blocks.len() > 1 && self.moved > 0.5 * *contact_tolerance {
             let x = nodes.current();
@@ -180,8 +178,8 @@ impl Cycle {
                 blocks,
                 x: &x,
                 tolerance: *contact_tolerance,
-                joint_material,
-                hole_material,
+                joint_material: &materials.feature,
+                hole_material: &materials.hole,
             };
             self.detect(&d, contacts);
         }
@@ -213,14 +211,14 @@ impl Cycle {
             nodes,
             zones,
             gather,
-            laws,
             blocks,
             contacts,
-            joint_laws,
             supports,
             mixed,
+            materials,
             ..
         } = model;
+        let (laws, joint_laws) = (&materials.zone, &materials.joint);
         self.contact_forces(nodes, blocks, contacts, joint_laws, &still);
         self.zone_forces(nodes, zones, laws, gather, mixed.as_deref(), &still);
         self.structural_forces(supports, &nodes.disp, &still);

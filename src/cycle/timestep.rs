@@ -81,7 +81,7 @@ pub fn zone_stiffness(model: &Model) -> Vec<f64> {
     } = &model.zones;
     let mut r = vec![[0.0f64; 2]; model.nodes.len()];
     for z in 0..nodes.len() {
-        let (k, g) = model.laws[material[z].0 as usize].moduli();
+        let (k, g) = model.materials.zone[material[z].0 as usize].moduli();
         let sums = zone_row_sums(&grad[z], area[z], k + 4.0 / 3.0 * g, k - 2.0 / 3.0 * g, g);
         for (c, &n) in nodes[z].iter().enumerate() {
             r[n as usize][0] += sums[c][0];
@@ -105,7 +105,8 @@ pub(crate) fn add_contact_stiffness(model: &Model, r: &mut [f64]) {
         return;
     }
     let k = model
-        .joint_laws
+        .materials
+        .joint
         .iter()
         .map(|l| l.stiffness())
         .map(|(kn, ks)| kn + ks)
@@ -114,7 +115,7 @@ pub(crate) fn add_contact_stiffness(model: &Model, r: &mut [f64]) {
     let mut present = vec![0.0f64; r.len()];
     let c = &model.contacts;
     for i in 0..c.len() {
-        let (kn, ks) = model.joint_laws[c.material[i] as usize].stiffness();
+        let (kn, ks) = model.materials.joint[c.material[i] as usize].stiffness();
         let spring = (1.0 + std::f64::consts::SQRT_2) * c.length[i] * (kn + ks);
         let [a, b] = blocks.edges[c.edge[i] as usize];
         present[c.node[i] as usize] += spring;
@@ -140,7 +141,7 @@ pub fn lumped_masses(model: &Model) -> Vec<f64> {
     let mut m = vec![0.0; model.nodes.len()];
     let z = &model.zones;
     for i in 0..z.len() {
-        let w = model.laws[z.material[i].0 as usize].density() * z.area[i] / 3.0;
+        let w = model.materials.zone[z.material[i].0 as usize].density() * z.area[i] / 3.0;
         for &n in &z.nodes[i] {
             m[n as usize] += w;
         }
@@ -208,7 +209,7 @@ pub fn body_stiffness(model: &Model, nodal: &[f64]) -> Vec<Dof> {
             }
             let dofs = bodies.mode[k].dofs();
             if bodies.mode[k] == BodyMode::Simple {
-                let (kb, g) = model.laws[bodies.material[k].0 as usize].moduli();
+                let (kb, g) = model.materials.zone[bodies.material[k].0 as usize].moduli();
                 let (a1, a2, area) = (kb + 4.0 / 3.0 * g, kb - 2.0 / 3.0 * g, bodies.area[k]);
                 s[3][3] += area * a1;
                 s[4][4] += area * a1;
@@ -231,7 +232,7 @@ pub fn body_stiffness(model: &Model, nodal: &[f64]) -> Vec<Dof> {
 pub fn body_masses(model: &Model) -> Vec<Dof> {
     (0..model.bodies.len())
         .map(|k| {
-            let rho = model.laws[model.bodies.material[k].0 as usize].density();
+            let rho = model.materials.zone[model.bodies.material[k].0 as usize].density();
             body_moments(model, k).masses(rho)
         })
         .collect()

@@ -4,16 +4,16 @@
 pub mod blocks;
 pub mod bodies;
 mod contacts;
+mod materials;
 pub mod nodes;
 mod velocity;
 pub mod zones;
 
 pub use contacts::Contacts;
+pub use materials::Materials;
 pub use nodes::{BODY, FIX_X, FIX_Y, Nodes};
 pub use zones::{Stress, Zones, traction};
 
-use crate::joint::JointLaw;
-use crate::law::ZoneLaw;
 use crate::support::Supports;
 
 /// Index of a node.
@@ -67,16 +67,12 @@ impl Gather {
     }
 }
 
-/// Everything a run evolves: nodes, zones, rigid and simple blocks, contacts, their laws and the
-/// gather tables.
+/// Everything a run evolves (nodes, zones, rigid and simple blocks, contacts, supports, with the
+/// gather tables that follow them) and the material catalogue the laws come from.
 pub struct Model {
     pub nodes: Nodes,
     pub zones: Zones,
     pub gather: Gather,
-    /// Zone laws, indexed by `MaterialId`.
-    pub laws: Vec<Box<dyn ZoneLaw>>,
-    /// Material names, indexed by `MaterialId`.
-    pub material_names: Vec<String>,
     /// Largest extent of the model, m (a length scale for runaway checks).
     pub size: f64,
     pub blocks: blocks::Blocks,
@@ -84,20 +80,8 @@ pub struct Model {
     pub bodies: bodies::Bodies,
     /// Contacts, with the gather of their force slots.
     pub contacts: Contacts,
-    /// Joint laws, indexed by joint material id.
-    pub joint_laws: Vec<Box<dyn JointLaw>>,
-    pub joint_material_names: Vec<String>,
-    /// Joint material of each joint feature (`EdgeKind::Joint(k)`).
-    pub joint_material: Vec<u32>,
     /// Contact detection tolerance, m.
     pub contact_tolerance: f64,
-    /// Joint material of the contacts on each hole's wall (staged excavations' fill, inclusions),
-    /// `NO_MATERIAL` for an empty hole.
-    pub hole_material: Vec<u32>,
-    /// For each block, the staged excavation whose rock it is, or `NOT_FILL`.
-    pub fill: Vec<u32>,
-    /// The null law excavated zones take (staged scenes only).
-    pub null_material: Option<MaterialId>,
     /// Rock bolts and liners (inactive until installed).
     pub supports: Supports,
     /// Mixed discretization (`zoning.mixed`): 1 / (area of the zones around each node), 1/m²;
@@ -105,4 +89,6 @@ pub struct Model {
     pub mixed: Option<Vec<f64>>,
     /// For each node, the slots of the support-force buffer acting on it.
     pub support_gather: Gather,
+    /// Zone and joint laws, and which joint material each joint feature and hole wall takes.
+    pub materials: Materials,
 }

@@ -4,7 +4,7 @@ use std::collections::BTreeMap;
 
 use adit_meshing::{BoundaryEdge, Domain, EdgeKind};
 
-use super::in_situ_stress;
+use super::plan::{Boundary, InSituField};
 use crate::model::{FIX_X, FIX_Y, Nodes, traction};
 use crate::scene::{BoundaryCondition, Fix, Scene};
 
@@ -61,17 +61,15 @@ pub type BoundaryEffect = (Vec<u8>, Vec<[f64; 2]>);
 /// nodes at `pos`, as `setup` applies them.
 pub fn boundary_effect(
     conditions: &[BoundaryCondition],
-    scene: &Scene,
-    boundary: &[BoundaryEdge],
-    domain: &Domain,
-    part_nodes: &BTreeMap<String, Vec<u32>>,
+    boundary: &Boundary,
+    in_situ: &InSituField,
     pos: &[[f64; 2]],
 ) -> BoundaryEffect {
     let mut scratch = Nodes::at(pos.to_vec());
     for bc in conditions {
         let part = bc.part.as_deref().unwrap_or("");
-        apply_condition(bc, scene, boundary, &mut scratch, part_nodes, &|k| {
-            edge_in_part(domain, k, part)
+        apply_condition(bc, boundary, in_situ, &mut scratch, &|k| {
+            edge_in_part(&boundary.domain, k, part)
         });
     }
     (scratch.fixed, scratch.applied)
@@ -88,12 +86,12 @@ fn fix_flags(f: Fix) -> u8 {
 /// Apply one boundary condition: fixities on nodes, tractions as consistent nodal loads.
 fn apply_condition(
     bc: &BoundaryCondition,
-    scene: &Scene,
-    boundary: &[BoundaryEdge],
+    boundary: &Boundary,
+    in_situ: &InSituField,
     nodes: &mut Nodes,
-    part_nodes: &BTreeMap<String, Vec<u32>>,
     in_part: &dyn Fn(EdgeKind) -> bool,
 ) {
+    let part_nodes = &boundary.part_nodes;
     if let Some(at) = bc.at {
         let all: Vec<u32> = part_nodes.values().flatten().copied().collect();
         let d2 = |n: u32| {
@@ -111,12 +109,11 @@ fn apply_condition(
             nodes.fixed[n as usize] |= fix_flags(f);
         }
     }
-    let poisson = scene.materials[&scene.region.material].poisson;
     let load = |p: [f64; 2], n: [f64; 2]| -> Option<[f64; 2]> {
         let s = if let Some(s) = bc.stress {
             [s.sxx, s.syy, 0.0, s.sxy]
         } else if bc.in_situ_traction {
-            in_situ_stress(&scene.in_situ, p[1], poisson)
+            in_situ.at(p[1])
         } else if bc.normal_stress.is_some() || bc.shear_stress.is_some() {
             let (sn, tau) = (
                 bc.normal_stress.unwrap_or(0.0),
@@ -129,7 +126,7 @@ fn apply_condition(
         Some(traction(&s, n))
     };
     if bc.load_kinds() > 0 {
-        let edges = boundary.iter().filter(|e| in_part(e.kind));
+        let edges = boundary.edges.iter().filter(|e| in_part(e.kind));
         add_tractions(nodes, edges, |p, n| load(p, n).expect("a load is given"));
     }
 }

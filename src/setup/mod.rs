@@ -8,6 +8,7 @@ pub use bodies::add_body_weight;
 mod boundary;
 mod catalogue;
 mod geometry;
+mod plan;
 mod repair;
 mod stage_regions;
 mod supports;
@@ -17,11 +18,12 @@ mod warnings;
 
 use std::collections::BTreeMap;
 
-use adit_meshing::{BoundaryEdge, Domain, EdgeKind, MeshStats};
+use adit_meshing::{BoundaryEdge, EdgeKind, MeshStats};
 
 use boundary::part_nodes;
 pub use boundary::{BoundaryEffect, add_tractions, boundary_effect, edge_in_part};
 pub use geometry::{Meshed, NOT_FILL, domain, joint_segments, mesh, zoning};
+pub use plan::{Boundary, InSituField, Plan, StagePlan};
 
 use catalogue::{JointCatalogue, ZoneCatalogue};
 pub use catalogue::{joint_law, zone_law};
@@ -32,39 +34,33 @@ use crate::joint::{FAILED, JointState};
 use crate::law::ZoneLaw;
 use crate::model::Contacts;
 use crate::model::blocks::{Blocks, NO_EDGE};
-use crate::model::{BODY, Gather, MaterialId, Model, Nodes, Zones, traction};
+use crate::model::{BODY, Gather, MaterialId, Materials, Model, Nodes, Zones, traction};
 use crate::scene::{BlockMode, BoundaryCondition, InSitu, Scene};
+use crate::support::{SupportId, Supports};
 
-/// A model ready to cycle, with what was learnt while building it.
+/// A model ready to cycle, the plan of its stages, and what was learnt while building it.
 pub struct Setup {
     pub model: Model,
+    pub plan: Plan,
     pub mesh: MeshStats,
-    /// Boundary nodes of each named part (`outer`, region edge names, excavation names), sorted.
-    pub part_nodes: BTreeMap<String, Vec<u32>>,
-    /// Boundary edges of all blocks (global node ids), material on the left, labelled by kind.
-    pub boundary: Vec<BoundaryEdge>,
-    /// The validated domain the blocks cover.
-    pub domain: Domain,
-    /// For each stage, the blocks its `regions` give another zone material, with that material.
-    pub stage_materials: Vec<Vec<(u32, MaterialId)>>,
     /// Things worth a warning: sliver blocks, joints absorbed into blocks.
     pub warnings: Vec<String>,
 }
 
-/// The wall edges of excavation `j` on the rock that stays: not the edges of its own fill (the
-/// rock that fills a staged excavation until a stage removes it), nor of any removed block.
+/// The wall edges of excavation `j` on the rock that stays: not the edges of its own fill (`fill`:
+/// the staged excavation whose rock each block is, or `NOT_FILL`), nor of any removed block.
 pub fn rock_walls<'a>(
-    boundary: &'a [BoundaryEdge],
-    model: &'a Model,
+    edges: &'a [BoundaryEdge],
+    blocks: &'a Blocks,
+    fill: &'a [u32],
     j: u32,
 ) -> impl Iterator<Item = &'a BoundaryEdge> {
-    let blocks = &model.blocks;
-    boundary
+    edges
         .iter()
         .filter(move |e| e.kind == EdgeKind::Excavation(j))
         .filter(move |e| {
             let b = blocks.block_of_node(e.nodes[0]);
-            model.fill.get(b).copied().unwrap_or(NOT_FILL) != j && !blocks.is_removed(b)
+            fill.get(b).copied().unwrap_or(NOT_FILL) != j && !blocks.is_removed(b)
         })
 }
 
@@ -175,7 +171,7 @@ pub fn setup_meshed(scene: &Scene, meshed: Meshed) -> anyhow::Result<Setup> {
         outline,
         outline_block,
         mut blocks,
-        boundary,
+        boundary: edges,
     } = assemble(&meshed);
     let mut nodes = Nodes::at(pos);
     let mut zones = Zones::from_triangles(&triangles, &nodes.pos);
@@ -183,7 +179,7 @@ pub fn setup_meshed(scene: &Scene, meshed: Meshed) -> anyhow::Result<Setup> {
 
     let zone_laws = ZoneCatalogue::of(scene);
     let block_material = zone_laws.of_blocks(scene, &meshed);
-    let stage_materials =
+    let stage_regions =
         stage_regions::stage_materials(scene, &meshed.blocking.blocks, &block_material, &|name| {
             zone_laws.id(name)
         })?;
@@ -193,10 +189,18 @@ pub fn setup_meshed(scene: &Scene, meshed: Meshed) -> anyhow::Result<Setup> {
     stress_zones(&mut zones, &nodes.pos, &block_material, stress_at);
     add_zone_weight(&mut nodes, &zones, &zone_laws.laws, scene.gravity);
 
-    let domain = &meshed.domain;
-    let part_nodes = part_nodes(scene, domain, &boundary);
+    let in_situ = InSituField {
+        in_situ: scene.in_situ.clone(),
+        poisson: zone_laws.poisson[zone_laws.region.0 as usize],
+    };
+    let part_nodes = part_nodes(scene, &meshed.domain, &edges);
+    let boundary = Boundary {
+        edges,
+        domain: meshed.domain.clone(),
+        part_nodes,
+    };
     let effect = |conditions: &[BoundaryCondition], pos: &[[f64; 2]]| {
-        boundary_effect(conditions, scene, &boundary, domain, &part_nodes, pos)
+        boundary_effect(conditions, &boundary, &in_situ, pos)
     };
     let conditions = effect(&scene.boundary, &nodes.pos);
     let fixed = apply(&mut nodes, conditions);
@@ -241,9 +245,8 @@ pub fn setup_meshed(scene: &Scene, meshed: Meshed) -> anyhow::Result<Setup> {
             joint_material: &joint_laws.feature,
             hole_material: &joint_laws.hole,
         };
-        let region_poisson = zone_laws.poisson[zone_laws.region.0 as usize];
         detect(&d, &Contacts::default(), &|t: &Touch| {
-            in_situ_joint(&scene.in_situ, region_poisson, t)
+            in_situ_joint(&in_situ, t)
         })
     } else {
         Contacts::none(nodes.len())
@@ -251,7 +254,7 @@ pub fn setup_meshed(scene: &Scene, meshed: Meshed) -> anyhow::Result<Setup> {
 
     let warnings = warnings(scene, &meshed)?;
 
-    let size = domain.outer.size();
+    let size = boundary.domain.outer.size();
     let gather = Gather::new(nodes.len(), &zones.nodes);
     let mixed = scene
         .zoning
@@ -261,31 +264,56 @@ pub fn setup_meshed(scene: &Scene, meshed: Meshed) -> anyhow::Result<Setup> {
         nodes,
         zones,
         gather,
-        laws: zone_laws.laws,
-        material_names: zone_laws.names,
         size,
         blocks,
         bodies,
         contacts,
-        joint_laws: joint_laws.laws,
-        joint_material_names: joint_laws.names,
-        joint_material: joint_laws.feature,
         contact_tolerance,
-        hole_material: joint_laws.hole,
-        fill: meshed.fill.clone(),
-        null_material: zone_laws.null,
         supports: Default::default(),
         support_gather: Gather::default(),
         mixed,
+        materials: Materials {
+            zone: zone_laws.laws,
+            zone_names: zone_laws.names,
+            null: zone_laws.null,
+            joint: joint_laws.laws,
+            joint_names: joint_laws.names,
+            feature: joint_laws.feature,
+            hole: joint_laws.hole,
+        },
     };
-    install_supports(scene, &mut model, &meshed.domain, &boundary)?;
+    let fill = meshed.fill;
+    model.supports = supports::supports(scene, &model, &fill, &boundary)?;
+    model.support_gather = Gather::from_slots(model.nodes.len(), &model.supports.slot_nodes());
+    let m = &model.materials;
+    let plan = Plan::of(
+        scene,
+        boundary,
+        fill,
+        in_situ,
+        plan::Resolved {
+            zone_id: &|n| {
+                m.zone_id(n)
+                    .ok_or_else(|| anyhow::anyhow!("no material '{n}'"))
+            },
+            joint_id: &|n| {
+                m.joint_id(n)
+                    .ok_or_else(|| anyhow::anyhow!("no joint material '{n}'"))
+            },
+            support_id: &|n| {
+                model
+                    .supports
+                    .id(n)
+                    .ok_or_else(|| anyhow::anyhow!("no bolt group or liner '{n}'"))
+            },
+            stage_regions,
+        },
+    )?;
+    install_from_start(&mut model.supports, &plan, &model.nodes.disp);
     Ok(Setup {
         model,
+        plan,
         mesh: stats,
-        part_nodes,
-        boundary,
-        domain: meshed.domain,
-        stage_materials,
         warnings,
     })
 }
@@ -349,11 +377,11 @@ fn refuse_body_fixity_changes(
 }
 
 /// The joint state a contact found at setup starts in. Joints present from the start are intact
-/// and carry the in-situ traction of the region's rock (Poisson's ratio `poisson`); corner contacts
+/// and carry the in-situ traction (σzz from the region rock's Poisson's ratio); corner contacts
 /// (blocks meeting at a point, not along a joint) start unstressed, without strength, at their gap
 /// if apart (rounded corners of diagonal blocks at a joint crossing), else at zero overlap (the cut
 /// geometry has none; a negative gap is an artefact of the corner).
-fn in_situ_joint(in_situ: &InSitu, poisson: f64, t: &Touch) -> JointState {
+fn in_situ_joint(in_situ: &InSituField, t: &Touch) -> JointState {
     if !t.face {
         return JointState {
             normal_displacement: t.gap.max(0.0),
@@ -361,7 +389,7 @@ fn in_situ_joint(in_situ: &InSitu, poisson: f64, t: &Touch) -> JointState {
             ..Default::default()
         };
     }
-    let s = in_situ_stress(in_situ, t.point[1], poisson);
+    let s = in_situ.at(t.point[1]);
     let n = t.normal;
     let tangent = [-n[1], n[0]];
     let t = traction(&s, n);
@@ -389,22 +417,20 @@ fn inverse_patch_areas(zones: &Zones, nodes: usize) -> Vec<f64> {
         .collect()
 }
 
-/// The scene's bolts and liners on `model`, with their gather; those no stage installs are there
-/// from the start.
-fn install_supports(
-    scene: &Scene,
-    model: &mut Model,
-    domain: &Domain,
-    boundary: &[BoundaryEdge],
-) -> anyhow::Result<()> {
-    model.supports = supports::supports(scene, model, domain, boundary)?;
-    model.support_gather = Gather::from_slots(model.nodes.len(), &model.supports.slot_nodes());
-    let staged: Vec<&String> = scene.stages.iter().flat_map(|s| &s.install).collect();
-    let from_start = scene.bolts.iter().map(|b| &b.name);
-    for name in from_start.chain(scene.liners.iter().map(|l| &l.name)) {
-        if !staged.contains(&name) {
-            model.supports.install(name, &model.nodes.disp);
+/// Install the bolts and liners no stage installs: they are there from the start.
+fn install_from_start(supports: &mut Supports, plan: &Plan, rock: &[[f64; 2]]) {
+    let staged: Vec<SupportId> = plan
+        .stages
+        .iter()
+        .flat_map(|s| &s.install)
+        .copied()
+        .collect();
+    let all = (0..supports.cables.names.len() as u32)
+        .map(SupportId::Bolts)
+        .chain((0..supports.liners.names.len() as u32).map(SupportId::Liner));
+    for id in all {
+        if !staged.contains(&id) {
+            supports.install(id, rock);
         }
     }
-    Ok(())
 }

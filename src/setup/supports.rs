@@ -2,8 +2,9 @@
 //! nodes hosted by the rock zones they lie in; liners become beams on the rock side of an
 //! excavation's wall. All start inactive: a stage (or the start of the run) installs them.
 
-use adit_meshing::{BoundaryEdge, Domain};
+use adit_meshing::Domain;
 
+use super::plan::Boundary;
 use super::{NOT_FILL, rock_walls};
 use crate::model::Model;
 use crate::scene::{BoltSpec, LinerSpec, Scene};
@@ -13,11 +14,12 @@ use crate::support::{CableProps, Cables, LinerProps, Liners, Supports};
 pub fn supports(
     scene: &Scene,
     model: &Model,
-    domain: &Domain,
-    boundary: &[BoundaryEdge],
+    fill: &[u32],
+    boundary: &Boundary,
 ) -> anyhow::Result<Supports> {
+    let domain = &boundary.domain;
     let mut cables = Cables::default();
-    let hosts = Hosts::new(model);
+    let hosts = Hosts::new(model, fill);
     for (i, b) in scene.bolts.iter().enumerate() {
         let g = cables.names.len() as u32;
         cables.names.push(b.name.clone());
@@ -62,7 +64,9 @@ pub fn supports(
         liners.names.push(l.name.clone());
         liners.props.push(liner_props(l));
         liners.active.push(false);
-        let walls: Vec<[u32; 2]> = rock_walls(boundary, model, j).map(|e| e.nodes).collect();
+        let walls: Vec<[u32; 2]> = rock_walls(&boundary.edges, &model.blocks, fill, j)
+            .map(|e| e.nodes)
+            .collect();
         liners.add(g, &walls, &model.nodes.pos, tol);
     }
     Ok(Supports { cables, liners })
@@ -164,13 +168,11 @@ struct Hosts {
 }
 
 impl Hosts {
-    fn new(model: &Model) -> Hosts {
+    fn new(model: &Model, fill: &[u32]) -> Hosts {
         let z = &model.zones;
         let zones = (0..z.len() as u32)
             .filter(|&i| {
-                model
-                    .fill
-                    .get(z.block[i as usize] as usize)
+                fill.get(z.block[i as usize] as usize)
                     .copied()
                     .unwrap_or(NOT_FILL)
                     == NOT_FILL

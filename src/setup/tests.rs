@@ -57,7 +57,7 @@ fn tractions_of_a_uniform_stress_balance_on_a_closed_boundary() {
         "{fx} {fy} {m}"
     );
     // The traction on the top edge (n = +y) is (σxy, σyy) over 10 m.
-    let top: f64 = b.part_nodes["edge2"]
+    let top: f64 = b.plan.boundary.part_nodes["edge2"]
         .iter()
         .map(|&n| b.model.nodes.applied[n as usize][1])
         .sum();
@@ -74,7 +74,7 @@ fn horseshoe_excavation_has_its_area() {
         r#"{ "name": "drive", "horseshoe": { "center": [0, 0], "radius": 3, "wall_height": 2, "segments": 256 } }"#,
     );
     let b = setup(&s).unwrap();
-    let hole = b.domain.holes[0].polygon.signed_area().abs();
+    let hole = b.plan.boundary.domain.holes[0].polygon.signed_area().abs();
     let exact = 0.5 * std::f64::consts::PI * 9.0 + 6.0 * 2.0;
     assert!((hole - exact).abs() < 1e-3 * exact, "{hole} vs {exact}");
     assert!((b.mesh.area - (400.0 - hole)).abs() < 1e-6 * 400.0);

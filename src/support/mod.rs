@@ -29,6 +29,13 @@ pub struct Supports {
     pub liners: Liners,
 }
 
+/// A bolt group or a liner: its index among the scene's bolt groups or liners.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SupportId {
+    Bolts(u32),
+    Liner(u32),
+}
+
 impl Supports {
     pub fn is_empty(&self) -> bool {
         self.cables.nodes() == 0 && self.liners.nodes() == 0
@@ -65,17 +72,19 @@ impl Supports {
             .collect()
     }
 
-    /// Install the bolt group or liner `name` on the rock as it is now (`rock`: node
-    /// displacements); false if there is none of that name.
-    pub fn install(&mut self, name: &str, rock: &[[f64; 2]]) -> bool {
-        if let Some(g) = self.cables.names.iter().position(|n| n == name) {
-            self.cables.install(g, rock);
-            true
-        } else if let Some(g) = self.liners.names.iter().position(|n| n == name) {
-            self.liners.install(g, rock);
-            true
-        } else {
-            false
+    /// The bolt group or liner called `name`.
+    pub fn id(&self, name: &str) -> Option<SupportId> {
+        let index = |names: &[String]| names.iter().position(|n| n == name).map(|g| g as u32);
+        index(&self.cables.names)
+            .map(SupportId::Bolts)
+            .or_else(|| index(&self.liners.names).map(SupportId::Liner))
+    }
+
+    /// Install the bolt group or liner `id` on the rock as it is now (`rock`: node displacements).
+    pub fn install(&mut self, id: SupportId, rock: &[[f64; 2]]) {
+        match id {
+            SupportId::Bolts(g) => self.cables.install(g as usize, rock),
+            SupportId::Liner(g) => self.liners.install(g as usize, rock),
         }
     }
 

@@ -67,7 +67,10 @@ fn shear(sc: &Scene) -> anyhow::Result<(Vec<Sample>, u64, usize)> {
     let (mut solver, settled_cycles) = settle(&mut b.model, &sc.solve, "normal loading")?;
     // The whole top block is driven sideways (x fixed at a constant velocity, y free): like the
     // guided box of a shear rig, it cannot rotate, so the joint shears uniformly.
-    let top_block = b.model.blocks.block_of_node(b.part_nodes["top"][0]);
+    let top_block = b
+        .model
+        .blocks
+        .block_of_node(b.plan.boundary.part_nodes["top"][0]);
     let nodes = b.model.blocks.node_start[top_block] as usize
         ..b.model.blocks.node_start[top_block + 1] as usize;
     let top: Vec<usize> = nodes.collect();

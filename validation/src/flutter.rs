@@ -127,7 +127,7 @@ pub fn deformable_growth_rate(model: &Model, block: usize, mu: f64, kn: f64, bet
     let mut k = DMatrix::<f64>::zeros(2 * n, 2 * n);
     let zones = &model.zones;
     for z in (0..zones.len()).filter(|&z| zones.block[z] as usize == block) {
-        let (bulk, shear) = model.laws[zones.material[z].0 as usize].moduli();
+        let (bulk, shear) = model.materials.zone[zones.material[z].0 as usize].moduli();
         let (a1, a2) = (bulk + 4.0 / 3.0 * shear, bulk - 2.0 / 3.0 * shear);
         let (g, area) = (zones.grad[z], zones.area[z]);
         // Strain (εxx, εyy, γxy) per unit displacement of corner i in direction d.

@@ -151,7 +151,7 @@ pub fn run(across: usize, size: f64, loading: &Loading) -> anyhow::Result<Grains
     let (w, h) = (across as f64 * size, 2.0 * across as f64 * size);
     let mut b = setup(&sc)?;
     let mut solver = adit::solve::Solver::new(&mut b.model, &sc.solve, 0);
-    let top = b.part_nodes["top"].clone();
+    let top = b.plan.boundary.part_nodes["top"].clone();
     for &n in &top {
         b.model.nodes.fixed[n as usize] |= FIX_Y;
     }
@@ -237,7 +237,7 @@ mod tests {
         let mut b = setup(&sc).unwrap();
         let mut solver = adit::solve::Solver::new(&mut b.model, &sc.solve, 0);
         let first = b.model.nodes.mass.clone();
-        let top = b.part_nodes["top"].clone();
+        let top = b.plan.boundary.part_nodes["top"].clone();
         for &n in &top {
             b.model.nodes.fixed[n as usize] |= FIX_Y;
             b.model.nodes.vel[n as usize][1] = -5e-6;

@@ -158,7 +158,7 @@ impl Slide {
         let damped_sigma = growth(beta);
         let (_, settled_cycles) = settle(&mut b.model, &sc.solve, "settling")?;
 
-        b.model.joint_laws[0] = Box::new(CoulombSlip {
+        b.model.materials.joint[0] = Box::new(CoulombSlip {
             normal_stiffness: kn,
             shear_stiffness: kn,
             tan_friction: mu,

@@ -204,7 +204,8 @@ pub fn run(scene: &Scene, case: &str) -> anyhow::Result<InclusionResult> {
     // Rock zones touching the interface: centroid within a zone size of it.
     let h = s.zoning.edge_at_excavation;
     let inclusion_material = model
-        .material_names
+        .materials
+        .zone_names
         .iter()
         .position(|n| *n == inc.material)
         .expect("the inclusion's material") as u32;

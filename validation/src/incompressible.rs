@@ -57,7 +57,7 @@ pub fn run(nu: f64, mixed: bool, edge: f64) -> anyhow::Result<CaseReport> {
         "Lamé cylinder did not converge: {}",
         r.summary.status
     );
-    let wall = &r.built.part_nodes["bore"];
+    let wall = &r.built.plan.boundary.part_nodes["bore"];
     let u = crate::mean_radial_displacement(&r.built.model, wall);
     let exact = lame(1.0, nu);
     Ok(CaseReport::new(

@@ -102,11 +102,13 @@ pub enum OuterLoad {
 /// Replace the loads on the region's outer boundary by the traction σ(p)·n of an exact stress field
 /// [σxx, σyy, σxy] (Pa): the discrete problem's exact solution is then the field itself.
 pub fn load_outer_exactly(built: &mut Setup, stress: impl Fn(f64, f64) -> [f64; 3]) {
-    for &n in &built.part_nodes["outer"] {
+    for &n in &built.plan.boundary.part_nodes["outer"] {
         built.model.nodes.applied[n as usize] = [0.0; 2];
     }
     let edges = built
+        .plan
         .boundary
+        .edges
         .iter()
         .filter(|e| matches!(e.kind, EdgeKind::Region(_)));
     add_tractions(&mut built.model.nodes, edges, |p, n| {
@@ -146,7 +148,7 @@ pub fn run(scene: &Scene, case: &str, load: OuterLoad) -> anyhow::Result<KirschR
         area += w;
         count += 1;
     }
-    let wall = &built.part_nodes[&scene.excavations[0].name];
+    let wall = &built.plan.boundary.part_nodes[&scene.excavations[0].name];
     let (mut err, mut max_u) = (0.0f64, 0.0f64);
     for &n in wall {
         let p = model.nodes.pos[n as usize];

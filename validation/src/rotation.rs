@@ -194,7 +194,7 @@ pub fn turned(large_strain: bool) -> anyhow::Result<Turned> {
         solver.cycle.zone_forces(
             &m.nodes,
             &mut m.zones,
-            &m.laws,
+            &m.materials.zone,
             &m.gather,
             m.mixed.as_deref(),
             &solver.params,

@@ -266,7 +266,7 @@ fn measure(
     );
     let (m, rp) = (&b.model, exact.plastic_radius());
     let z = &m.zones;
-    let hole_area = b.domain.holes[0].polygon.signed_area().abs();
+    let hole_area = b.plan.boundary.domain.holes[0].polygon.signed_area().abs();
     let mut yielded = 0.0;
     let (mut num, mut den, mut h2, mut count) = (0.0, 0.0, 0.0, 0.0);
     for i in 0..z.len() {
@@ -290,6 +290,8 @@ fn measure(
     }
     let rp_h = ((hole_area + yielded) / std::f64::consts::PI).sqrt();
     let wall = b
+        .plan
+        .boundary
         .part_nodes
         .get(&sc.excavations[0].name)
         .ok_or_else(|| anyhow::anyhow!("no wall nodes"))?;
@@ -498,19 +500,20 @@ pub fn ground_reaction(
     let mut b = setup(&sc)?;
     let p0 = exact.p0;
     // The wall nodes of the rock that stays (the fill's own wall nodes go with it).
-    let fill = |n: u32| b.model.fill[b.model.blocks.block_of_node(n)] != adit::setup::NOT_FILL;
-    let wall: Vec<u32> = b.part_nodes[&hole]
+    let fill = |n: u32| b.plan.fill[b.model.blocks.block_of_node(n)] != adit::setup::NOT_FILL;
+    let wall: Vec<u32> = b.plan.boundary.part_nodes[&hole]
         .iter()
         .copied()
         .filter(|&n| !fill(n))
         .collect();
     let mean_u = |m: &adit::model::Model| crate::mean_radial_displacement(m, &wall);
-    let mut staging = Staging::new(&sc);
+    let adit::setup::Setup { model, plan, .. } = &mut b;
+    let mut staging = Staging::new(plan);
     let (mut curve, mut cycles) = (Vec::new(), 0);
-    for st in &sc.stages {
-        staging.apply(st, &sc, &mut b);
-        let mut solver = Solver::new(&mut b.model, &sc.solve, 0);
-        let sol = solver.solve(&mut b.model, &mut Quiet);
+    for st in &plan.stages {
+        staging.apply(st, model, plan);
+        let mut solver = Solver::new(model, &st.solve, 0);
+        let sol = solver.solve(model, &mut Quiet);
         anyhow::ensure!(
             sol.status == Status::Converged,
             "ground reaction, stage {}: {:?}",
@@ -521,7 +524,7 @@ pub fn ground_reaction(
         let pi = st.support_fraction * p0;
         curve.push(GrcPoint {
             pressure: pi,
-            computed: mean_u(&b.model),
+            computed: mean_u(model),
             exact: Salencon { pi, ..exact }.wall_displacement(),
         });
     }

@@ -51,8 +51,8 @@ pub fn measure(n: usize) -> anyhow::Result<DetectionCost> {
         blocks: &m.blocks,
         x: &m.nodes.pos,
         tolerance: m.contact_tolerance,
-        joint_material: &m.joint_material,
-        hole_material: &m.hole_material,
+        joint_material: &m.materials.feature,
+        hole_material: &m.materials.hole,
     };
     let mut best = f64::INFINITY;
     let mut contacts = 0;

@@ -165,7 +165,7 @@ fn run(
     );
     let m = &r.built.model;
     let rigid = sc.blocks.mode == adit::scene::BlockMode::Rigid;
-    let top = &r.built.part_nodes["top"];
+    let top = &r.built.plan.boundary.part_nodes["top"];
     let (mut got, mut exact) = (0.0, 0.0);
     for &n in top {
         let x = m.nodes.pos[n as usize][0];

@@ -111,7 +111,7 @@ pub fn run(edge: f64, end_strain: f64, rate: f64) -> anyhow::Result<SofteningRes
     let sc = scene(edge)?;
     let mut b = setup(&sc)?;
     let (mut solver, mut cycles) = crate::settle(&mut b.model, &sc.solve, "confinement")?;
-    let top = b.part_nodes["top"].clone();
+    let top = b.plan.boundary.part_nodes["top"].clone();
     for &n in &top {
         b.model.nodes.fixed[n as usize] |= FIX_Y;
         b.model.nodes.vel[n as usize][1] = -rate;

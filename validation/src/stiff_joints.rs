@@ -44,7 +44,7 @@ pub fn run(ratio: f64, law: &str) -> anyhow::Result<CaseReport> {
     let m = &b.model;
     let p = 1e6;
     let stress = crate::uniform_stress_error(&m.zones.stress, [0.0, -p, 0.0], p);
-    let top = &b.part_nodes["top"];
+    let top = &b.plan.boundary.part_nodes["top"];
     let settle = -top
         .iter()
         .map(|&n| m.nodes.disp[n as usize][1])
