@@ -149,7 +149,9 @@ fn build_solve_write(
             break;
         }
     }
-    let (solver, last_solution) = last.expect("at least one stage");
+    let Some((solver, last_solution)) = last else {
+        anyhow::bail!("stages: the plan has no stage to solve");
+    };
     let solution = Solution {
         status: last_solution.status,
         cycles,

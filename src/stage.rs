@@ -5,10 +5,9 @@
 use adit_meshing::BoundaryEdge;
 
 use crate::model::{FIX_X, FIX_Y, MaterialId, Model, traction};
-use crate::scene::BoundaryCondition;
 use crate::setup::{
-    NOT_FILL, Plan, StagePlan, add_body_weight, add_tractions, add_zone_weight, boundary_effect,
-    joint_law, rock_walls, zone_law,
+    BoundaryEffect, NOT_FILL, Plan, StagePlan, add_body_weight, add_tractions, add_zone_weight,
+    rock_walls,
 };
 
 /// What the stages so far have done.
@@ -19,8 +18,8 @@ pub struct Staging {
     support: Vec<Option<f64>>,
     /// Gravitational acceleration now, m/s².
     gravity: [f64; 2],
-    /// Boundary conditions now in force.
-    boundary: Vec<BoundaryCondition>,
+    /// Fixities and loads of the boundary conditions now in force.
+    boundary: BoundaryEffect,
 }
 
 impl Staging {
@@ -44,8 +43,8 @@ impl Staging {
             remove_fill(model, &plan.fill, j);
             self.support[j as usize] = Some(0.0);
         }
-        for (m, spec) in &stage.materials {
-            model.materials.zone[m.0 as usize] = zone_law(spec);
+        for (m, law) in &stage.materials {
+            model.materials.zone[m.0 as usize] = law.boxed_copy();
         }
         for &(b, m) in &stage.regions {
             set_block_material(model, b as usize, m);
@@ -58,11 +57,11 @@ impl Staging {
             add_body_weight(&mut model.bodies, laws, change);
             self.gravity = g;
         }
-        for (k, spec) in &stage.joint_materials {
-            model.materials.joint[*k as usize] = joint_law(spec);
+        for (k, law) in &stage.joint_materials {
+            model.materials.joint[*k as usize] = law.boxed_copy();
         }
-        if let Some(list) = &stage.boundary {
-            self.change_boundary(list, model, plan);
+        if let Some(effect) = &stage.boundary {
+            self.change_boundary(effect, model);
         }
         for &id in &stage.install {
             model.supports.install(id, &model.nodes.disp);
@@ -88,16 +87,13 @@ impl Staging {
         }
     }
 
-    /// Replace the boundary conditions in force by `list`: fixities only the old list set are
-    /// released, new ones hold their components still, and the loads change by the new list's
-    /// minus the old one's. Nodes of removed rock stay held; `setup` refused a change of fixity at a
+    /// Replace the boundary conditions in force by those with `effect`: fixities only the old
+    /// ones set are released, new ones hold their components still, and the loads change by the
+    /// new minus the old. Nodes of removed rock stay held; `setup` refused a change of fixity at a
     /// rigid or simple block's node.
-    fn change_boundary(&mut self, list: &[BoundaryCondition], model: &mut Model, plan: &Plan) {
-        let effect = |conditions: &[BoundaryCondition]| {
-            boundary_effect(conditions, &plan.boundary, &plan.in_situ, &model.nodes.pos)
-        };
-        let (old_fixed, old_load) = effect(&self.boundary);
-        let (new_fixed, new_load) = effect(list);
+    fn change_boundary(&mut self, effect: &BoundaryEffect, model: &mut Model) {
+        let (old_fixed, old_load) = &self.boundary;
+        let (new_fixed, new_load) = effect;
         let nodes = &mut model.nodes;
         for n in 0..nodes.len() {
             if model
@@ -115,7 +111,7 @@ impl Staging {
             }
             nodes.fixed[n] = (nodes.fixed[n] & !released) | new_fixed[n];
         }
-        self.boundary = list.to_vec();
+        self.boundary = effect.clone();
     }
 
     /// Mean closure (m, inward positive) of the wall of each excavation made so far: the

@@ -39,9 +39,21 @@ pub struct JointState {
 }
 
 /// A joint law: updates a contact's stresses from its normal and shear displacement increments.
-pub trait JointLaw: Send + Sync {
+pub trait JointLaw: Send + Sync + CopyJointLaw {
     /// Advance `state` by the increments of opening `dn` (m, positive opening) and shear `ds` (m).
     fn update(&self, state: &mut JointState, dn: f64, ds: f64);
     /// Normal and shear stiffness (Pa/m), for the time step.
     fn stiffness(&self) -> (f64, f64);
+}
+
+/// A boxed copy of a joint law: a stage plan keeps the law it gives a joint material and the
+/// catalogue takes a copy.
+pub trait CopyJointLaw {
+    fn boxed_copy(&self) -> Box<dyn JointLaw>;
+}
+
+impl<L: JointLaw + Clone + 'static> CopyJointLaw for L {
+    fn boxed_copy(&self) -> Box<dyn JointLaw> {
+        Box::new(self.clone())
+    }
 }

@@ -16,7 +16,7 @@ pub type StrainIncrement = [f64; 3];
 
 /// A zone constitutive law: updates stress (Pa), yield state and plastic shear strain from a
 /// plane-strain strain increment.
-pub trait ZoneLaw: Send + Sync {
+pub trait ZoneLaw: Send + Sync + CopyZoneLaw {
     /// Advance `stress` (Pa), `state` (yield bit flags) and `plastic` (the accumulated plastic
     /// shear strain e^ps, dimensionless, for softening laws) by the strain increment `de`.
     fn update(&self, stress: &mut Stress, state: &mut u8, plastic: &mut f64, de: &StrainIncrement);
@@ -24,4 +24,16 @@ pub trait ZoneLaw: Send + Sync {
     fn moduli(&self) -> (f64, f64);
     /// Mass density, kg/m³.
     fn density(&self) -> f64;
+}
+
+/// A boxed copy of a zone law: a stage plan keeps the law it gives a material and the catalogue
+/// takes a copy.
+pub trait CopyZoneLaw {
+    fn boxed_copy(&self) -> Box<dyn ZoneLaw>;
+}
+
+impl<L: ZoneLaw + Clone + 'static> CopyZoneLaw for L {
+    fn boxed_copy(&self) -> Box<dyn ZoneLaw> {
+        Box::new(self.clone())
+    }
 }

@@ -6,6 +6,7 @@ mod limits;
 mod names;
 mod realization;
 mod supports;
+mod typed;
 mod unique;
 mod validate;
 
@@ -19,6 +20,7 @@ pub use limits::{
 };
 pub use realization::Scatter;
 pub use supports::{BoltLine, BoltPattern, BoltSpec, LinerSpec};
+pub use typed::{BoltLayout, Condition, JointLawSpec, Load, Shape, ZoneLawSpec};
 pub use validate::SceneError;
 
 /// A whole scene, as read from JSON.

@@ -111,8 +111,8 @@ fn crown() -> f64 {
     90.0
 }
 
-use super::Scene;
 use super::validate::{Num, SceneError, invalid};
+use super::{BoltLayout, Scene};
 
 fn positive(path: String, v: f64) -> Result<(), SceneError> {
     if v > 0.0 && v.is_finite() {
@@ -175,13 +175,13 @@ impl Scene {
             if let Some(s) = b.segment {
                 positive(format!("{p}.segment"), s)?;
             }
-            match (&b.line, &b.pattern) {
-                (Some(l), None) => {
+            match b.layout(&p)? {
+                BoltLayout::Line(l) => {
                     if l.from == l.to {
                         return Err(invalid(format!("{p}.line"), "`from` and `to` coincide"));
                     }
                 }
-                (None, Some(pat)) => {
+                BoltLayout::Pattern(pat) => {
                     excavation(format!("{p}.pattern.excavation"), &pat.excavation)?;
                     self.installed_after_its_wall(&format!("{p}.name"), &b.name, &pat.excavation)?;
                     positive(format!("{p}.pattern.length"), pat.length)?;
@@ -192,7 +192,6 @@ impl Scene {
                         positive(format!("{p}.pattern.spacing"), pat.spacing)?;
                     }
                 }
-                _ => return Err(invalid(p, "give exactly one of `line` and `pattern`")),
             }
         }
         for (i, l) in self.liners.iter().enumerate() {

@@ -3,8 +3,8 @@
 use thiserror::Error;
 
 use super::{
-    BoundaryCondition, JointLawKind, JointMaterial, Material, Rayleigh, Scene, SolveMode,
-    SolveSpec, ZoneLawKind,
+    BoundaryCondition, JointLawSpec, JointMaterial, Material, Rayleigh, Scene, Shape, SolveMode,
+    SolveSpec, ZoneLawSpec,
 };
 
 /// Why a scene cannot be used.
@@ -66,24 +66,13 @@ fn validate_material(p: &str, m: &Material) -> Result<(), SceneError> {
 /// The Mohr–Coulomb fields of material `m` (path `p`): required and in range for that law, absent
 /// for the elastic one.
 fn validate_strength(p: &str, m: &Material) -> Result<(), SceneError> {
-    let given = m.cohesion.is_some()
-        || m.friction.is_some()
-        || m.tensile_strength.is_some()
-        || m.dilation != 0.0
-        || !m.softening.is_empty();
-    match m.law {
-        ZoneLawKind::Elastic if given => Err(invalid(
-            p,
-            "cohesion, friction, dilation, tensile_strength and softening belong to `law: mohr_coulomb`",
-        )),
-        ZoneLawKind::Elastic => Ok(()),
-        ZoneLawKind::MohrCoulomb => {
-            let (Some(c), Some(phi)) = (m.cohesion, m.friction) else {
-                return Err(invalid(
-                    p,
-                    "`law: mohr_coulomb` needs `cohesion` and `friction`",
-                ));
-            };
+    match m.law_spec(p)? {
+        ZoneLawSpec::Elastic => Ok(()),
+        ZoneLawSpec::MohrCoulomb {
+            cohesion: c,
+            friction: phi,
+            ..
+        } => {
             if !(c >= 0.0 && c.is_finite()) {
                 return Err(invalid(
                     format!("{p}.cohesion"),
@@ -151,16 +140,8 @@ fn validate_joint_material(p: &str, j: &JointMaterial) -> Result<(), SceneError>
             format!("must be in [0, 90) degrees, got {}", Num(j.dilation)),
         ));
     }
-    if j.law == JointLawKind::ContinuouslyYielding {
-        match j.roughness {
-            Some(r) => positive(&format!("{p}.roughness"), r)?,
-            None => {
-                return Err(invalid(
-                    format!("{p}.roughness"),
-                    "required by the continuously yielding law",
-                ));
-            }
-        }
+    if let JointLawSpec::ContinuouslyYielding { roughness, .. } = j.law_spec(p)? {
+        positive(&format!("{p}.roughness"), roughness)?;
         if let Some(f) = j.initial_friction
             && !(f >= j.friction && f < 90.0)
         {
@@ -169,11 +150,6 @@ fn validate_joint_material(p: &str, j: &JointMaterial) -> Result<(), SceneError>
                 format!("must be in [friction, 90) degrees, got {}", Num(f)),
             ));
         }
-    } else if j.roughness.is_some() || j.initial_friction.is_some() {
-        return Err(invalid(
-            p,
-            "`roughness` and `initial_friction` belong to the continuously yielding law",
-        ));
     }
     for (f, v) in [
         ("cohesion", j.cohesion),
@@ -325,8 +301,8 @@ impl Scene {
         }
         for (i, e) in self.excavations.iter().enumerate() {
             let p = format!("excavations[{i}]");
-            match (&e.circle, &e.polygon, &e.horseshoe) {
-                (Some(c), None, None) => {
+            match e.shape(&p)? {
+                Shape::Circle(c) => {
                     positive(&format!("{p}.circle.radius"), c.radius)?;
                     if c.segments < 8 {
                         return Err(invalid(
@@ -335,8 +311,8 @@ impl Scene {
                         ));
                     }
                 }
-                (None, Some(_), None) => {}
-                (None, None, Some(h)) => {
+                Shape::Polygon(_) => {}
+                Shape::Horseshoe(h) => {
                     positive(&format!("{p}.horseshoe.radius"), h.radius)?;
                     positive(&format!("{p}.horseshoe.wall_height"), h.wall_height)?;
                     if h.segments < 4 {
@@ -345,12 +321,6 @@ impl Scene {
                             "at least 4 segments",
                         ));
                     }
-                }
-                _ => {
-                    return Err(invalid(
-                        &p,
-                        "give exactly one of `circle`, `polygon` and `horseshoe`",
-                    ));
                 }
             }
         }
@@ -555,8 +525,8 @@ impl Scene {
     fn validate_inclusions(&self) -> Result<(), SceneError> {
         for (i, inc) in self.inclusions.iter().enumerate() {
             let p = format!("inclusions[{i}]");
-            match (&inc.circle, &inc.polygon) {
-                (Some(c), None) => {
+            match inc.shape(&p)? {
+                Shape::Circle(c) => {
                     positive(&format!("{p}.circle.radius"), c.radius)?;
                     if c.segments < 8 {
                         return Err(invalid(
@@ -565,8 +535,7 @@ impl Scene {
                         ));
                     }
                 }
-                (None, Some(_)) => {}
-                _ => return Err(invalid(&p, "give exactly one of `circle` and `polygon`")),
+                Shape::Polygon(_) | Shape::Horseshoe(_) => {}
             }
             if !self.materials.contains_key(&inc.material) {
                 return Err(invalid(
@@ -600,38 +569,18 @@ impl Scene {
     }
 
     fn validate_boundary(&self, p: &str, bc: &BoundaryCondition) -> Result<(), SceneError> {
-        match (&bc.part, &bc.at) {
-            (Some(name), None) => {
-                if !self.part_names().contains(name) {
-                    return Err(invalid(
-                        format!("{p}.part"),
-                        format!(
-                            "no boundary part '{name}' (known: {})",
-                            self.part_names().join(", ")
-                        ),
-                    ));
-                }
-            }
-            (None, Some(_)) => {
-                if bc.load_kinds() > 0 {
-                    return Err(invalid(
-                        p,
-                        "a point condition (`at`) can only fix velocities",
-                    ));
-                }
-            }
-            _ => return Err(invalid(p, "give exactly one of `part` and `at`")),
-        }
-        let loads = bc.load_kinds();
-        if loads > 1 {
+        if let (Some(name), None) = (&bc.part, &bc.at)
+            && !self.part_names().contains(name)
+        {
             return Err(invalid(
-                p,
-                "give at most one of `stress`, `in_situ_traction`, `normal_stress`/`shear_stress`",
+                format!("{p}.part"),
+                format!(
+                    "no boundary part '{name}' (known: {})",
+                    self.part_names().join(", ")
+                ),
             ));
         }
-        if loads == 0 && bc.fix.is_none() {
-            return Err(invalid(p, "neither a fixity nor a load is given"));
-        }
+        bc.condition(p)?;
         for (f, v) in [
             ("normal_stress", bc.normal_stress),
             ("shear_stress", bc.shear_stress),

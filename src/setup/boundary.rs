@@ -6,7 +6,7 @@ use adit_meshing::{BoundaryEdge, Domain, EdgeKind};
 
 use super::plan::{Boundary, InSituField};
 use crate::model::{FIX_X, FIX_Y, Nodes, traction};
-use crate::scene::{BoundaryCondition, Fix, Scene};
+use crate::scene::{BoundaryCondition, Condition, Fix, Load, Scene};
 
 /// Whether a boundary edge of `kind` belongs to the part `name`: `outer` takes every region edge,
 /// a region edge name its own, an excavation name its walls.
@@ -58,21 +58,24 @@ pub fn part_nodes(
 pub type BoundaryEffect = (Vec<u8>, Vec<[f64; 2]>);
 
 /// Fixity flags and consistent nodal loads (N/m) of the boundary conditions `conditions` alone, on
-/// nodes at `pos`, as `setup` applies them.
+/// nodes at `pos`, as `setup` applies them; `path` names the list in errors.
 pub fn boundary_effect(
     conditions: &[BoundaryCondition],
+    path: &str,
     boundary: &Boundary,
     in_situ: &InSituField,
     pos: &[[f64; 2]],
-) -> BoundaryEffect {
+) -> anyhow::Result<BoundaryEffect> {
     let mut scratch = Nodes::at(pos.to_vec());
-    for bc in conditions {
-        let part = bc.part.as_deref().unwrap_or("");
-        apply_condition(bc, boundary, in_situ, &mut scratch, &|k| {
-            edge_in_part(&boundary.domain, k, part)
-        });
+    for (k, bc) in conditions.iter().enumerate() {
+        apply_condition(
+            bc.condition(&format!("{path}[{k}]"))?,
+            boundary,
+            in_situ,
+            &mut scratch,
+        )?;
     }
-    (scratch.fixed, scratch.applied)
+    Ok((scratch.fixed, scratch.applied))
 }
 
 fn fix_flags(f: Fix) -> u8 {
@@ -85,50 +88,48 @@ fn fix_flags(f: Fix) -> u8 {
 
 /// Apply one boundary condition: fixities on nodes, tractions as consistent nodal loads.
 fn apply_condition(
-    bc: &BoundaryCondition,
+    condition: Condition,
     boundary: &Boundary,
     in_situ: &InSituField,
     nodes: &mut Nodes,
-    in_part: &dyn Fn(EdgeKind) -> bool,
-) {
+) -> anyhow::Result<()> {
     let part_nodes = &boundary.part_nodes;
-    if let Some(at) = bc.at {
-        let all: Vec<u32> = part_nodes.values().flatten().copied().collect();
-        let d2 = |n: u32| {
-            let p = nodes.pos[n as usize];
-            (p[0] - at[0]).powi(2) + (p[1] - at[1]).powi(2)
-        };
-        if let Some(&n) = all.iter().min_by(|&&a, &&b| d2(a).total_cmp(&d2(b))) {
-            nodes.fixed[n as usize] |= fix_flags(bc.fix.expect("validated: point conditions fix"));
+    let (name, fix, load) = match condition {
+        Condition::Point { at, fix } => {
+            let all: Vec<u32> = part_nodes.values().flatten().copied().collect();
+            let d2 = |n: u32| {
+                let p = nodes.pos[n as usize];
+                (p[0] - at[0]).powi(2) + (p[1] - at[1]).powi(2)
+            };
+            if let Some(&n) = all.iter().min_by(|&&a, &&b| d2(a).total_cmp(&d2(b))) {
+                nodes.fixed[n as usize] |= fix_flags(fix);
+            }
+            return Ok(());
         }
-        return;
-    }
-    let name = bc.part.as_deref().expect("validated: part or at");
-    if let Some(f) = bc.fix {
-        for &n in &part_nodes[name] {
+        Condition::Part { name, fix, load } => (name, fix, load),
+    };
+    if let Some(f) = fix {
+        let Some(part) = part_nodes.get(name) else {
+            anyhow::bail!("boundary: no part '{name}'");
+        };
+        for &n in part {
             nodes.fixed[n as usize] |= fix_flags(f);
         }
     }
-    let load = |p: [f64; 2], n: [f64; 2]| -> Option<[f64; 2]> {
-        let s = if let Some(s) = bc.stress {
-            [s.sxx, s.syy, 0.0, s.sxy]
-        } else if bc.in_situ_traction {
-            in_situ.at(p[1])
-        } else if bc.normal_stress.is_some() || bc.shear_stress.is_some() {
-            let (sn, tau) = (
-                bc.normal_stress.unwrap_or(0.0),
-                bc.shear_stress.unwrap_or(0.0),
-            );
-            return Some([sn * n[0] - tau * n[1], sn * n[1] + tau * n[0]]);
-        } else {
-            return None;
-        };
-        Some(traction(&s, n))
+    let Some(load) = load else {
+        return Ok(());
     };
-    if bc.load_kinds() > 0 {
-        let edges = boundary.edges.iter().filter(|e| in_part(e.kind));
-        add_tractions(nodes, edges, |p, n| load(p, n).expect("a load is given"));
-    }
+    let traction = |p: [f64; 2], n: [f64; 2]| match load {
+        Load::Stress(s) => traction(&[s.sxx, s.syy, 0.0, s.sxy], n),
+        Load::InSitu => traction(&in_situ.at(p[1]), n),
+        Load::NormalShear { normal, shear } => {
+            [normal * n[0] - shear * n[1], normal * n[1] + shear * n[0]]
+        }
+    };
+    let domain = &boundary.domain;
+    let edges = (boundary.edges.iter()).filter(|e| edge_in_part(domain, e.kind, name));
+    add_tractions(nodes, edges, traction);
+    Ok(())
 }
 
 /// Add the consistent nodal loads of a traction t(p, n) (Pa, at point p with outward unit normal

@@ -6,39 +6,42 @@ use crate::contact::detect::NO_MATERIAL;
 use crate::joint::{ContinuouslyYielding, CoulombSlip, Glued, JointLaw, tan_deg};
 use crate::law::{Elastic, MohrCoulomb, Null, ZoneLaw};
 use crate::model::MaterialId;
-use crate::scene::{JointLawKind, JointMaterial, Material, Scene, ZoneLawKind};
+use crate::scene::{JointLawSpec, JointMaterial, Material, Scene, SceneError, ZoneLawSpec};
 
 use super::geometry::{Meshed, NOT_FILL};
 
-/// The zone law of a material (scene-validated).
-pub fn zone_law(m: &Material) -> Box<dyn ZoneLaw> {
+/// The zone law of material `m` (scene field `path`).
+pub fn zone_law(m: &Material, path: &str) -> Result<Box<dyn ZoneLaw>, SceneError> {
     let elastic = Elastic::from_young(m.young, m.poisson, m.density);
-    match m.law {
-        ZoneLawKind::Elastic => Box::new(elastic),
-        ZoneLawKind::MohrCoulomb => {
-            let c = m.cohesion.expect("validated");
-            let phi = m.friction.expect("validated");
-            let tension = m.tensile_strength.unwrap_or(f64::INFINITY);
-            let mut law = MohrCoulomb::new(elastic, c, phi, m.dilation, tension);
-            law.softening = m
-                .softening
+    Ok(match m.law_spec(path)? {
+        ZoneLawSpec::Elastic => Box::new(elastic),
+        ZoneLawSpec::MohrCoulomb {
+            cohesion,
+            friction,
+            dilation,
+            tensile_strength,
+            softening,
+        } => {
+            let tension = tensile_strength.unwrap_or(f64::INFINITY);
+            let mut law = MohrCoulomb::new(elastic, cohesion, friction, dilation, tension);
+            law.softening = softening
                 .iter()
                 .map(|p| (p.plastic_strain, p.cohesion, p.friction.to_radians()))
                 .collect();
             Box::new(law)
         }
-    }
+    })
 }
 
-/// The joint law of a joint material (scene-validated).
-pub fn joint_law(j: &JointMaterial) -> Box<dyn JointLaw> {
+/// The joint law of joint material `j` (scene field `path`).
+pub fn joint_law(j: &JointMaterial, path: &str) -> Result<Box<dyn JointLaw>, SceneError> {
     let (normal_stiffness, shear_stiffness) = (j.normal_stiffness, j.shear_stiffness);
-    match j.law {
-        JointLawKind::Glued => Box::new(Glued {
+    Ok(match j.law_spec(path)? {
+        JointLawSpec::Glued => Box::new(Glued {
             normal_stiffness,
             shear_stiffness,
         }),
-        JointLawKind::Coulomb => Box::new(CoulombSlip {
+        JointLawSpec::Coulomb => Box::new(CoulombSlip {
             normal_stiffness,
             shear_stiffness,
             tan_friction: tan_deg(j.friction),
@@ -46,14 +49,24 @@ pub fn joint_law(j: &JointMaterial) -> Box<dyn JointLaw> {
             tensile_strength: j.tensile_strength,
             tan_dilation: tan_deg(j.dilation),
         }),
-        JointLawKind::ContinuouslyYielding => Box::new(ContinuouslyYielding {
+        JointLawSpec::ContinuouslyYielding {
+            roughness,
+            initial_friction,
+        } => Box::new(ContinuouslyYielding {
             normal_stiffness,
             shear_stiffness,
             friction: j.friction.to_radians(),
-            initial_friction: j.initial_friction.unwrap_or(j.friction).to_radians(),
-            roughness: j.roughness.expect("validated"),
+            initial_friction: initial_friction.to_radians(),
+            roughness,
         }),
-    }
+    })
+}
+
+/// Where `name` is in `names`, as an id; else an error naming the field `path`.
+pub(super) fn position(names: &[String], name: &str, path: &str) -> anyhow::Result<u32> {
+    let i = names.iter().position(|n| n == name);
+    i.map(|i| i as u32)
+        .ok_or_else(|| anyhow::anyhow!("{path}: no material named '{name}'"))
 }
 
 /// The zone laws by `MaterialId`: the scene's materials in order, then (with stages) the null law
@@ -65,53 +78,58 @@ pub(super) struct ZoneCatalogue {
     pub null: Option<MaterialId>,
     /// Poisson's ratio of each of the scene's materials.
     pub poisson: Vec<f64>,
+    /// Young's modulus of each of the scene's materials, Pa.
+    pub young: Vec<f64>,
     /// The region's material.
     pub region: MaterialId,
+    /// The material of each inclusion.
+    pub inclusion: Vec<MaterialId>,
 }
 
 impl ZoneCatalogue {
-    pub fn of(scene: &Scene) -> ZoneCatalogue {
+    pub fn of(scene: &Scene) -> anyhow::Result<ZoneCatalogue> {
         let mut names: Vec<String> = scene.materials.keys().cloned().collect();
-        let mut laws: Vec<Box<dyn ZoneLaw>> = scene.materials.values().map(zone_law).collect();
-        let region = names
-            .iter()
-            .position(|n| *n == scene.region.material)
-            .expect("validated");
+        let mut laws: Vec<Box<dyn ZoneLaw>> = Vec::with_capacity(names.len() + 1);
+        for (name, m) in &scene.materials {
+            laws.push(zone_law(m, &format!("materials.{name}"))?);
+        }
+        let region = MaterialId(position(&names, &scene.region.material, "region.material")?);
+        let mut inclusion = Vec::with_capacity(scene.inclusions.len());
+        for (i, inc) in scene.inclusions.iter().enumerate() {
+            let path = format!("inclusions[{i}].material");
+            inclusion.push(MaterialId(position(&names, &inc.material, &path)?));
+        }
         // Excavated zones take the null law (the last material).
         let null = (!scene.stages.is_empty()).then(|| {
             names.push("excavated".into());
             laws.push(Box::new(Null));
             MaterialId((laws.len() - 1) as u32)
         });
-        ZoneCatalogue {
+        Ok(ZoneCatalogue {
             names,
             laws,
             null,
             poisson: scene.materials.values().map(|m| m.poisson).collect(),
-            region: MaterialId(region as u32),
-        }
+            young: scene.materials.values().map(|m| m.young).collect(),
+            region,
+            inclusion,
+        })
     }
 
-    /// The id of the material `name`.
-    pub fn id(&self, name: &str) -> MaterialId {
-        MaterialId(
-            self.names
-                .iter()
-                .position(|n| n == name)
-                .expect("validated") as u32,
-        )
+    /// The id of the material `name` (scene field `path`).
+    pub fn id(&self, name: &str, path: &str) -> anyhow::Result<MaterialId> {
+        position(&self.names, name, path).map(MaterialId)
     }
 
     /// Each block's material: the region's, or its inclusion's.
-    pub fn of_blocks(&self, scene: &Scene, meshed: &Meshed) -> Vec<MaterialId> {
-        meshed
-            .inclusion
-            .iter()
-            .map(|&i| match scene.inclusions.get(i as usize) {
-                Some(inc) => self.id(&inc.material),
-                None => self.region,
-            })
-            .collect()
+    pub fn of_blocks(&self, meshed: &Meshed) -> Vec<MaterialId> {
+        let of_block = |i: u32| {
+            self.inclusion
+                .get(i as usize)
+                .copied()
+                .unwrap_or(self.region)
+        };
+        meshed.inclusion.iter().map(|&i| of_block(i)).collect()
     }
 }
 
@@ -128,18 +146,34 @@ pub(super) struct JointCatalogue {
 }
 
 impl JointCatalogue {
-    pub fn of(scene: &Scene, meshed: &Meshed) -> JointCatalogue {
+    pub fn of(
+        scene: &Scene,
+        meshed: &Meshed,
+        zones: &ZoneCatalogue,
+    ) -> anyhow::Result<JointCatalogue> {
         let mut names: Vec<String> = scene.joint_materials.keys().cloned().collect();
-        let mut laws: Vec<Box<dyn JointLaw>> =
-            scene.joint_materials.values().map(joint_law).collect();
-        let index = |name: &str| names.iter().position(|n| n == name).expect("validated") as u32;
-        let feature: Vec<u32> = scene
-            .joint_sets
-            .iter()
-            .map(|s| index(&s.material))
-            .chain(scene.joints.iter().map(|j| index(&j.material)))
-            .chain(scene.voronoi.iter().map(|v| index(&v.material)))
-            .collect();
+        let mut laws: Vec<Box<dyn JointLaw>> = Vec::with_capacity(names.len() + 2);
+        for (name, j) in &scene.joint_materials {
+            laws.push(joint_law(j, &format!("joint_materials.{name}"))?);
+        }
+        let mut feature = Vec::new();
+        for (i, s) in scene.joint_sets.iter().enumerate() {
+            feature.push(position(
+                &names,
+                &s.material,
+                &format!("joint_sets[{i}].material"),
+            )?);
+        }
+        for (i, j) in scene.joints.iter().enumerate() {
+            feature.push(position(
+                &names,
+                &j.material,
+                &format!("joints[{i}].material"),
+            )?);
+        }
+        if let Some(v) = &scene.voronoi {
+            feature.push(position(&names, &v.material, "voronoi.material")?);
+        }
         // The rock filling a staged excavation is glued to its surroundings until it is removed,
         // with the stiffness of the stiffest joint material, or of the rock over a wall zone (E/h)
         // if there is none (so that filling adds nothing stiffer than the model already has).
@@ -151,7 +185,7 @@ impl JointCatalogue {
                     Some(m.map_or(k, |m| (m.0.max(k.0), m.1.max(k.1))))
                 })
                 .unwrap_or_else(|| {
-                    let e = scene.materials[&scene.region.material].young;
+                    let e = zones.young[zones.region.0 as usize];
                     let k = e / scene.zoning.edge_at_excavation;
                     (k, 0.5 * k)
                 });
@@ -166,12 +200,9 @@ impl JointCatalogue {
         // inclusions) / h at the excavation, so the interface is stiffer than a zone of either
         // side.
         let inclusion = (!scene.inclusions.is_empty()).then(|| {
-            let e = scene
-                .inclusions
-                .iter()
-                .map(|i| &i.material)
-                .chain([&scene.region.material])
-                .map(|m| scene.materials[m].young)
+            let e = (zones.inclusion.iter())
+                .chain([&zones.region])
+                .map(|m| zones.young[m.0 as usize])
                 .fold(0.0, f64::max);
             let k = e / scene.zoning.edge_at_excavation;
             names.push("inclusion interface".into());
@@ -189,11 +220,11 @@ impl JointCatalogue {
             })
             .map(|m| m.unwrap_or(NO_MATERIAL))
             .collect();
-        JointCatalogue {
+        Ok(JointCatalogue {
             names,
             laws,
             feature,
             hole,
-        }
+        })
     }
 }

@@ -9,40 +9,32 @@ use adit_meshing::{
 use rayon::prelude::*;
 
 use super::repair::{MAX_REPAIRS, drop_piece, joint_beside};
-use crate::scene::{BlockMode, Scene};
+use crate::scene::{BlockMode, Scene, Shape};
 
 /// The domain a scene describes: the region with its excavations, then its inclusions, as holes
-/// (hole j ≥ the number of excavations is inclusion j − that number).
-pub fn domain(scene: &Scene) -> Result<Domain, MeshError> {
+/// (hole j ≥ the number of excavations is inclusion j − that number). Errors name the scene field.
+pub fn domain(scene: &Scene) -> anyhow::Result<Domain> {
+    let outline = |shape: Shape| match shape {
+        Shape::Circle(c) => Polygon::circle(c.center, c.radius, c.segments),
+        Shape::Polygon(p) => Polygon::new(p.to_vec()),
+        Shape::Horseshoe(h) => Polygon::new(h.polygon()),
+    };
+    let mut holes = Vec::with_capacity(scene.excavations.len() + scene.inclusions.len());
+    for (i, e) in scene.excavations.iter().enumerate() {
+        holes.push(Hole {
+            name: e.name.clone(),
+            polygon: outline(e.shape(&format!("excavations[{i}]"))?),
+        });
+    }
+    for (i, inc) in scene.inclusions.iter().enumerate() {
+        holes.push(Hole {
+            name: inc.name.clone(),
+            polygon: outline(inc.shape(&format!("inclusions[{i}]"))?),
+        });
+    }
     let outer = Polygon::new(scene.region.polygon.clone());
-    let holes = scene
-        .excavations
-        .iter()
-        .map(|e| {
-            let polygon = match (&e.circle, &e.polygon, &e.horseshoe) {
-                (Some(c), _, _) => Polygon::circle(c.center, c.radius, c.segments),
-                (None, Some(p), _) => Polygon::new(p.clone()),
-                (None, None, Some(h)) => Polygon::new(h.polygon()),
-                (None, None, None) => unreachable!("validated: one shape per excavation"),
-            };
-            Hole {
-                name: e.name.clone(),
-                polygon,
-            }
-        })
-        .chain(scene.inclusions.iter().map(|inc| {
-            let polygon = match (&inc.circle, &inc.polygon) {
-                (Some(c), _) => Polygon::circle(c.center, c.radius, c.segments),
-                (None, Some(p)) => Polygon::new(p.clone()),
-                (None, None) => unreachable!("validated: one shape per inclusion"),
-            };
-            Hole {
-                name: inc.name.clone(),
-                polygon,
-            }
-        }))
-        .collect();
     Domain::new(outer, scene.edge_names(), holes)
+        .map_err(|e| anyhow::anyhow!("{}: {e}", field_of(scene, &e)))
 }
 
 /// Joint traces of the scene over the region's bounding box: joint sets first (feature k = set
@@ -240,7 +232,8 @@ fn edge_source(scene: &Scene, kind: EdgeKind) -> String {
 /// Cut the scene's region into blocks and zone each; errors name the scene field (and, for a block
 /// boundary that crosses itself, the joints, walls or region edges there).
 pub fn mesh(scene: &Scene) -> anyhow::Result<Meshed> {
-    mesh_blocks(scene).map_err(|e| {
+    let domain = domain(scene)?;
+    mesh_blocks(scene, domain).map_err(|e| {
         let field = field_of(scene, &e);
         match &e {
             MeshError::Crossing { kinds, .. } if !kinds.is_empty() => {
@@ -254,8 +247,7 @@ pub fn mesh(scene: &Scene) -> anyhow::Result<Meshed> {
 
 /// Cut and zone, dropping the piece of a joint that leaves a zone under `zoning.accept_angle`
 /// (`repair`) and cutting again, at most `MAX_REPAIRS` times; each repair is in `Meshed::repairs`.
-fn mesh_blocks(scene: &Scene) -> Result<Meshed, MeshError> {
-    let domain = domain(scene)?;
+fn mesh_blocks(scene: &Scene, domain: Domain) -> Result<Meshed, MeshError> {
     let tolerance = merge_tolerance(scene, &domain);
     for set in 0..scene.joint_sets.len() {
         let spacing = scene.realized_set(set).spacing;

@@ -177,12 +177,14 @@ pub fn setup_meshed(scene: &Scene, meshed: Meshed) -> anyhow::Result<Setup> {
     let mut zones = Zones::from_triangles(&triangles, &nodes.pos);
     zones.block = zone_block;
 
-    let zone_laws = ZoneCatalogue::of(scene);
-    let block_material = zone_laws.of_blocks(scene, &meshed);
-    let stage_regions =
-        stage_regions::stage_materials(scene, &meshed.blocking.blocks, &block_material, &|name| {
-            zone_laws.id(name)
-        })?;
+    let zone_laws = ZoneCatalogue::of(scene)?;
+    let block_material = zone_laws.of_blocks(&meshed);
+    let stage_regions = stage_regions::stage_materials(
+        scene,
+        &meshed.blocking.blocks,
+        &block_material,
+        &zone_laws,
+    )?;
     let stress_at = |c: [f64; 2], m: MaterialId| {
         in_situ_stress(&scene.in_situ, c[1], zone_laws.poisson[m.0 as usize])
     };
@@ -199,11 +201,22 @@ pub fn setup_meshed(scene: &Scene, meshed: Meshed) -> anyhow::Result<Setup> {
         domain: meshed.domain.clone(),
         part_nodes,
     };
-    let effect = |conditions: &[BoundaryCondition], pos: &[[f64; 2]]| {
-        boundary_effect(conditions, &boundary, &in_situ, pos)
+    let effect = |conditions: &[BoundaryCondition], path: &str| {
+        boundary_effect(conditions, path, &boundary, &in_situ, &nodes.pos)
     };
-    let conditions = effect(&scene.boundary, &nodes.pos);
-    let fixed = apply(&mut nodes, conditions);
+    let initial = effect(&scene.boundary, "boundary")?;
+    let mut stage_boundary = Vec::with_capacity(scene.stages.len());
+    for (i, stage) in scene.stages.iter().enumerate() {
+        let path = format!("stages[{i}].boundary");
+        stage_boundary.push(
+            stage
+                .boundary
+                .as_deref()
+                .map(|list| effect(list, &path))
+                .transpose()?,
+        );
+    }
+    apply(&mut nodes, &initial);
 
     let mut bodies = bodies::bodies(
         &meshed.modes,
@@ -218,7 +231,7 @@ pub fn setup_meshed(scene: &Scene, meshed: Meshed) -> anyhow::Result<Setup> {
         blocks.round = bodies::round(scene, &bodies, &blocks, &nodes.pos, &meshed.modes);
     }
     bodies.outline = outline;
-    refuse_body_fixity_changes(scene, &nodes, fixed, effect)?;
+    refuse_body_fixity_changes(&nodes, &initial, &stage_boundary)?;
     let body_of_block: BTreeMap<u32, u32> = bodies
         .block
         .iter()
@@ -227,7 +240,7 @@ pub fn setup_meshed(scene: &Scene, meshed: Meshed) -> anyhow::Result<Setup> {
         .collect();
     bodies.outline_body = outline_block.iter().map(|b| body_of_block[b]).collect();
 
-    let joint_laws = JointCatalogue::of(scene, &meshed);
+    let joint_laws = JointCatalogue::of(scene, &meshed, &zone_laws)?;
     anyhow::ensure!(
         blocks.len() == 1 || !joint_laws.laws.is_empty(),
         "joint_materials: {} blocks need at least one joint material for their contacts",
@@ -307,6 +320,8 @@ pub fn setup_meshed(scene: &Scene, meshed: Meshed) -> anyhow::Result<Setup> {
                     .ok_or_else(|| anyhow::anyhow!("no bolt group or liner '{n}'"))
             },
             stage_regions,
+            initial_boundary: initial,
+            stage_boundary,
         },
     )?;
     install_from_start(&mut model.supports, &plan, &model.nodes.disp);
@@ -332,8 +347,8 @@ fn stress_zones(
     }
 }
 
-/// Add the boundary's fixities and loads `(fixed, applied)` to the nodes; the fixities.
-fn apply(nodes: &mut Nodes, (fixed, applied): BoundaryEffect) -> Vec<u8> {
+/// Add the boundary's fixities and loads `(fixed, applied)` to the nodes.
+fn apply(nodes: &mut Nodes, (fixed, applied): &BoundaryEffect) {
     for n in 0..nodes.len() {
         nodes.fixed[n] |= fixed[n];
         nodes.applied[n] = [
@@ -341,24 +356,22 @@ fn apply(nodes: &mut Nodes, (fixed, applied): BoundaryEffect) -> Vec<u8> {
             nodes.applied[n][1] + applied[n][1],
         ];
     }
-    fixed
 }
 
 /// A stage's boundary conditions change node fixities and loads; the fixities of a rigid or simple
 /// block's nodes are folded into its constraint once, when it is made, so a stage that changes one
-/// is an error naming the stage. `fixed`: the fixities of the top-level `boundary`.
+/// is an error naming the stage. `initial`: the effect of the top-level `boundary`; `stages`: that
+/// of each stage's `boundary`, if it has one.
 fn refuse_body_fixity_changes(
-    scene: &Scene,
     nodes: &Nodes,
-    fixed: Vec<u8>,
-    effect: impl Fn(&[BoundaryCondition], &[[f64; 2]]) -> BoundaryEffect,
+    initial: &BoundaryEffect,
+    stages: &[Option<BoundaryEffect>],
 ) -> anyhow::Result<()> {
-    let mut before = fixed;
-    for (i, stage) in scene.stages.iter().enumerate() {
-        let Some(list) = &stage.boundary else {
+    let mut before = &initial.0;
+    for (i, stage) in stages.iter().enumerate() {
+        let Some((after, _)) = stage else {
             continue;
         };
-        let (after, _) = effect(list, &nodes.pos);
         let body_node =
             (0..nodes.len()).find(|&n| nodes.fixed[n] & BODY != 0 && before[n] != after[n]);
         if let Some(n) = body_node {

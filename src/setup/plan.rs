@@ -7,8 +7,12 @@ use std::collections::BTreeMap;
 
 use adit_meshing::{BoundaryEdge, Domain};
 
+use super::BoundaryEffect;
+use super::catalogue::{joint_law, zone_law};
+use crate::joint::JointLaw;
+use crate::law::ZoneLaw;
 use crate::model::MaterialId;
-use crate::scene::{BoundaryCondition, InSitu, JointMaterial, Material, Scene, SolveSpec, Stage};
+use crate::scene::{InSitu, Scene, SolveSpec, Stage};
 use crate::support::SupportId;
 
 /// The boundary of the blocks: where boundary conditions and wall tractions act.
@@ -42,16 +46,16 @@ pub struct StagePlan {
     pub name: String,
     /// Excavations whose rock this stage removes.
     pub excavate: Vec<u32>,
-    /// Zone materials given new properties: the material and its new specification.
-    pub materials: Vec<(MaterialId, Material)>,
+    /// Zone materials given new properties: the material and its new law.
+    pub materials: Vec<(MaterialId, Box<dyn ZoneLaw>)>,
     /// Blocks that take another zone material, with that material.
     pub regions: Vec<(u32, MaterialId)>,
     /// Gravitational acceleration from this stage on, m/s² (`None`: unchanged).
     pub gravity: Option<[f64; 2]>,
-    /// Joint materials given new properties: the joint material id and its new specification.
-    pub joint_materials: Vec<(u32, JointMaterial)>,
-    /// The boundary conditions from this stage on (`None`: unchanged).
-    pub boundary: Option<Vec<BoundaryCondition>>,
+    /// Joint materials given new properties: the joint material id and its new law.
+    pub joint_materials: Vec<(u32, Box<dyn JointLaw>)>,
+    /// The fixities and loads of the boundary conditions from this stage on (`None`: unchanged).
+    pub boundary: Option<BoundaryEffect>,
     /// Bolt groups and liners installed, after the excavations.
     pub install: Vec<SupportId>,
     /// Fraction of the in-situ traction left on the walls of every excavation made so far.
@@ -74,8 +78,8 @@ pub struct Plan {
     pub open: Vec<bool>,
     /// Gravitational acceleration before the first stage, m/s².
     pub gravity: [f64; 2],
-    /// The boundary conditions before the first stage.
-    pub conditions: Vec<BoundaryCondition>,
+    /// The fixities and loads of the boundary conditions before the first stage.
+    pub conditions: BoundaryEffect,
     /// The stages; a scene without stages is one stage named `solve` with the scene's solve.
     pub stages: Vec<StagePlan>,
     /// Whether the scene has stages of its own (the summary lists them and the ground reaction
@@ -91,6 +95,10 @@ pub(super) struct Resolved<'a> {
     pub support_id: &'a dyn Fn(&str) -> anyhow::Result<SupportId>,
     /// For each stage, the blocks its `regions` reach and their new material.
     pub stage_regions: Vec<Vec<(u32, MaterialId)>>,
+    /// The fixities and loads of the top-level `boundary`.
+    pub initial_boundary: BoundaryEffect,
+    /// Those of each stage's `boundary`, if it has one.
+    pub stage_boundary: Vec<Option<BoundaryEffect>>,
 }
 
 impl Plan {
@@ -114,7 +122,9 @@ impl Plan {
         let staged = !scene.stages.is_empty();
         let stages = if staged { &scene.stages[..] } else { &single };
         let mut plans = Vec::with_capacity(stages.len());
+        let mut stage_boundary = r.stage_boundary.into_iter();
         for (i, st) in stages.iter().enumerate() {
+            let p = format!("stages[{i}]");
             plans.push(StagePlan {
                 name: st.name.clone(),
                 excavate: st
@@ -125,16 +135,22 @@ impl Plan {
                 materials: st
                     .materials
                     .iter()
-                    .map(|(n, m)| Ok(((r.zone_id)(n)?, m.clone())))
+                    .map(|(n, m)| {
+                        let law = zone_law(m, &format!("{p}.materials.{n}"))?;
+                        Ok(((r.zone_id)(n)?, law))
+                    })
                     .collect::<anyhow::Result<_>>()?,
                 regions: r.stage_regions.get(i).cloned().unwrap_or_default(),
                 gravity: st.gravity,
                 joint_materials: st
                     .joint_materials
                     .iter()
-                    .map(|(n, m)| Ok(((r.joint_id)(n)?, m.clone())))
+                    .map(|(n, m)| {
+                        let law = joint_law(m, &format!("{p}.joint_materials.{n}"))?;
+                        Ok(((r.joint_id)(n)?, law))
+                    })
                     .collect::<anyhow::Result<_>>()?,
-                boundary: st.boundary.clone(),
+                boundary: stage_boundary.next().flatten(),
                 install: st
                     .install
                     .iter()
@@ -156,7 +172,7 @@ impl Plan {
             boundary,
             in_situ,
             gravity: scene.gravity,
-            conditions: scene.boundary.clone(),
+            conditions: r.initial_boundary,
             stages: plans,
             staged,
         })

@@ -3,6 +3,7 @@
 
 use adit_meshing::Block;
 
+use super::catalogue::ZoneCatalogue;
 use super::geometry::selects;
 use crate::model::MaterialId;
 use crate::scene::Scene;
@@ -10,14 +11,14 @@ use crate::scene::Scene;
 /// For each stage, the blocks its `regions` select and the material each takes (later regions of
 /// a stage override earlier ones). A block's density cannot change (its masses and weight are set
 /// when the model is built): an error naming the region's material otherwise.
-pub fn stage_materials(
+pub(super) fn stage_materials(
     scene: &Scene,
     blocks: &[Block],
     initial: &[MaterialId],
-    material_id: &dyn Fn(&str) -> MaterialId,
+    zones: &ZoneCatalogue,
 ) -> anyhow::Result<Vec<Vec<(u32, MaterialId)>>> {
-    let names: Vec<&String> = scene.materials.keys().collect();
-    let density = |m: MaterialId| scene.materials[names[m.0 as usize]].density;
+    let names = &zones.names;
+    let density = |m: MaterialId| zones.laws[m.0 as usize].density();
     let mut now = initial.to_vec();
     let mut out = Vec::with_capacity(scene.stages.len());
     for (i, stage) in scene.stages.iter().enumerate() {
@@ -32,7 +33,10 @@ pub fn stage_materials(
             else {
                 continue;
             };
-            let m = material_id(&region.material);
+            let m = zones.id(
+                &region.material,
+                &format!("stages[{i}].regions[{k}].material"),
+            )?;
             let before = now[b];
             if (density(m) - density(before)).abs() > 1e-9 * density(before) {
                 anyhow::bail!(

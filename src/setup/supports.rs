@@ -7,7 +7,7 @@ use adit_meshing::Domain;
 use super::plan::Boundary;
 use super::{NOT_FILL, rock_walls};
 use crate::model::Model;
-use crate::scene::{BoltSpec, LinerSpec, Scene};
+use crate::scene::{BoltLayout, BoltSpec, LinerSpec, Scene};
 use crate::support::{CableProps, Cables, LinerProps, Liners, Supports};
 
 /// Build the supports of `scene` on `model` (zones, blocks and fills in place).
@@ -26,7 +26,12 @@ pub fn supports(
         cables.props.push(cable_props(b));
         cables.active.push(false);
         let segment = b.segment.unwrap_or(scene.zoning.edge_at_excavation);
-        for (k, (head, toe)) in bolt_lines(scene, b, domain).into_iter().enumerate() {
+        let lines = bolt_lines(
+            b.layout(&format!("bolts[{i}]"))?,
+            domain,
+            &format!("bolts[{i}]"),
+        )?;
+        for (k, (head, toe)) in lines.into_iter().enumerate() {
             let len = (toe[0] - head[0]).hypot(toe[1] - head[1]);
             let n = (len / segment).ceil().max(1.0) as usize;
             let points: Vec<[f64; 2]> = (0..=n)
@@ -54,13 +59,9 @@ pub fn supports(
     }
     let mut liners = Liners::default();
     let tol = 1e-9 * model.size;
-    for l in &scene.liners {
+    for (i, l) in scene.liners.iter().enumerate() {
         let g = liners.names.len() as u32;
-        let j = scene
-            .excavations
-            .iter()
-            .position(|e| e.name == l.excavation)
-            .expect("validated") as u32;
+        let j = hole_of(domain, &l.excavation, &format!("liners[{i}].excavation"))?;
         liners.names.push(l.name.clone());
         liners.props.push(liner_props(l));
         liners.active.push(false);
@@ -95,23 +96,30 @@ fn liner_props(l: &LinerSpec) -> LinerProps {
     }
 }
 
-/// Head and toe of each bolt of a group: its line, or its pattern laid out along the wall.
-fn bolt_lines(scene: &Scene, b: &BoltSpec, domain: &Domain) -> Vec<([f64; 2], [f64; 2])> {
-    if let Some(l) = &b.line {
-        return vec![(l.from, l.to)];
-    }
-    let pat = b.pattern.as_ref().expect("validated: line or pattern");
-    let j = scene
-        .excavations
-        .iter()
-        .position(|e| e.name == pat.excavation)
-        .expect("validated");
-    let wall = &domain
-        .holes
-        .iter()
-        .find(|h| h.name == scene.excavations[j].name)
-        .expect("every excavation is a hole")
-        .polygon;
+/// The hole (excavation id) of excavation `name`; an error naming the field `path` if there is none.
+fn hole_of(domain: &Domain, name: &str, path: &str) -> anyhow::Result<u32> {
+    let j = domain.holes.iter().position(|h| h.name == name);
+    j.map(|j| j as u32)
+        .ok_or_else(|| anyhow::anyhow!("{path}: no excavation named '{name}'"))
+}
+
+/// Head and toe of each bolt of a group (scene field `path`): its line, or its pattern laid out
+/// along the wall.
+fn bolt_lines(
+    layout: BoltLayout,
+    domain: &Domain,
+    path: &str,
+) -> anyhow::Result<Vec<([f64; 2], [f64; 2])>> {
+    let pat = match layout {
+        BoltLayout::Line(l) => return Ok(vec![(l.from, l.to)]),
+        BoltLayout::Pattern(pat) => pat,
+    };
+    let j = hole_of(
+        domain,
+        &pat.excavation,
+        &format!("{path}.pattern.excavation"),
+    )?;
+    let wall = &domain.holes[j as usize].polygon;
     let v = &wall.vertices;
     let n = v.len();
     let ccw = wall.signed_area() > 0.0;
@@ -140,7 +148,7 @@ fn bolt_lines(scene: &Scene, b: &BoltSpec, domain: &Domain) -> Vec<([f64; 2], [f
         }
         walked += edge_len(i);
     }
-    (0..pat.count)
+    let lines = (0..pat.count)
         .map(|k| {
             let s = (s0 + (k as f64 - 0.5 * (pat.count as f64 - 1.0)) * pat.spacing)
                 .rem_euclid(perimeter);
@@ -159,7 +167,8 @@ fn bolt_lines(scene: &Scene, b: &BoltSpec, domain: &Domain) -> Vec<([f64; 2], [f
             let toe = [head[0] + pat.length * out[0], head[1] + pat.length * out[1]];
             (head, toe)
         })
-        .collect()
+        .collect();
+    Ok(lines)
 }
 
 /// Zones that can host a cable node: those of the rock (not the fill of a staged excavation).

@@ -129,3 +129,24 @@ fn a_strip_too_thin_to_zone_is_named_and_takes_blocks_thin() {
         assert_eq!(b.model.bodies.len(), bodies, "{thin}");
     }
 }
+
+/// The builder takes the typed forms of the scene's choices: a scene that skipped validation gets
+/// an error naming the field where a validated one could not go wrong, never a panic.
+#[test]
+fn an_unvalidated_scene_is_refused_by_field_not_by_panic() {
+    let base = |excavation: &str, material: &str| {
+        format!(
+            r#"{{ "name": "t", "materials": {{ "rock": {{ "density": 2500, "young": 1e9, "poisson": 0.2 {material} }} }},
+                "region": {{ "polygon": [[0, 0], [10, 0], [10, 10], [0, 10]], "material": "rock" }},
+                "excavations": [{excavation}],
+                "zoning": {{ "edge_at_excavation": 0.5, "edge_far": 2 }} }}"#
+        )
+    };
+    let unchecked = |text: &str| serde_json::from_str::<Scene>(text).unwrap();
+    let no_shape = unchecked(&base(r#"{ "name": "adit" }"#, ""));
+    let msg = setup(&no_shape).err().unwrap().to_string();
+    assert!(msg.starts_with("excavations[0]: give exactly one"), "{msg}");
+    let half_law = unchecked(&base("", r#", "law": "mohr_coulomb""#));
+    let msg = setup(&half_law).err().unwrap().to_string();
+    assert!(msg.starts_with("materials.rock: "), "{msg}");
+}

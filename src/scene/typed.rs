@@ -1,0 +1,337 @@
+//! The typed forms of a scene's choices. A JSON scene gives a hole's shape, a law's parameters, a
+//! boundary condition's place and load and a bolt group's layout as optional fields; each method
+//! here turns them into the enum that says what is valid, or an error naming the field at `path`.
+//! Validation calls them first, so a scene that loads has them all; setup matches on the enums and
+//! is left nothing to assume.
+
+use super::validate::{SceneError, invalid};
+use super::{
+    BoltLine, BoltPattern, BoltSpec, BoundaryCondition, Circle, Excavation, Fix, Horseshoe,
+    Inclusion, JointLawKind, JointMaterial, Material, SofteningPoint, StressTensor, ZoneLawKind,
+};
+
+/// The outline of an excavation or inclusion.
+#[derive(Debug, Clone, Copy)]
+pub enum Shape<'a> {
+    Circle(&'a Circle),
+    /// Vertices, m.
+    Polygon(&'a [[f64; 2]]),
+    Horseshoe(&'a Horseshoe),
+}
+
+impl Excavation {
+    /// Its one shape: `circle`, `polygon` or `horseshoe`.
+    pub fn shape(&self, path: &str) -> Result<Shape<'_>, SceneError> {
+        match (&self.circle, &self.polygon, &self.horseshoe) {
+            (Some(c), None, None) => Ok(Shape::Circle(c)),
+            (None, Some(p), None) => Ok(Shape::Polygon(p)),
+            (None, None, Some(h)) => Ok(Shape::Horseshoe(h)),
+            _ => Err(invalid(
+                path,
+                "give exactly one of `circle`, `polygon` and `horseshoe`",
+            )),
+        }
+    }
+}
+
+impl Inclusion {
+    /// Its one shape: `circle` or `polygon`.
+    pub fn shape(&self, path: &str) -> Result<Shape<'_>, SceneError> {
+        match (&self.circle, &self.polygon) {
+            (Some(c), None) => Ok(Shape::Circle(c)),
+            (None, Some(p)) => Ok(Shape::Polygon(p)),
+            _ => Err(invalid(path, "give exactly one of `circle` and `polygon`")),
+        }
+    }
+}
+
+/// A zone material's law with the parameters it needs.
+#[derive(Debug, Clone, Copy)]
+pub enum ZoneLawSpec<'a> {
+    Elastic,
+    MohrCoulomb {
+        /// Cohesion c, Pa.
+        cohesion: f64,
+        /// Friction angle φ, degrees.
+        friction: f64,
+        /// Dilation angle ψ, degrees.
+        dilation: f64,
+        /// Tensile strength σt, Pa (`None`: the cap c / tan φ).
+        tensile_strength: Option<f64>,
+        /// Strain-softening table.
+        softening: &'a [SofteningPoint],
+    },
+}
+
+impl Material {
+    /// Its law: Mohr–Coulomb needs `cohesion` and `friction`; the elastic law takes no strength.
+    pub fn law_spec(&self, path: &str) -> Result<ZoneLawSpec<'_>, SceneError> {
+        match self.law {
+            ZoneLawKind::Elastic => {
+                let given = self.cohesion.is_some()
+                    || self.friction.is_some()
+                    || self.tensile_strength.is_some()
+                    || self.dilation != 0.0
+                    || !self.softening.is_empty();
+                if given {
+                    return Err(invalid(
+                        path,
+                        "cohesion, friction, dilation, tensile_strength and softening belong to \
+                         `law: mohr_coulomb`",
+                    ));
+                }
+                Ok(ZoneLawSpec::Elastic)
+            }
+            ZoneLawKind::MohrCoulomb => {
+                let (Some(cohesion), Some(friction)) = (self.cohesion, self.friction) else {
+                    return Err(invalid(
+                        path,
+                        "`law: mohr_coulomb` needs `cohesion` and `friction`",
+                    ));
+                };
+                Ok(ZoneLawSpec::MohrCoulomb {
+                    cohesion,
+                    friction,
+                    dilation: self.dilation,
+                    tensile_strength: self.tensile_strength,
+                    softening: &self.softening,
+                })
+            }
+        }
+    }
+}
+
+/// A joint material's law with the parameters only it needs (the stiffnesses, friction, cohesion,
+/// tensile strength and dilation are common fields).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum JointLawSpec {
+    Glued,
+    Coulomb,
+    ContinuouslyYielding {
+        /// Roughness parameter R, m.
+        roughness: f64,
+        /// Initial friction angle, degrees (default: the friction angle).
+        initial_friction: f64,
+    },
+}
+
+impl JointMaterial {
+    /// Its law: the continuously yielding law needs `roughness`; the others take neither
+    /// `roughness` nor `initial_friction`.
+    pub fn law_spec(&self, path: &str) -> Result<JointLawSpec, SceneError> {
+        match self.law {
+            JointLawKind::ContinuouslyYielding => match self.roughness {
+                Some(roughness) => Ok(JointLawSpec::ContinuouslyYielding {
+                    roughness,
+                    initial_friction: self.initial_friction.unwrap_or(self.friction),
+                }),
+                None => Err(invalid(
+                    format!("{path}.roughness"),
+                    "required by the continuously yielding law",
+                )),
+            },
+            _ if self.roughness.is_some() || self.initial_friction.is_some() => Err(invalid(
+                path,
+                "`roughness` and `initial_friction` belong to the continuously yielding law",
+            )),
+            JointLawKind::Glued => Ok(JointLawSpec::Glued),
+            JointLawKind::Coulomb => Ok(JointLawSpec::Coulomb),
+        }
+    }
+}
+
+/// Where a boundary condition acts, and what it does there.
+#[derive(Debug, Clone, Copy)]
+pub enum Condition<'a> {
+    /// The boundary node nearest to `at` (m) has the components `fix` held.
+    Point { at: [f64; 2], fix: Fix },
+    /// Every node of the boundary part `name` has the components `fix` held and the edges of the
+    /// part carry `load`.
+    Part {
+        name: &'a str,
+        fix: Option<Fix>,
+        load: Option<Load>,
+    },
+}
+
+/// A traction on a boundary part.
+#[derive(Debug, Clone, Copy)]
+pub enum Load {
+    /// σ·n of a given stress tensor, Pa.
+    Stress(StressTensor),
+    /// σ·n of the in-situ stress (with its gradient).
+    InSitu,
+    /// A normal and a shear stress, Pa (tension positive; shear along t = (−n_y, n_x)).
+    NormalShear { normal: f64, shear: f64 },
+}
+
+impl BoundaryCondition {
+    /// Its typed form: exactly one of `part` and `at`; at most one kind of load; a point condition
+    /// only fixes; something is fixed or loaded.
+    pub fn condition(&self, path: &str) -> Result<Condition<'_>, SceneError> {
+        let mut loads = Vec::with_capacity(1);
+        if let Some(s) = self.stress {
+            loads.push(Load::Stress(s));
+        }
+        if self.in_situ_traction {
+            loads.push(Load::InSitu);
+        }
+        if self.normal_stress.is_some() || self.shear_stress.is_some() {
+            loads.push(Load::NormalShear {
+                normal: self.normal_stress.unwrap_or(0.0),
+                shear: self.shear_stress.unwrap_or(0.0),
+            });
+        }
+        match (&self.part, self.at) {
+            (Some(_), None) | (None, Some(_)) => {}
+            _ => return Err(invalid(path, "give exactly one of `part` and `at`")),
+        }
+        if self.at.is_some() && !loads.is_empty() {
+            return Err(invalid(
+                path,
+                "a point condition (`at`) can only fix velocities",
+            ));
+        }
+        if loads.len() > 1 {
+            return Err(invalid(
+                path,
+                "give at most one of `stress`, `in_situ_traction`, `normal_stress`/`shear_stress`",
+            ));
+        }
+        let load = loads.pop();
+        match (&self.part, self.at, self.fix) {
+            (None, Some(at), Some(fix)) => Ok(Condition::Point { at, fix }),
+            (Some(name), None, fix) if fix.is_some() || load.is_some() => {
+                Ok(Condition::Part { name, fix, load })
+            }
+            _ => Err(invalid(path, "neither a fixity nor a load is given")),
+        }
+    }
+}
+
+/// How a bolt group is laid out.
+#[derive(Debug, Clone, Copy)]
+pub enum BoltLayout<'a> {
+    Line(&'a BoltLine),
+    Pattern(&'a BoltPattern),
+}
+
+impl BoltSpec {
+    /// Its layout: exactly one of `line` and `pattern`.
+    pub fn layout(&self, path: &str) -> Result<BoltLayout<'_>, SceneError> {
+        match (&self.line, &self.pattern) {
+            (Some(l), None) => Ok(BoltLayout::Line(l)),
+            (None, Some(p)) => Ok(BoltLayout::Pattern(p)),
+            _ => Err(invalid(path, "give exactly one of `line` and `pattern`")),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn condition(json: &str) -> Result<(), String> {
+        let bc: BoundaryCondition = serde_json::from_str(json).unwrap();
+        bc.condition("b").map(|_| ()).map_err(|e| e.to_string())
+    }
+
+    #[test]
+    fn a_boundary_condition_is_a_point_fixity_or_a_part_with_a_fixity_or_one_load() {
+        assert!(matches!(
+            serde_json::from_str::<BoundaryCondition>(r#"{ "at": [1, 2], "fix": "x" }"#)
+                .unwrap()
+                .condition("b"),
+            Ok(Condition::Point {
+                at: [1.0, 2.0],
+                fix: Fix::X
+            })
+        ));
+        let part: BoundaryCondition =
+            serde_json::from_str(r#"{ "part": "top", "normal_stress": -1e6 }"#).unwrap();
+        match part.condition("b") {
+            Ok(Condition::Part {
+                name: "top",
+                fix: None,
+                load: Some(Load::NormalShear { normal, shear }),
+            }) => assert_eq!((normal, shear), (-1e6, 0.0)),
+            other => panic!("{other:?}"),
+        }
+        for (json, reason) in [
+            (
+                r#"{ "part": "top", "at": [0, 0], "fix": "x" }"#,
+                "exactly one of `part` and `at`",
+            ),
+            (r#"{ "fix": "x" }"#, "exactly one of `part` and `at`"),
+            (
+                r#"{ "at": [0, 0], "normal_stress": 1 }"#,
+                "can only fix velocities",
+            ),
+            (r#"{ "at": [0, 0] }"#, "neither a fixity nor a load"),
+            (r#"{ "part": "top" }"#, "neither a fixity nor a load"),
+            (
+                r#"{ "part": "top", "in_situ_traction": true, "shear_stress": 1 }"#,
+                "at most one of",
+            ),
+        ] {
+            let msg = condition(json).unwrap_err();
+            assert!(
+                msg.starts_with("b: ") && msg.contains(reason),
+                "{json}: {msg}"
+            );
+        }
+    }
+
+    #[test]
+    fn a_law_takes_exactly_the_parameters_it_needs() {
+        let m = |json: &str| serde_json::from_str::<Material>(json).unwrap();
+        let base = r#""density": 2500, "young": 1e9, "poisson": 0.2"#;
+        let mc = m(&format!(
+            r#"{{ {base}, "law": "mohr_coulomb", "cohesion": 1e6, "friction": 30 }}"#
+        ));
+        assert!(matches!(
+            mc.law_spec("m"),
+            Ok(ZoneLawSpec::MohrCoulomb {
+                cohesion: 1e6,
+                friction: 30.0,
+                tensile_strength: None,
+                ..
+            })
+        ));
+        let no_friction = m(&format!(
+            r#"{{ {base}, "law": "mohr_coulomb", "cohesion": 1e6 }}"#
+        ));
+        assert!(
+            no_friction
+                .law_spec("m")
+                .unwrap_err()
+                .to_string()
+                .contains("needs")
+        );
+        let elastic_with_strength = m(&format!(r#"{{ {base}, "cohesion": 1e6 }}"#));
+        assert!(elastic_with_strength.law_spec("m").is_err());
+
+        let j = |json: &str| serde_json::from_str::<JointMaterial>(json).unwrap();
+        let k = r#""normal_stiffness": 1e10, "shear_stiffness": 1e9, "friction": 30"#;
+        let cy = j(&format!(
+            r#"{{ {k}, "law": "continuously_yielding", "roughness": 1e-3 }}"#
+        ));
+        assert_eq!(
+            cy.law_spec("j").unwrap(),
+            JointLawSpec::ContinuouslyYielding {
+                roughness: 1e-3,
+                initial_friction: 30.0
+            }
+        );
+        let cy_bare = j(&format!(r#"{{ {k}, "law": "continuously_yielding" }}"#));
+        assert!(
+            cy_bare
+                .law_spec("j")
+                .unwrap_err()
+                .to_string()
+                .starts_with("j.roughness")
+        );
+        let coulomb_rough = j(&format!(r#"{{ {k}, "roughness": 1e-3 }}"#));
+        assert!(coulomb_rough.law_spec("j").is_err());
+    }
+}
