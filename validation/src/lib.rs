@@ -2,6 +2,8 @@
 //! the exact solution and its cost, and is run in full by the report binary and coarsely by tests.
 
 pub mod axisymmetric;
+pub mod case;
+pub mod cases;
 pub mod corners;
 pub mod direct_shear;
 pub mod drop;

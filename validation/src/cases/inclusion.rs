@@ -1,0 +1,69 @@
+//! A circular inclusion 1000× softer or stiffer than the rock against Goodier's solution.
+
+use std::fmt::Write as _;
+
+use crate::case::{Case, Context, Section, print_row, table};
+use crate::inclusion;
+
+pub struct Inclusion;
+
+impl Case for Inclusion {
+    fn name(&self) -> &'static str {
+        "inclusion"
+    }
+
+    fn run(&self, cx: &Context) -> anyhow::Result<Section> {
+        let scene = &cx.kirsch;
+        let mut md = String::new();
+        let inclusion_cases: Vec<inclusion::InclusionResult> = [1e-3, 1e3]
+            .iter()
+            .map(|&c| {
+                let case = format!("circular inclusion {c} × as stiff as the rock, Kirsch mesh");
+                inclusion::run(&inclusion::scene(scene, c), &case)
+            })
+            .collect::<anyhow::Result<_>>()?;
+        for r in &inclusion_cases {
+            print_row(&r.report());
+        }
+        let _ = writeln!(md, "\n## Stability: stiffness contrast (issue 5)\n");
+        let _ = writeln!(
+            md,
+            "The shipped Kirsch model with its hole replaced by a circular inclusion (`inclusions`: a region of \
+         another material cut from the rock and glued to it, kn = max E/h) 1000× softer or 1000× stiffer \
+         than the rock (same ν), loaded from zero stress by the far field (σxx, σyy) = (−10, −20) MPa with \
+         the exact traction on the outer boundary, against the closed form of a bonded circular inclusion \
+         (Goodier 1933, Muskhelishvili §56: uniform stress inside, derived and checked for continuity in \
+         `validation/src/inclusion.rs`). `stress_l2` as for Kirsch (r ≤ 5a, both materials); \
+         `inside_mean`: the inclusion's mean stress against its uniform exact value ({}); `interface`: the \
+         largest zone error within a zone of the interface over the largest exact stress there. The stiff \
+         inclusion's scaled masses are 1000× heavier: it converges, but its rigid-body-like modes against \
+         the soft rock take many more cycles.\n",
+            inclusion_cases
+                .iter()
+                .map(|r| format!(
+                    "{:.3} / {:.3} MPa for ×{}",
+                    r.inside_exact[0] / 1e6,
+                    r.inside_exact[1] / 1e6,
+                    r.contrast
+                ))
+                .collect::<Vec<_>>()
+                .join(", ")
+        );
+        table(
+            &mut md,
+            &inclusion_cases
+                .iter()
+                .map(inclusion::InclusionResult::report)
+                .collect::<Vec<_>>(),
+        );
+        Ok(Section {
+            markdown: md,
+            rows: inclusion_cases
+                .iter()
+                .map(inclusion::InclusionResult::report)
+                .collect(),
+
+            ..Default::default()
+        })
+    }
+}

@@ -1,0 +1,61 @@
+//! The report's sections, one module each, in the order `docs/validation.md` gives them: each
+//! runs its case and writes its own explanation, tables and plots.
+
+mod column;
+mod corners;
+mod detection;
+mod direct_shear;
+mod glued;
+mod grains;
+mod gravity;
+mod impact;
+mod incline;
+mod inclusion;
+mod incompressible;
+mod kirsch;
+mod lined;
+mod modes;
+mod patch;
+mod pullout;
+mod random_scenes;
+mod rotation;
+mod salencon;
+mod scale;
+mod slivers;
+mod softening;
+mod stiff_joints;
+mod tunnel;
+mod unstable;
+
+use crate::case::Case;
+
+/// Every case, in the report's order.
+pub fn all() -> Vec<Box<dyn Case>> {
+    vec![
+        Box::new(kirsch::Kirsch),
+        Box::new(patch::Patch),
+        Box::new(gravity::Gravity),
+        Box::new(salencon::Salencon),
+        Box::new(lined::Lined),
+        Box::new(pullout::Pullout),
+        Box::new(tunnel::Tunnel),
+        Box::new(scale::Scale),
+        Box::new(incompressible::Incompressible),
+        Box::new(inclusion::Inclusion),
+        Box::new(impact::Impact),
+        Box::new(stiff_joints::StiffJoints),
+        Box::new(corners::Corners),
+        Box::new(slivers::Slivers),
+        Box::new(grains::Grains),
+        Box::new(softening::Softening),
+        Box::new(rotation::Rotation),
+        Box::new(random_scenes::RandomScenes),
+        Box::new(unstable::Unstable),
+        Box::new(glued::Glued),
+        Box::new(incline::Incline),
+        Box::new(direct_shear::DirectShear),
+        Box::new(modes::Modes),
+        Box::new(detection::Detection),
+        Box::new(column::Column),
+    ]
+}
