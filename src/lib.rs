@@ -8,7 +8,7 @@
 
 pub mod contact;
 pub mod cycle;
-pub mod damping;
+mod damping;
 pub mod interrupt;
 pub mod joint;
 pub mod law;

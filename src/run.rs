@@ -123,7 +123,7 @@ fn build_solve_write(
             ..*r
         }));
         cycles += solution.cycles;
-        let s = solver.cycle.seconds;
+        let s = solver.cycle.seconds();
         seconds.detect += s.detect;
         seconds.contacts += s.contacts;
         seconds.zones += s.zones;

@@ -10,15 +10,7 @@ use crate::model::Model;
 use crate::model::bodies::{NO_BODY, projector};
 use crate::scene::{SolveMode, SolveSpec};
 
-/// A node stepping this fraction of its shortest zone edge in one cycle, `UNSTABLE_GROWTH` times
-/// its step of the cycle before, stops the run: a static solve moves nodes by a tiny fraction of
-/// that per cycle, a dynamic one by |v|Δt ≪ h (the step is below the time a wave takes across a
-/// zone), and a scheme past its stability limit multiplies the step by about (ωΔt)² every cycle,
-/// so it passes both within a few cycles. A block falling freely (a mechanism, not an
-/// instability) speeds up by less than that per cycle and is left to the cycle limit.
-pub const UNSTABLE_JUMP: f64 = 0.1;
-/// See `UNSTABLE_JUMP`.
-pub const UNSTABLE_GROWTH: f64 = 4.0;
+pub use crate::cycle::monitor::{UNSTABLE_GROWTH, UNSTABLE_JUMP};
 
 /// How a solve ended.
 #[derive(Debug, Clone, PartialEq)]
@@ -60,7 +52,7 @@ pub struct HistoryRow {
 pub struct Solution {
     pub status: Status,
     pub cycles: u64,
-    pub history: Vec<HistoryRow>,
+    pub(crate) history: Vec<HistoryRow>,
     pub final_ratio: f64,
 }
 
@@ -84,7 +76,7 @@ pub struct Solver {
     pub step: StepLimit,
     pub spec: SolveSpec,
     /// Cycles between intermediate output steps (0: none).
-    pub output_every: u64,
+    pub(crate) output_every: u64,
 }
 
 impl Solver {
@@ -128,17 +120,15 @@ impl Solver {
             if let Some(ramp) = &ramp {
                 ramp.apply(cycle, model);
             }
-            let detections = self.cycle.detections;
+            let detections = self.cycle.detections();
             self.cycle.run(model, &self.params);
             cycle += 1;
             // New contacts add stiffness at their nodes: static masses follow (FLAC rescales its
             // masses as the stiffness changes), or a node that gains a contact can go unstable.
-            if self.cycle.detections != detections && self.spec.mode == SolveMode::Static {
+            if self.cycle.detections() != detections && self.spec.mode == SolveMode::Static {
                 self.step = derive_masses(model, &self.spec).1;
             }
-            let jump = self.cycle.jump;
-            if jump > UNSTABLE_JUMP && jump > UNSTABLE_GROWTH * self.cycle.last_jump {
-                let reason = self.cycle.unstable(model, self.params.dt);
+            if let Some(reason) = self.cycle.unstable_step(model, self.params.dt) {
                 break Status::Failed(format!("cycle {cycle}: {reason}"));
             }
             let time = cycle as f64 * self.params.dt;

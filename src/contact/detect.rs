@@ -53,7 +53,7 @@ pub struct Touch {
     pub gap: f64,
     /// Whether the node's boundary runs along the other block (a face contact) rather than only
     /// touching it at a point (a corner contact, as between diagonal blocks at a joint crossing).
-    pub face: bool,
+    pub(crate) face: bool,
 }
 
 /// A node and an edge make a contact only if the outward normal of one of the node's edges and the

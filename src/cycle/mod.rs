@@ -30,11 +30,11 @@ pub struct CycleParams {
     /// Local non-viscous damping coefficient α (0.8 is UDEC's default for static runs).
     pub damping: f64,
     /// How the zones turn node velocities into stress.
-    pub scheme: ZoneScheme,
+    pub(crate) scheme: ZoneScheme,
     /// Mass-proportional Rayleigh coefficient α_R, 1/s (0 for none; `scene::Rayleigh`).
-    pub mass_damping: f64,
+    pub(crate) mass_damping: f64,
     /// Stiffness-proportional Rayleigh coefficient β_R, s (0 for none).
-    pub stiffness_damping: f64,
+    pub(crate) stiffness_damping: f64,
 }
 
 /// How the zone stage turns node velocities into stress and corner forces: one of three, fixed
@@ -103,38 +103,48 @@ pub struct StageSeconds {
 #[derive(Debug, Default)]
 pub struct Cycle {
     /// Force of each zone on each of its corners, N/m, indexed zone·3 + corner.
-    pub zone_force: Vec<[f64; 2]>,
+    zone_force: Vec<[f64; 2]>,
     /// Force of each contact on its node and on the two nodes of its edge, N/m, contact·3 + role.
-    pub contact_force: Vec<[f64; 2]>,
+    contact_force: Vec<[f64; 2]>,
     /// Force of the supports on the rock nodes, N/m, one per support slot
     /// (`Supports::slot_nodes`).
-    pub support_force: Vec<[f64; 2]>,
+    support_force: Vec<[f64; 2]>,
     /// Upper bound on how far any node has moved since the last detection, m.
-    pub moved: f64,
+    moved: f64,
     /// 1 / (shortest zone edge at each node), 1/m (0 for nodes without zones).
-    pub inv_size: Vec<f64>,
+    inv_size: Vec<f64>,
     /// The largest step of the last cycle relative to the node's shortest zone edge, |v| Δt / h,
     /// and that of the cycle before.
-    pub jump: f64,
-    pub last_jump: f64,
+    jump: f64,
+    last_jump: f64,
     /// Mixed discretization scratch: each zone's strain increment, each node's area-averaged
     /// volumetric strain increment (then its averaged plastic change of mean stress, Pa), and each
     /// zone's plastic change of mean stress, Pa.
-    pub zone_strain: Vec<StrainIncrement>,
-    pub node_volumetric: Vec<f64>,
-    pub zone_plastic_mean: Vec<f64>,
+    zone_strain: Vec<StrainIncrement>,
+    node_volumetric: Vec<f64>,
+    zone_plastic_mean: Vec<f64>,
     /// Mixed discretization scratch: each zone's stress at the start of the step, Pa (written only
     /// with stiffness-proportional damping, whose viscous stress is the step's change).
-    pub zone_stress_start: Vec<Stress>,
+    zone_stress_start: Vec<Stress>,
     /// Viscous stress β_R σ̇ of each body over its last step, Pa (zero for rigid blocks and
     /// without stiffness-proportional damping).
-    pub body_viscous: Vec<Stress>,
-    pub seconds: StageSeconds,
+    body_viscous: Vec<Stress>,
+    seconds: StageSeconds,
     /// Contact detections so far (the solver re-derives static masses after each).
-    pub detections: u64,
+    detections: u64,
 }
 
 impl Cycle {
+    /// Seconds spent in each stage so far.
+    pub fn seconds(&self) -> StageSeconds {
+        self.seconds
+    }
+
+    /// Contact detections so far.
+    pub fn detections(&self) -> u64 {
+        self.detections
+    }
+
     pub fn new(model: &Model) -> Cycle {
         Cycle {
             zone_force: vec![[0.0; 2]; 3 * model.zones.len()],

@@ -6,6 +6,16 @@ use rayon::prelude::*;
 use super::Cycle;
 use crate::model::Model;
 
+/// A node stepping this fraction of its shortest zone edge in one cycle, `UNSTABLE_GROWTH` times
+/// its step of the cycle before, stops the run: a static solve moves nodes by a tiny fraction of
+/// that per cycle, a dynamic one by |v|Δt ≪ h (the step is below the time a wave takes across a
+/// zone), and a scheme past its stability limit multiplies the step by about (ωΔt)² every cycle,
+/// so it passes both within a few cycles. A block falling freely (a mechanism, not an
+/// instability) speeds up by less than that per cycle and is left to the cycle limit.
+pub const UNSTABLE_JUMP: f64 = 0.1;
+/// See `UNSTABLE_JUMP`.
+pub const UNSTABLE_GROWTH: f64 = 4.0;
+
 /// Chunk length of the deterministic reductions (independent of the thread count).
 const CHUNK: usize = 4096;
 
@@ -18,7 +28,7 @@ pub struct Monitor {
     /// Kinetic energy ½ Σ m v², J/m (with the scaled masses in static runs).
     pub kinetic: f64,
     /// Largest unbalanced force, N/m.
-    pub max_force: f64,
+    pub(crate) max_force: f64,
 }
 
 impl Cycle {
@@ -103,9 +113,16 @@ impl Cycle {
         })
     }
 
-    /// The reason for an unstable step (`jump` past `solve::UNSTABLE_JUMP`), naming the node
+    /// Whether the last cycle's step was unstable (`jump` past `UNSTABLE_JUMP` and `UNSTABLE_GROWTH`
+    /// times the cycle before's), and then why, naming the node.
+    pub fn unstable_step(&self, model: &Model, dt: f64) -> Option<String> {
+        let unstable = self.jump > UNSTABLE_JUMP && self.jump > UNSTABLE_GROWTH * self.last_jump;
+        unstable.then(|| self.unstable(model, dt))
+    }
+
+    /// The reason for an unstable step (`jump` past `UNSTABLE_JUMP`), naming the node
     /// that made it (the first of the largest).
-    pub fn unstable(&self, model: &Model, dt: f64) -> String {
+    fn unstable(&self, model: &Model, dt: f64) -> String {
         let step = |n: usize| {
             let v = model.nodes.vel[n];
             v[0].hypot(v[1]) * dt * self.inv_size[n]

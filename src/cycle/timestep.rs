@@ -17,11 +17,11 @@ pub struct StepLimit {
     pub dt_critical: f64,
     /// Node whose stiffness-to-mass ratio sets the critical step (the first node of the limiting
     /// block when a rigid or simple block sets it).
-    pub limiting_node: NodeId,
+    pub(crate) limiting_node: NodeId,
     /// The rigid or simple block that sets the critical step, if one does.
-    pub limiting_block: Option<u32>,
+    pub(crate) limiting_block: Option<u32>,
     /// What stiffness dominates at the limit.
-    pub by: Limiter,
+    pub(crate) by: Limiter,
 }
 
 /// The stiffness that sets the critical step.

@@ -31,9 +31,9 @@ pub struct JointState {
     /// Accumulated dilation (opening the joint would need to keep its stress), m.
     pub dilation: f64,
     /// Bounding friction angle φm of the continuously yielding law, rad (0 until first used).
-    pub bounding_friction: f64,
+    pub(crate) bounding_friction: f64,
     /// Reversal factor r of the continuously yielding law (τ/τm at the last shear reversal).
-    pub reversal: f64,
+    pub(crate) reversal: f64,
     /// `SLIPPING`, `OPEN`, `FAILED` bit flags (and a law's own, such as `SHEAR_NEGATIVE`).
     pub flags: u8,
 }

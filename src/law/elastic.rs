@@ -6,7 +6,7 @@ use super::{StrainIncrement, Stress, ZoneLaw};
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Elastic {
     /// Bulk modulus K = E / (3(1 − 2ν)), Pa.
-    pub bulk: f64,
+    pub(crate) bulk: f64,
     /// Shear modulus G = E / (2(1 + ν)), Pa.
     pub shear: f64,
     /// Density, kg/m³.

@@ -11,19 +11,19 @@ pub const NO_EDGE: u32 = u32::MAX;
 #[derive(Debug, Clone, Default)]
 pub struct Blocks {
     pub node_start: Vec<u32>,
-    pub zone_start: Vec<u32>,
-    pub edge_start: Vec<u32>,
+    pub(crate) zone_start: Vec<u32>,
+    pub(crate) edge_start: Vec<u32>,
     /// Boundary edges (node ids), material on the left.
     pub edges: Vec<[u32; 2]>,
     /// What each boundary edge lies on.
-    pub edge_kind: Vec<EdgeKind>,
+    pub(crate) edge_kind: Vec<EdgeKind>,
     /// For each node, its boundary edges [incoming, outgoing], or `NO_EDGE` for interior nodes.
-    pub node_edges: Vec<[u32; 2]>,
+    pub(crate) node_edges: Vec<[u32; 2]>,
     /// Corner rounding radius of each node, m (`contact::rounding`; 0 but at the convex corners of
     /// rigid and simple blocks; empty: no rounding).
     pub round: Vec<f64>,
     /// Blocks removed by an excavation stage (empty: none).
-    pub removed: Vec<bool>,
+    pub(crate) removed: Vec<bool>,
 }
 
 impl Blocks {

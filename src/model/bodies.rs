@@ -78,18 +78,18 @@ pub struct Bodies {
     /// What the boundary conditions on the block's nodes hold: the Gram matrix of their rows of
     /// the velocity map (a roller on a simple block holds one velocity component along its wall,
     /// not the block's strain).
-    pub constraint: Vec<Gram>,
+    pub(crate) constraint: Vec<Gram>,
     /// The mass-orthogonal projector onto the velocities the constraint allows (set with the
     /// masses by the solver), `None` for a free body.
-    pub projector: Vec<Option<Gram>>,
+    pub(crate) projector: Vec<Option<Gram>>,
     /// This cycle's motion: old centroid, new centroid and the map r_new = A r_old
     /// (row-major 2×2), read by the node update.
     pub step: Vec<([f64; 2], [f64; 2], [f64; 4])>,
     /// For each node, its body, or `NO_BODY`.
-    pub of_node: Vec<u32>,
+    pub(crate) of_node: Vec<u32>,
     /// Display triangles (node ids) of the bodies' outlines, and the body of each.
-    pub outline: Vec<[u32; 3]>,
-    pub outline_body: Vec<u32>,
+    pub(crate) outline: Vec<[u32; 3]>,
+    pub(crate) outline_body: Vec<u32>,
 }
 
 /// Marks "not a body node" in `Bodies::of_node`.

@@ -18,7 +18,7 @@ pub struct Materials {
     /// the glued interfaces of staged fills and inclusions.
     pub joint: Vec<Box<dyn JointLaw>>,
     /// Joint material names, indexed by joint material id.
-    pub joint_names: Vec<String>,
+    pub(crate) joint_names: Vec<String>,
     /// Joint material of each joint feature (`EdgeKind::Joint(k)`: sets first, then explicit
     /// joints, then Voronoi grain boundaries).
     pub feature: Vec<u32>,

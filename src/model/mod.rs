@@ -30,7 +30,7 @@ pub struct MaterialId(pub u32);
 #[derive(Debug, Clone, Default)]
 pub struct Gather {
     pub start: Vec<u32>,
-    pub slots: Vec<u32>,
+    pub(crate) slots: Vec<u32>,
 }
 
 impl Gather {
@@ -88,7 +88,7 @@ pub struct Model {
     /// `None` when each zone keeps its own volumetric strain.
     pub mixed: Option<Vec<f64>>,
     /// For each node, the slots of the support-force buffer acting on it.
-    pub support_gather: Gather,
+    pub(crate) support_gather: Gather,
     /// Zone and joint laws, and which joint material each joint feature and hole wall takes.
     pub materials: Materials,
 }

@@ -19,7 +19,7 @@ use atomic::write_atomic;
 
 /// Writes the output steps of one run into a folder.
 pub struct OutputWriter {
-    pub dir: PathBuf,
+    pub(crate) dir: PathBuf,
     pub name: String,
     /// (timestep value, file names: zones, then contacts when there are blocks, then supports when
     /// there are any) of each step so far.
@@ -232,7 +232,7 @@ pub struct Summary {
     pub contacts: usize,
     pub cycles: u64,
     pub wall_seconds: f64,
-    pub stage_seconds: StageSeconds,
+    pub(crate) stage_seconds: StageSeconds,
     pub zone_cycles_per_second: f64,
     /// Blocks × cycles per second of cycling, the figure of merit of rigid and simple blocks.
     pub block_cycles_per_second: f64,
@@ -249,9 +249,9 @@ pub struct Summary {
     pub timestep: f64,
     /// Critical time step with real masses, s, and the node that sets it.
     pub critical_timestep: f64,
-    pub critical_node: u32,
+    pub(crate) critical_node: u32,
     /// The rigid or simple block that sets the critical time step, if one does.
-    pub critical_block: Option<u32>,
+    pub(crate) critical_block: Option<u32>,
     /// What sets the critical step: `zones at node N`, `contacts at node N`, `supports`, `block B`.
     pub critical_limiter: String,
     /// Smallest zone angle, degrees.

@@ -54,7 +54,7 @@ pub struct Scene {
     pub joints: Vec<JointLine>,
     /// Voronoi grains: the region cut by the Voronoi tessellation of jittered seeds.
     #[serde(default)]
-    pub voronoi: Option<VoronoiSpec>,
+    pub(crate) voronoi: Option<VoronoiSpec>,
     #[serde(default)]
     pub contacts: ContactSpec,
     /// Block modes: deformable, simple or rigid, for all blocks or by region.
@@ -166,7 +166,7 @@ pub struct Material {
 #[serde(deny_unknown_fields)]
 pub struct SofteningPoint {
     /// Plastic shear strain e^ps (dimensionless), > 0 and increasing along the table.
-    pub plastic_strain: f64,
+    pub(crate) plastic_strain: f64,
     /// Cohesion there, Pa.
     pub cohesion: f64,
     /// Friction angle there, degrees.
@@ -190,7 +190,7 @@ pub struct Region {
     pub polygon: Vec<[f64; 2]>,
     /// Name of each edge (edge i runs from vertex i to vertex i+1); default `edge0`, `edge1`, ….
     #[serde(default)]
-    pub edge_names: Option<Vec<String>>,
+    pub(crate) edge_names: Option<Vec<String>>,
     /// Name of the material that fills the region.
     pub material: String,
 }
@@ -237,7 +237,7 @@ pub struct Horseshoe {
     /// Crown radius (half the width), m.
     pub radius: f64,
     /// Height of the vertical walls from the invert to the springline, m.
-    pub wall_height: f64,
+    pub(crate) wall_height: f64,
     /// Segments of the crown arc (default 64).
     #[serde(default = "default_arc_segments")]
     pub segments: usize,
@@ -423,7 +423,7 @@ pub struct BlocksSpec {
     /// over half its perimeter, under half the zoning's edge length at its centroid): `simple` or
     /// `rigid` takes it out of the zoning; by default (`deformable`) it is zoned as finely as it
     /// needs, and a warning says so either way.
-    pub thin: BlockMode,
+    pub(crate) thin: BlockMode,
 }
 
 /// A block mode for the blocks of one region or the block at one point.
@@ -515,7 +515,7 @@ pub struct InSitu {
     pub szz: Option<f64>,
     /// Elevation where the reference values hold, m (default 0).
     #[serde(default)]
-    pub y_ref: f64,
+    pub(crate) y_ref: f64,
     /// Vertical gradients dσ/dy, Pa/m (for gravity equilibrium dσyy/dy = −ρ·g_y).
     #[serde(default)]
     pub gradient: StressGradient,
@@ -551,13 +551,13 @@ pub struct BoundaryCondition {
     pub stress: Option<StressTensor>,
     /// Apply the in-situ stress (with its gradient) as traction σ·n.
     #[serde(default)]
-    pub in_situ_traction: bool,
+    pub(crate) in_situ_traction: bool,
     /// Applied normal stress, Pa (tension positive: negative pushes on the boundary).
     #[serde(default)]
-    pub normal_stress: Option<f64>,
+    pub(crate) normal_stress: Option<f64>,
     /// Applied shear stress, Pa, along the tangent t = (−n_y, n_x).
     #[serde(default)]
-    pub shear_stress: Option<f64>,
+    pub(crate) shear_stress: Option<f64>,
 }
 
 impl BoundaryCondition {

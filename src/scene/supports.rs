@@ -16,14 +16,14 @@ pub struct BoltSpec {
     /// Cross-section area of one bolt, m².
     pub area: f64,
     /// Axial yield force of one bolt, N (in tension and in compression).
-    pub yield_force: f64,
+    pub(crate) yield_force: f64,
     /// Shear stiffness of the grout per length of bolt, N/m per m (Pa).
     pub grout_stiffness: f64,
     /// Bond strength of the grout per length of bolt, N/m.
     pub bond_strength: f64,
     /// Pretension of one bolt, N (default 0): an axial force in every segment from installation.
     #[serde(default)]
-    pub pretension: f64,
+    pub(crate) pretension: f64,
     /// Spacing of the bolts along the tunnel axis, m (default 1).
     #[serde(default = "one")]
     pub out_of_plane_spacing: f64,
@@ -66,7 +66,7 @@ pub struct BoltPattern {
     /// Direction of the pattern's centre from the excavation's centroid, degrees counter-clockwise
     /// from +x (default 90: the crown).
     #[serde(default = "crown")]
-    pub toward: f64,
+    pub(crate) toward: f64,
 }
 
 /// A liner (shotcrete, steel sets) along the whole wall of an excavation: elastic beam elements

@@ -73,7 +73,7 @@ pub(super) fn position(names: &[String], name: &str, path: &str) -> anyhow::Resu
 /// excavated zones take.
 pub(super) struct ZoneCatalogue {
     pub names: Vec<String>,
-    pub laws: Vec<Box<dyn ZoneLaw>>,
+    pub(crate) laws: Vec<Box<dyn ZoneLaw>>,
     /// The null law's id (staged scenes only).
     pub null: Option<MaterialId>,
     /// Poisson's ratio of each of the scene's materials.
@@ -136,7 +136,7 @@ impl ZoneCatalogue {
 /// The joint laws by joint material id, and which of them each joint feature and hole wall takes.
 pub(super) struct JointCatalogue {
     pub names: Vec<String>,
-    pub laws: Vec<Box<dyn JointLaw>>,
+    pub(crate) laws: Vec<Box<dyn JointLaw>>,
     /// Joint material of each joint feature (`EdgeKind::Joint(k)`: sets first, then explicit
     /// joints, then Voronoi grain boundaries).
     pub feature: Vec<u32>,

@@ -89,7 +89,7 @@ pub struct Meshed {
     pub domain: Domain,
     pub blocking: Blocking,
     /// One mesh per block, in block order (the outline only for rigid and simple blocks).
-    pub meshes: Vec<TriMesh>,
+    pub(crate) meshes: Vec<TriMesh>,
     /// Mode of each block.
     pub modes: Vec<BlockMode>,
     /// For each block, the staged excavation whose rock it is (index into the excavations), or
@@ -100,7 +100,7 @@ pub struct Meshed {
     /// The joint pieces dropped to keep zones above `zoning.accept_angle`, in words (warnings).
     pub repairs: Vec<String>,
     /// The blocks too thin to zone at the finest size asked for (`Thin`), whatever their mode now.
-    pub thin: Vec<Thin>,
+    pub(crate) thin: Vec<Thin>,
     /// The distance within which the cutter merged vertices, m.
     pub merge_tolerance: f64,
 }

@@ -84,21 +84,21 @@ pub struct Plan {
     pub stages: Vec<StagePlan>,
     /// Whether the scene has stages of its own (the summary lists them and the ground reaction
     /// curve is written).
-    pub staged: bool,
+    pub(crate) staged: bool,
 }
 
 /// What the plan is made from besides the scene: names resolved to ids by the catalogues and
 /// supports, the stage regions resolved to blocks.
 pub(super) struct Resolved<'a> {
-    pub zone_id: &'a dyn Fn(&str) -> anyhow::Result<MaterialId>,
-    pub joint_id: &'a dyn Fn(&str) -> anyhow::Result<u32>,
-    pub support_id: &'a dyn Fn(&str) -> anyhow::Result<SupportId>,
+    pub(crate) zone_id: &'a dyn Fn(&str) -> anyhow::Result<MaterialId>,
+    pub(crate) joint_id: &'a dyn Fn(&str) -> anyhow::Result<u32>,
+    pub(crate) support_id: &'a dyn Fn(&str) -> anyhow::Result<SupportId>,
     /// For each stage, the blocks its `regions` reach and their new material.
-    pub stage_regions: Vec<Vec<(u32, MaterialId)>>,
+    pub(crate) stage_regions: Vec<Vec<(u32, MaterialId)>>,
     /// The fixities and loads of the top-level `boundary`.
-    pub initial_boundary: BoundaryEffect,
+    pub(crate) initial_boundary: BoundaryEffect,
     /// Those of each stage's `boundary`, if it has one.
-    pub stage_boundary: Vec<Option<BoundaryEffect>>,
+    pub(crate) stage_boundary: Vec<Option<BoundaryEffect>>,
 }
 
 impl Plan {

@@ -18,15 +18,15 @@ pub struct CableProps {
     /// Axial stiffness EA/s, N.
     pub axial_stiffness: f64,
     /// Axial yield force Fy/s, N/m.
-    pub yield_force: f64,
+    pub(crate) yield_force: f64,
     /// Grout stiffness kg/s per length of bolt, N/m per m per m.
     pub grout_stiffness: f64,
     /// Bond strength τb/s per length of bolt, N/m per m.
     pub bond_strength: f64,
     /// Pretension N0/s, N/m.
-    pub pretension: f64,
+    pub(crate) pretension: f64,
     /// Mass per length ρA/s, kg/m per m.
-    pub line_density: f64,
+    pub(crate) line_density: f64,
 }
 
 /// Bolt groups, cable nodes and segments as structure-of-arrays. A group is inactive until a
@@ -34,10 +34,10 @@ pub struct CableProps {
 #[derive(Debug, Clone, Default)]
 pub struct Cables {
     pub names: Vec<String>,
-    pub props: Vec<CableProps>,
+    pub(crate) props: Vec<CableProps>,
     pub active: Vec<bool>,
     /// Group of each cable node.
-    pub group: Vec<u32>,
+    pub(crate) group: Vec<u32>,
     /// Position of each cable node, m.
     pub pos: Vec<[f64; 2]>,
     /// Unit vector along the bolt (head to toe).
@@ -45,7 +45,7 @@ pub struct Cables {
     /// Tributary length of each cable node, m.
     pub length: Vec<f64>,
     /// Rock nodes of the hosting zone and the node's shape-function weights there.
-    pub host: Vec<[u32; 3]>,
+    pub(crate) host: Vec<[u32; 3]>,
     pub weight: Vec<[f64; 3]>,
     /// Displacement along the bolt since installation, m.
     pub disp: Vec<f64>,
@@ -58,16 +58,16 @@ pub struct Cables {
     /// Inertial mass (scaled in static runs), kg/m.
     pub mass: Vec<f64>,
     /// Rock displacement along the bolt at installation, m.
-    pub rock_origin: Vec<f64>,
+    pub(crate) rock_origin: Vec<f64>,
     /// Force of the grout on the cable node along the bolt, N/m.
-    pub grout_force: Vec<f64>,
+    pub(crate) grout_force: Vec<f64>,
     /// Plastic slip of the grout, m.
     pub slip: Vec<f64>,
     /// Cable nodes of each segment (head side first) and its group.
     pub segment: Vec<[u32; 2]>,
-    pub segment_group: Vec<u32>,
+    pub(crate) segment_group: Vec<u32>,
     /// Segment length, m.
-    pub segment_length: Vec<f64>,
+    pub(crate) segment_length: Vec<f64>,
     /// Axial force, N/m (tension positive).
     pub axial: Vec<f64>,
     /// Plastic elongation, m.

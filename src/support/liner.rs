@@ -20,20 +20,20 @@ pub struct LinerProps {
     /// Axial stiffness EA/s, N.
     pub axial_stiffness: f64,
     /// Bending stiffness EI/s, N·m².
-    pub bending_stiffness: f64,
+    pub(crate) bending_stiffness: f64,
     /// Mass per length ρA/s, kg/m per m; rotational inertia per length ρI/s, kg·m.
-    pub line_density: f64,
-    pub line_inertia: f64,
+    pub(crate) line_density: f64,
+    pub(crate) line_inertia: f64,
 }
 
 /// Liners, their nodes, links to the rock and elements as structure-of-arrays.
 #[derive(Debug, Clone, Default)]
 pub struct Liners {
     pub names: Vec<String>,
-    pub props: Vec<LinerProps>,
+    pub(crate) props: Vec<LinerProps>,
     pub active: Vec<bool>,
     /// Liner of each liner node.
-    pub group: Vec<u32>,
+    pub(crate) group: Vec<u32>,
     /// Position, m.
     pub pos: Vec<[f64; 2]>,
     /// Displacement since installation, m, and rotation, rad.
@@ -46,20 +46,20 @@ pub struct Liners {
     pub mass: Vec<[f64; 2]>,
     /// Links: liner node, rock node, stiffness (N/m per m) and the rock displacement at
     /// installation (m).
-    pub link_node: Vec<u32>,
-    pub link_rock: Vec<u32>,
-    pub link_stiffness: Vec<f64>,
-    pub link_origin: Vec<[f64; 2]>,
+    pub(crate) link_node: Vec<u32>,
+    pub(crate) link_rock: Vec<u32>,
+    pub(crate) link_stiffness: Vec<f64>,
+    pub(crate) link_origin: Vec<[f64; 2]>,
     /// Elements: liner nodes, liner, length (m), unit axis.
     pub element: Vec<[u32; 2]>,
-    pub element_group: Vec<u32>,
-    pub element_length: Vec<f64>,
-    pub element_axis: Vec<[f64; 2]>,
+    pub(crate) element_group: Vec<u32>,
+    pub(crate) element_length: Vec<f64>,
+    pub(crate) element_axis: Vec<[f64; 2]>,
     /// Axial force N, N/m (tension positive), and internal bending moments at both ends, N·m/m.
     pub axial: Vec<f64>,
     pub moment: Vec<[f64; 2]>,
     /// Shortest element at each liner node, m (the scale between its moment and its forces).
-    pub node_length: Vec<f64>,
+    pub(crate) node_length: Vec<f64>,
 }
 
 impl Liners {

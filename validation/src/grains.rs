@@ -246,9 +246,9 @@ mod tests {
         solver.spec.ratio = 0.0;
         solver.solve(&mut b.model, &mut Quiet);
         assert!(
-            solver.cycle.detections >= 2,
+            solver.cycle.detections() >= 2,
             "{} detections",
-            solver.cycle.detections
+            solver.cycle.detections()
         );
         let kept = b.model.nodes.mass.clone();
         adit::solve::derive_masses(&mut b.model, &sc.solve);

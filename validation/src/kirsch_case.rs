@@ -157,7 +157,7 @@ pub fn run(scene: &Scene, case: &str, load: OuterLoad) -> anyhow::Result<KirschR
         err = err.max((u[0] - e[0]).hypot(u[1] - e[1]));
         max_u = max_u.max(e[0].hypot(e[1]));
     }
-    let cycling = solver.cycle.seconds.zones + solver.cycle.seconds.motion;
+    let cycling = solver.cycle.seconds().zones + solver.cycle.seconds().motion;
     Ok(KirschResult {
         case: case.to_string(),
         zones: model.zones.len(),

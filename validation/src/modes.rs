@@ -77,7 +77,7 @@ pub fn run_as(sc: &Scene, label: String) -> anyhow::Result<ModeRun> {
         sol.status
     );
     let closures = closures(&b.model, &b.plan.boundary.part_nodes["tunnel"]);
-    let s = solver.cycle.seconds;
+    let s = solver.cycle.seconds();
     let cycling = s.detect + s.contacts + s.zones + s.motion;
     let per_s = |items: usize| items as f64 * sol.cycles as f64 / cycling;
     Ok(ModeRun {
