@@ -9,6 +9,7 @@
 pub mod contact;
 pub mod cycle;
 mod damping;
+pub mod implicit;
 pub mod interrupt;
 pub mod joint;
 pub mod law;

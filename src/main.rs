@@ -117,6 +117,19 @@ fn run(scene_path: &Path, out: Option<PathBuf>, quiet: bool) -> anyhow::Result<E
         s.zone_cycles_per_second,
         s.block_cycles_per_second
     )?;
+    if let Some(c) = &s.implicit {
+        say!(
+            "implicit: {} unknowns, {} factorization(s), {} iteration(s); {:.3} s assembling, {:.3} s \
+             factorizing, {:.3} s iterating (cycles above count explicit cycles and implicit \
+             iterations together)",
+            c.unknowns,
+            c.factorizations,
+            c.iterations,
+            c.assemble_s,
+            c.factorize_s,
+            c.iterate_s
+        )?;
+    }
     let sup = &result.built.model.supports;
     if !sup.is_empty() {
         let loads = sup.loads();

@@ -4,10 +4,12 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use crate::cycle::Cycle;
+use crate::implicit::{self, Method};
 use crate::model::Model;
 use crate::model::bodies::BodyMode;
 use crate::output::{OutputWriter, StageSummary, Summary, measured};
 use crate::scene::Scene;
+use crate::scene::SolveMethod;
 use crate::setup::{Setup, setup};
 use crate::solve::{HistoryRow, Observer, Solution, Solver, Status};
 use crate::stage::Staging;
@@ -102,10 +104,21 @@ fn build_solve_write(
     let mut seconds = crate::cycle::StageSeconds::default();
     let mut stage_summaries = Vec::new();
     let mut last: Option<(Solver, Solution)> = None;
-    for stage in &plan.stages {
+    let (mut methods, mut implicit_cost) = (Vec::new(), None::<implicit::Cost>);
+    for (i, stage) in plan.stages.iter().enumerate() {
         staging.apply(stage, model, plan);
         let mut solver = Solver::new(model, &stage.solve, scene.output.every);
         ensure_time_step(&solver)?;
+        let spec = &stage.solve;
+        let method = implicit::method(spec.method, spec.mode, model, solver.params.scheme)
+            .map_err(|reason| {
+                let field = if plan.staged {
+                    format!("stages[{i}].solve.method (or the scene's solve.method)")
+                } else {
+                    "solve.method".to_string()
+                };
+                anyhow::anyhow!("{field}: implicit cannot solve this model: {reason}; use \"explicit\" or \"auto\"")
+            })?;
         let mut writing = Writing {
             writer,
             inner: observer,
@@ -113,7 +126,28 @@ fn build_solve_write(
             error: None,
             offset: cycles,
         };
-        let solution = solver.solve(model, &mut writing);
+        let solution = match method {
+            Method::Implicit => {
+                let (solution, cost) = implicit::solve(
+                    model,
+                    &mut solver.cycle,
+                    &solver.params,
+                    spec.ratio,
+                    spec.max_iterations,
+                    &mut writing,
+                );
+                implicit_cost = Some(implicit_cost.map_or(cost, |c| c.plus(cost)));
+                solution
+            }
+            _ => solver.solve(model, &mut writing),
+        };
+        if spec.method != SolveMethod::Explicit {
+            methods.push(match &method {
+                Method::Implicit => "implicit".to_string(),
+                Method::Fallback(reason) => format!("explicit ({reason})"),
+                Method::Explicit => "explicit".to_string(),
+            });
+        }
         output_seconds += writing.output_seconds;
         if let Some(e) = writing.error {
             return Err(e);
@@ -215,6 +249,8 @@ fn build_solve_write(
         } else {
             vec![]
         },
+        methods,
+        implicit: implicit_cost,
     };
     writer.write_summary(&summary)?;
     Ok(RunResult {

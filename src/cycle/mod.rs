@@ -234,6 +234,57 @@ impl Cycle {
         self.structural_forces(supports, &nodes.disp, &still);
     }
 
+    /// The out-of-balance force of the state as it is, N/m, into `nodes.force` (zero in a fixed
+    /// component, as the motion stage leaves it): the force stages with a zero step (`prime`),
+    /// gathered per node. The implicit path's residual, measured as the explicit path measures it.
+    pub fn balance(&mut self, model: &mut Model, p: &CycleParams) {
+        self.prime(model, p);
+        for n in 0..model.nodes.len() {
+            let mut f = self.node_force(model, n);
+            let fixed = model.nodes.fixed[n];
+            for (d, flag) in [(0, FIX_X), (1, FIX_Y)] {
+                if fixed & flag != 0 {
+                    f[d] = 0.0;
+                }
+            }
+            model.nodes.force[n] = f;
+        }
+    }
+
+    /// Move the nodes by `du` (m) in one step of the zone stage: each zone strains by sym(∇du)
+    /// and its law updates its stress from there, then `du` is added to the displacements; no
+    /// damping acts. The implicit path's update.
+    pub fn displace(&mut self, model: &mut Model, du: &[[f64; 2]], p: &CycleParams) {
+        let unit = CycleParams {
+            dt: 1.0,
+            mass_damping: 0.0,
+            stiffness_damping: 0.0,
+            ..*p
+        };
+        model.nodes.vel.copy_from_slice(du);
+        let Model {
+            nodes,
+            zones,
+            gather,
+            mixed,
+            materials,
+            ..
+        } = model;
+        self.zone_forces(
+            nodes,
+            zones,
+            &materials.zone,
+            gather,
+            mixed.as_deref(),
+            &unit,
+        );
+        for (u, d) in nodes.disp.iter_mut().zip(du) {
+            u[0] += d[0];
+            u[1] += d[1];
+        }
+        nodes.vel.iter_mut().for_each(|v| *v = [0.0; 2]);
+    }
+
     /// Structural stage: bolts and liners take the rock's displacements `rock` (m), push back on
     /// the rock through the support slots, and move their own nodes (`support::Supports::cycle`).
     pub fn structural_forces(

@@ -261,6 +261,13 @@ pub struct Summary {
     /// Each stage of a staged scene, in order (empty without stages).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub stages: Vec<StageSummary>,
+    /// The path each stage took, when `solve.method` is not `explicit`: `implicit`, or `explicit`
+    /// with the reason `auto` did not solve implicitly.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub methods: Vec<String>,
+    /// What the implicit solves cost, summed over the stages (absent when none ran).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub implicit: Option<crate::implicit::Cost>,
 }
 
 /// The header of `history.csv`.

@@ -619,6 +619,23 @@ pub struct SolveSpec {
     pub ramp: u64,
     /// Rayleigh damping of a dynamic solve (default none); local damping then defaults to 0.
     pub rayleigh: Option<Rayleigh>,
+    /// How a static solve reaches equilibrium: `explicit` (default: damped cycling, as above),
+    /// `implicit` (a sparse direct solve of the stiffness, iterated on the same unbalanced-force
+    /// ratio), or `auto` (implicit where the model's features allow it, else explicit; the summary
+    /// says which ran and why).
+    pub method: SolveMethod,
+    /// Iterations of an implicit solve at the latest (default 200).
+    pub max_iterations: u64,
+}
+
+/// How a static solve reaches equilibrium.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum SolveMethod {
+    #[default]
+    Explicit,
+    Implicit,
+    Auto,
 }
 
 /// Rayleigh damping (UDEC's `damping rayleigh`): a viscous force −α_R m v at every mass and a
@@ -706,6 +723,8 @@ impl Default for SolveSpec {
             large_strain: false,
             ramp: 0,
             rayleigh: None,
+            method: SolveMethod::Explicit,
+            max_iterations: 200,
         }
     }
 }

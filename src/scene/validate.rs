@@ -3,8 +3,8 @@
 use thiserror::Error;
 
 use super::{
-    BoundaryCondition, JointLawSpec, JointMaterial, Material, Rayleigh, Scene, Shape, SolveMode,
-    SolveSpec, ZoneLawSpec,
+    BoundaryCondition, JointLawSpec, JointMaterial, Material, Rayleigh, Scene, Shape, SolveMethod,
+    SolveMode, SolveSpec, ZoneLawSpec,
 };
 
 /// Why a scene cannot be used.
@@ -196,6 +196,15 @@ fn validate_solve(p: &str, v: &SolveSpec) -> Result<(), SceneError> {
     }
     if let Some(r) = &v.rayleigh {
         validate_rayleigh(p, v, r)?;
+    }
+    if v.method == SolveMethod::Implicit && v.mode != SolveMode::Static {
+        return Err(invalid(
+            format!("{p}.method"),
+            "an implicit solve finds static equilibrium (`mode`: \"static\"); a dynamic run cycles explicitly",
+        ));
+    }
+    if v.max_iterations == 0 {
+        return Err(invalid(format!("{p}.max_iterations"), "must be at least 1"));
     }
     if v.ramp >= v.max_cycles {
         return Err(invalid(

@@ -1,0 +1,143 @@
+//! The tangent stiffness of the zones in sparse form: constant-strain triangles in plane strain,
+//! over the free degrees of freedom.
+
+use faer::sparse::{SparseColMat, Triplet};
+use rayon::prelude::*;
+
+use crate::law::ZoneLaw;
+use crate::model::{FIX_X, FIX_Y, Nodes, Zones};
+
+/// Marks a fixed component: no unknown.
+pub const FIXED: u32 = u32::MAX;
+
+/// The unknowns: for each node its x and y component's equation number, or `FIXED`.
+pub struct Dofs {
+    pub of_node: Vec<[u32; 2]>,
+    pub count: usize,
+}
+
+impl Dofs {
+    /// One unknown per component that is not fixed, numbered node by node.
+    pub fn of(nodes: &Nodes) -> Dofs {
+        let mut count = 0usize;
+        let of_node = (nodes.fixed.iter())
+            .map(|&f| {
+                [FIX_X, FIX_Y].map(|flag| {
+                    if f & flag != 0 {
+                        FIXED
+                    } else {
+                        count += 1;
+                        (count - 1) as u32
+                    }
+                })
+            })
+            .collect();
+        Dofs { of_node, count }
+    }
+}
+
+/// Plane-strain elasticity of bulk modulus K and shear modulus G (Pa), engineering shear strain:
+/// σ = D ε with D = [[K + 4G/3, K − 2G/3, 0], [K − 2G/3, K + 4G/3, 0], [0, 0, G]].
+pub fn plane_strain(bulk: f64, shear: f64) -> [[f64; 3]; 3] {
+    let (a, b) = (bulk + 4.0 * shear / 3.0, bulk - 2.0 * shear / 3.0);
+    [[a, b, 0.0], [b, a, 0.0], [0.0, 0.0, shear]]
+}
+
+/// Stiffness of a constant-strain triangle, N/m per m: K_e = A Bᵀ D B over its corner components
+/// (u0, v0, u1, v1, u2, v2), with B the strain–displacement matrix of the gradients `g`
+/// ([∂N0/∂x, ∂N1/∂x, ∂N2/∂x, ∂N0/∂y, ∂N1/∂y, ∂N2/∂y], 1/m; Zienkiewicz & Taylor vol. 1 §6.2).
+/// Its product with a displacement increment is minus the change of the zone's corner forces
+/// f_i = −A σ·∇N_i that the explicit zone stage computes.
+pub fn cst_stiffness(g: &[f64; 6], area: f64, d: &[[f64; 3]; 3]) -> [[f64; 6]; 6] {
+    let mut b = [[0.0; 6]; 3];
+    for i in 0..3 {
+        let (gx, gy) = (g[i], g[3 + i]);
+        b[0][2 * i] = gx;
+        b[1][2 * i + 1] = gy;
+        b[2][2 * i] = gy;
+        b[2][2 * i + 1] = gx;
+    }
+    let mut db = [[0.0; 6]; 3];
+    for r in 0..3 {
+        for c in 0..6 {
+            db[r][c] = (0..3).map(|k| d[r][k] * b[k][c]).sum();
+        }
+    }
+    let mut k = [[0.0; 6]; 6];
+    for r in 0..6 {
+        for c in 0..6 {
+            k[r][c] = area * (0..3).map(|m| b[m][r] * db[m][c]).sum::<f64>();
+        }
+    }
+    k
+}
+
+/// The zones' stiffness over the unknowns (lower triangle, for a Cholesky factorization), from
+/// each zone law's elastic moduli: the initial stiffness, exact for elastic zones and the
+/// modified-Newton matrix for yielding ones.
+pub fn zone_stiffness(
+    zones: &Zones,
+    laws: &[Box<dyn ZoneLaw>],
+    dofs: &Dofs,
+) -> Result<SparseColMat<usize, f64>, faer::sparse::CreationError> {
+    let triplets: Vec<Triplet<usize, usize, f64>> = (0..zones.len())
+        .into_par_iter()
+        .with_min_len(1024)
+        .flat_map_iter(|z| {
+            let (bulk, shear) = laws[zones.material[z].0 as usize].moduli();
+            let k = cst_stiffness(&zones.grad[z], zones.area[z], &plane_strain(bulk, shear));
+            let eq: [u32; 6] =
+                std::array::from_fn(|i| dofs.of_node[zones.nodes[z][i / 2] as usize][i % 2]);
+            let mut out = Vec::with_capacity(21);
+            for r in 0..6 {
+                for c in 0..6 {
+                    let (row, col) = (eq[r], eq[c]);
+                    if row != FIXED && col != FIXED && row >= col && k[r][c] != 0.0 {
+                        out.push(Triplet::new(row as usize, col as usize, k[r][c]));
+                    }
+                }
+            }
+            out
+        })
+        .collect();
+    SparseColMat::try_new_from_triplets(dofs.count, dofs.count, &triplets)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::zones::cst_gradients;
+
+    /// A rigid-body motion strains nothing: the element stiffness has three zero-energy modes
+    /// (two translations, one rotation), and it is symmetric.
+    #[test]
+    fn rigid_motions_cost_no_energy() {
+        let p = [[0.0, 0.0], [1.3, 0.2], [0.4, 0.9]];
+        let (g, area) = cst_gradients(p);
+        let k = cst_stiffness(&g, area, &plane_strain(5e9, 3e9));
+        let c = [0.45, 0.35];
+        let modes = [
+            [1.0, 0.0, 1.0, 0.0, 1.0, 0.0],
+            [0.0, 1.0, 0.0, 1.0, 0.0, 1.0],
+            std::array::from_fn(|i| {
+                let q = p[i / 2];
+                if i % 2 == 0 {
+                    -(q[1] - c[1])
+                } else {
+                    q[0] - c[0]
+                }
+            }),
+        ];
+        for m in modes {
+            for row in &k {
+                let f: f64 = row.iter().zip(&m).map(|(a, b)| a * b).sum();
+                assert!(f.abs() < 1e-6 * 5e9, "{f}");
+            }
+        }
+        for (r, row) in k.iter().enumerate() {
+            for (c, &v) in row.iter().enumerate() {
+                assert!((v - k[c][r]).abs() <= 1e-9 * row[r].abs());
+            }
+        }
+    }
+}

@@ -1,0 +1,218 @@
+//! Static equilibrium by a sparse direct solve (issue 17): the zones' stiffness is assembled once
+//! per stage over the free components and factorized by faer's sparse Cholesky; each iteration
+//! solves K Δu = R for the out-of-balance force R that the explicit force stages compute, and
+//! moves the model by Δu through the same zone stage, so the zone laws are the explicit path's
+//! and both stop on the same unbalanced-force ratio. For elastic zones one iteration reaches
+//! equilibrium to round-off; yielding zones converge as the initial-stiffness method
+//! (modified Newton: Zienkiewicz, Valliappan & King 1969), the factorization reused.
+//!
+//! What it does not yet do (the scene is refused, or `auto` cycles explicitly): contacts between
+//! blocks, rigid and simple blocks, bolts and liners, the mixed and large-strain zone schemes.
+
+pub mod assemble;
+
+use std::time::Instant;
+
+use faer::Side;
+use faer::linalg::solvers::Solve;
+use faer::sparse::linalg::solvers::{Llt, SymbolicLlt};
+
+use crate::cycle::{Cycle, CycleParams, ZoneScheme};
+use crate::model::Model;
+use crate::scene::{SolveMethod, SolveMode};
+use crate::solve::{HistoryRow, Observer, Solution, Status};
+use assemble::{Dofs, FIXED, zone_stiffness};
+
+/// Why the implicit path cannot solve `model` as it is, or `None` if it can.
+pub fn unsupported(model: &Model, scheme: ZoneScheme) -> Option<&'static str> {
+    if model.blocks.len() > 1 {
+        Some("contacts between blocks are not yet assembled")
+    } else if !model.bodies.is_empty() {
+        Some("rigid and simple blocks are not yet assembled")
+    } else if !model.supports.is_empty() {
+        Some("bolts and liners are not yet assembled")
+    } else if scheme != ZoneScheme::SmallStrain {
+        Some(
+            "only the small-strain zone scheme is assembled (not `zoning.mixed` or `solve.large_strain`)",
+        )
+    } else {
+        None
+    }
+}
+
+/// What an implicit solve cost (summed over the stages in `summary.json`).
+#[derive(Debug, Clone, Copy, Default, PartialEq, serde::Serialize)]
+pub struct Cost {
+    /// Unknowns (free displacement components).
+    pub unknowns: usize,
+    /// Non-zeros stored of the stiffness matrix (its lower triangle).
+    pub matrix_nonzeros: usize,
+    pub factorizations: u64,
+    pub iterations: u64,
+    /// Seconds assembling, factorizing, and iterating (residuals, solves, zone updates).
+    pub assemble_s: f64,
+    pub factorize_s: f64,
+    pub iterate_s: f64,
+}
+
+impl Cost {
+    /// The costs of two solves together (the largest system's size).
+    pub fn plus(self, o: Cost) -> Cost {
+        Cost {
+            unknowns: self.unknowns.max(o.unknowns),
+            matrix_nonzeros: self.matrix_nonzeros.max(o.matrix_nonzeros),
+            factorizations: self.factorizations + o.factorizations,
+            iterations: self.iterations + o.iterations,
+            assemble_s: self.assemble_s + o.assemble_s,
+            factorize_s: self.factorize_s + o.factorize_s,
+            iterate_s: self.iterate_s + o.iterate_s,
+        }
+    }
+}
+
+/// The path a stage takes.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Method {
+    Explicit,
+    Implicit,
+    /// `auto` fell back to explicit cycling, for this reason.
+    Fallback(&'static str),
+}
+
+/// The path `asked` takes on `model`; an error (the reason) when `implicit` is asked of a model
+/// the implicit path cannot solve.
+pub fn method(
+    asked: SolveMethod,
+    mode: SolveMode,
+    model: &Model,
+    scheme: ZoneScheme,
+) -> Result<Method, &'static str> {
+    match (asked, mode) {
+        (SolveMethod::Explicit, _) => Ok(Method::Explicit),
+        (SolveMethod::Auto, SolveMode::Dynamic) => Ok(Method::Explicit),
+        (SolveMethod::Auto, SolveMode::Static) => Ok(match unsupported(model, scheme) {
+            Some(reason) => Method::Fallback(reason),
+            None => Method::Implicit,
+        }),
+        (SolveMethod::Implicit, _) => match unsupported(model, scheme) {
+            Some(reason) => Err(reason),
+            None => Ok(Method::Implicit),
+        },
+    }
+}
+
+/// Solve `model` to static equilibrium (ratio below `ratio`, at most `max_iterations`
+/// iterations), reporting each iteration to `observer` as a history row.
+pub fn solve(
+    model: &mut Model,
+    cycle: &mut Cycle,
+    params: &CycleParams,
+    ratio: f64,
+    max_iterations: u64,
+    observer: &mut dyn Observer,
+) -> (Solution, Cost) {
+    let mut cost = Cost::default();
+    let t = Instant::now();
+    let dofs = Dofs::of(&model.nodes);
+    cost.unknowns = dofs.count;
+    let stiffness = zone_stiffness(&model.zones, &model.materials.zone, &dofs);
+    cost.assemble_s = t.elapsed().as_secs_f64();
+    let fail = |reason: String, cost| {
+        let s = Solution {
+            status: Status::Failed(reason),
+            cycles: 0,
+            history: vec![],
+            final_ratio: f64::NAN,
+        };
+        (s, cost)
+    };
+    let stiffness = match stiffness {
+        Ok(k) => k,
+        Err(e) => {
+            return fail(
+                format!("implicit: the stiffness could not be assembled ({e:?})"),
+                cost,
+            );
+        }
+    };
+    let t = Instant::now();
+    let factor = SymbolicLlt::try_new(stiffness.symbolic(), Side::Lower)
+        .map_err(|e| format!("{e:?}"))
+        .and_then(|sym| {
+            Llt::try_new_with_symbolic(sym, stiffness.as_ref(), Side::Lower)
+                .map_err(|e| format!("{e:?}"))
+        });
+    cost.factorize_s = t.elapsed().as_secs_f64();
+    cost.factorizations = 1;
+    cost.matrix_nonzeros = stiffness.compute_nnz();
+    let factor = match factor {
+        Ok(f) => f,
+        Err(e) => {
+            return fail(
+                format!(
+                    "implicit: the stiffness is not positive definite ({e}): a part of the model \
+                     is free to move (a mechanism) or has no stiffness"
+                ),
+                cost,
+            );
+        }
+    };
+    let t = Instant::now();
+    let mut history = Vec::new();
+    let mut rhs = vec![0.0; dofs.count];
+    let mut du = vec![[0.0; 2]; model.nodes.len()];
+    let mut iteration = 0u64;
+    let status = loop {
+        cycle.balance(model, params);
+        let m = match cycle.monitor(model) {
+            Ok(m) => m,
+            Err(reason) => break Status::Failed(format!("iteration {iteration}: {reason}")),
+        };
+        let row = HistoryRow {
+            cycle: iteration,
+            time: iteration as f64,
+            ratio: m.ratio,
+            kinetic: 0.0,
+        };
+        history.push(row);
+        observer.monitored(&row);
+        if m.ratio <= ratio {
+            break Status::Converged;
+        }
+        if crate::interrupt::requested() {
+            break Status::Interrupted;
+        }
+        if iteration == max_iterations {
+            break Status::CycleLimit;
+        }
+        for (n, eq) in dofs.of_node.iter().enumerate() {
+            for d in 0..2 {
+                if eq[d] != FIXED {
+                    rhs[eq[d] as usize] = model.nodes.force[n][d];
+                }
+            }
+        }
+        factor.solve_in_place(faer::ColMut::from_slice_mut(&mut rhs));
+        for (n, eq) in dofs.of_node.iter().enumerate() {
+            du[n] = std::array::from_fn(|d| {
+                if eq[d] == FIXED {
+                    0.0
+                } else {
+                    rhs[eq[d] as usize]
+                }
+            });
+        }
+        cycle.displace(model, &du, params);
+        iteration += 1;
+    };
+    cost.iterations = iteration;
+    cost.iterate_s = t.elapsed().as_secs_f64();
+    let final_ratio = history.last().map_or(f64::NAN, |r| r.ratio);
+    let solution = Solution {
+        status,
+        cycles: iteration,
+        history,
+        final_ratio,
+    };
+    (solution, cost)
+}

@@ -1,0 +1,169 @@
+//! The implicit path (issue 17): a sparse direct solve reaches the explicit path's equilibrium.
+
+use adit::Scene;
+use adit::solve::Quiet;
+
+fn model_scene(file: &str) -> Scene {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join(file);
+    Scene::load(&path).unwrap()
+}
+
+fn run(sc: &Scene, folder: &str) -> adit::RunResult {
+    let out = std::env::temp_dir().join(folder);
+    let _ = std::fs::remove_dir_all(&out);
+    adit::run_scene(sc, &out, &mut Quiet).unwrap()
+}
+
+/// Relative L2 difference of two runs' zone stresses (in-plane components).
+fn stress_difference(a: &adit::RunResult, b: &adit::RunResult) -> f64 {
+    let (sa, sb) = (&a.built.model.zones.stress, &b.built.model.zones.stress);
+    let (mut num, mut den) = (0.0, 0.0);
+    for (x, y) in sa.iter().zip(sb) {
+        for c in [0, 1, 3] {
+            num += (x[c] - y[c]).powi(2);
+            den += y[c].powi(2);
+        }
+    }
+    (num / den).sqrt()
+}
+
+/// The shipped Kirsch model solved implicitly: one iteration to round-off, and the explicit
+/// solution to within its own unbalanced-force tolerance.
+#[test]
+fn implicit_kirsch_equals_the_explicit_solution() {
+    let explicit = model_scene("models/kirsch.json");
+    let mut implicit = explicit.clone();
+    implicit.solve.method = adit::scene::SolveMethod::Implicit;
+    let e = run(&explicit, "adit-test-kirsch-explicit");
+    let i = run(&implicit, "adit-test-kirsch-implicit");
+    assert_eq!(i.summary.status, "converged");
+    let cost = i.summary.implicit.expect("an implicit solve ran");
+    assert_eq!((cost.factorizations, cost.iterations), (1, 1));
+    assert!(
+        i.summary.final_ratio.unwrap() < 1e-12,
+        "{:?}",
+        i.summary.final_ratio
+    );
+    let d = stress_difference(&i, &e);
+    println!("stress difference implicit vs explicit: {d:.3e}");
+    assert!(d < 2e-4, "{d}");
+}
+
+/// A hole in Mohr–Coulomb rock (Salençon's problem, c = 5 MPa, φ = 30°, p0 = 30 MPa): the
+/// implicit path iterates with the initial stiffness and reaches the explicit answer: the same
+/// yielded zones within 1 %, the same wall closure within 0.5 %.
+#[test]
+fn implicit_plastic_hole_matches_explicit() {
+    let text = r#"{
+        "name": "mc_hole",
+        "materials": { "rock": { "density": 2500, "young": 10e9, "poisson": 0.25,
+                                  "law": "mohr_coulomb", "cohesion": 5e6, "friction": 30 } },
+        "region": { "polygon": [[-15, -15], [15, -15], [15, 15], [-15, 15]], "material": "rock" },
+        "excavations": [{ "name": "hole", "circle": { "center": [0, 0], "radius": 1, "segments": 64 } }],
+        "zoning": { "edge_at_excavation": 0.1, "edge_far": 2.0, "grading": 0.25 },
+        "in_situ": { "sxx": -30e6, "syy": -30e6 },
+        "boundary": [ { "part": "outer", "in_situ_traction": true },
+                      { "at": [15, 0], "fix": "y" }, { "at": [-15, 0], "fix": "y" },
+                      { "at": [0, 15], "fix": "x" }, { "at": [0, -15], "fix": "x" } ],
+        "solve": { "ratio": 1e-6, "max_cycles": 200000 }
+    }"#;
+    let explicit = Scene::from_json(text, "mc_hole").unwrap();
+    let mut implicit = explicit.clone();
+    implicit.solve.method = adit::scene::SolveMethod::Implicit;
+    let e = run(&explicit, "adit-test-mc-explicit");
+    let i = run(&implicit, "adit-test-mc-implicit");
+    assert_eq!(i.summary.status, "converged", "{:?}", i.summary.reason);
+    let yielded = |r: &adit::RunResult| {
+        r.built
+            .model
+            .zones
+            .state
+            .iter()
+            .filter(|&&s| s != 0)
+            .count()
+    };
+    let wall = &i.built.plan.boundary.part_nodes["hole"];
+    let closure = |r: &adit::RunResult| {
+        let m = &r.built.model;
+        wall.iter()
+            .map(|&n| {
+                let (p, u) = (m.nodes.pos[n as usize], m.nodes.disp[n as usize]);
+                -(p[0] * u[0] + p[1] * u[1]) / p[0].hypot(p[1])
+            })
+            .sum::<f64>()
+            / wall.len() as f64
+    };
+    let cost = i.summary.implicit.unwrap();
+    println!(
+        "yielded {} / {}, closure {:.4e} / {:.4e} m, explicit {} cycles {:.2} s, implicit {} iterations {:.2} s",
+        yielded(&i),
+        yielded(&e),
+        closure(&i),
+        closure(&e),
+        e.summary.cycles,
+        e.summary.wall_seconds,
+        cost.iterations,
+        i.summary.wall_seconds
+    );
+    let (yi, ye) = (yielded(&i) as f64, yielded(&e) as f64);
+    assert!((yi - ye).abs() <= 0.01 * ye, "{yi} {ye}");
+    assert!((closure(&i) / closure(&e) - 1.0).abs() < 0.005);
+}
+
+/// A model the implicit path cannot yet solve (blocks in contact): `implicit` is refused naming
+/// the field and the reason; `auto` cycles explicitly and says why in the summary.
+#[test]
+fn implicit_refuses_contacts_and_auto_falls_back() {
+    let text = |method: &str| {
+        format!(
+            r#"{{
+        "name": "two_blocks",
+        "materials": {{ "rock": {{ "density": 2500, "young": 10e9, "poisson": 0.25 }} }},
+        "joint_materials": {{ "j": {{ "normal_stiffness": 1e11, "shear_stiffness": 1e11, "friction": 30 }} }},
+        "region": {{ "polygon": [[0, 0], [2, 0], [2, 2], [0, 2]], "material": "rock",
+                     "edge_names": ["bottom", "right", "top", "left"] }},
+        "joints": [{{ "from": [-1, 1], "to": [3, 1], "material": "j" }}],
+        "zoning": {{ "edge_at_excavation": 0.5, "edge_far": 0.5 }},
+        "boundary": [ {{ "part": "bottom", "fix": "xy" }}, {{ "part": "top", "normal_stress": -1e6 }} ],
+        "solve": {{ "method": "{method}", "max_cycles": 3000 }}
+    }}"#
+        )
+    };
+    let sc = Scene::from_json(&text("implicit"), "two_blocks").unwrap();
+    let out = std::env::temp_dir().join("adit-test-implicit-refused");
+    let msg = adit::run_scene(&sc, &out, &mut Quiet)
+        .err()
+        .unwrap()
+        .to_string();
+    assert!(
+        msg.starts_with("solve.method: implicit cannot solve this model: contacts"),
+        "{msg}"
+    );
+    let sc = Scene::from_json(&text("auto"), "two_blocks").unwrap();
+    let r = run(&sc, "adit-test-implicit-auto");
+    assert!(r.summary.implicit.is_none());
+    assert!(
+        r.summary.methods[0].starts_with("explicit (contacts"),
+        "{:?}",
+        r.summary.methods
+    );
+}
+
+/// `implicit` asks for static equilibrium: a dynamic solve with it is refused naming the field.
+#[test]
+fn implicit_dynamic_is_refused() {
+    let mut text = std::fs::read_to_string(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("models/kirsch.json"),
+    )
+    .unwrap();
+    text = text.replacen(
+        "\"solve\": {",
+        "\"solve\": { \"method\": \"implicit\", \"mode\": \"dynamic\",",
+        1,
+    );
+    let msg = Scene::from_json(&text, "kirsch").unwrap_err().to_string();
+    assert!(
+        msg.starts_with("solve.method: an implicit solve finds static equilibrium"),
+        "{msg}"
+    );
+}
