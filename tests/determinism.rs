@@ -43,3 +43,29 @@ fn one_and_three_threads_agree_bit_for_bit() {
         );
     }
 }
+
+/// The implicit path too: the sparse Cholesky's parallel factorization must not change a bit with
+/// the thread count (shipped Kirsch model, and the jointed tunnel for 20 iterations).
+#[test]
+fn implicit_one_and_three_threads_agree_bit_for_bit() {
+    let run = |model: &str, threads: usize| {
+        let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("models")
+            .join(model);
+        let mut s = Scene::load(&path).unwrap();
+        s.solve.method = adit::scene::SolveMethod::Implicit;
+        s.solve.max_iterations = 20;
+        let out = std::env::temp_dir().join(format!("adit-test-implicit-threads-{threads}"));
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap();
+        pool.install(|| {
+            let r = adit::run_scene(&s, &out, &mut Quiet).unwrap();
+            (r.built.model.nodes.disp, r.built.model.zones.stress)
+        })
+    };
+    for model in ["kirsch.json", "jointed_tunnel.json"] {
+        assert!(run(model, 1) == run(model, 3), "{model}");
+    }
+}

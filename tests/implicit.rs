@@ -1,5 +1,7 @@
 //! The implicit path (issue 17): a sparse direct solve reaches the explicit path's equilibrium.
 
+mod common;
+
 use adit::Scene;
 use adit::solve::Quiet;
 
@@ -110,42 +112,70 @@ fn implicit_plastic_hole_matches_explicit() {
     assert!((closure(&i) / closure(&e) - 1.0).abs() < 0.005);
 }
 
-/// A model the implicit path cannot yet solve (blocks in contact): `implicit` is refused naming
-/// the field and the reason; `auto` cycles explicitly and says why in the summary.
+/// Two blocks across a horizontal glued joint under 1 MPa: `implicit` carries the load through
+/// the contacts as the explicit path does; `auto` keeps a model with contacts explicit and says why;
+/// rigid blocks are refused by `implicit`, naming the field and the reason.
 #[test]
-fn implicit_refuses_contacts_and_auto_falls_back() {
-    let text = |method: &str| {
+fn implicit_contacts_and_what_it_refuses() {
+    let text = |method: &str, mode: &str, law: &str| {
         format!(
             r#"{{
         "name": "two_blocks",
         "materials": {{ "rock": {{ "density": 2500, "young": 10e9, "poisson": 0.25 }} }},
-        "joint_materials": {{ "j": {{ "normal_stiffness": 1e11, "shear_stiffness": 1e11, "friction": 30 }} }},
+        "joint_materials": {{ "j": {{ "normal_stiffness": 1e11, "shear_stiffness": 1e11, "law": "{law}" }} }},
         "region": {{ "polygon": [[0, 0], [2, 0], [2, 2], [0, 2]], "material": "rock",
                      "edge_names": ["bottom", "right", "top", "left"] }},
         "joints": [{{ "from": [-1, 1], "to": [3, 1], "material": "j" }}],
-        "zoning": {{ "edge_at_excavation": 0.5, "edge_far": 0.5 }},
+        "blocks": {{ "mode": "{mode}" }},
+        "zoning": {{ "edge_at_excavation": 0.25, "edge_far": 0.25 }},
         "boundary": [ {{ "part": "bottom", "fix": "xy" }}, {{ "part": "top", "normal_stress": -1e6 }} ],
-        "solve": {{ "method": "{method}", "max_cycles": 3000 }}
+        "solve": {{ "method": "{method}", "ratio": 1e-7, "max_cycles": 100000 }}
     }}"#
         )
     };
-    let sc = Scene::from_json(&text("implicit"), "two_blocks").unwrap();
+    let scene =
+        |method, mode, law| Scene::from_json(&text(method, mode, law), "two_blocks").unwrap();
+    let i = run(
+        &scene("implicit", "deformable", "glued"),
+        "adit-test-implicit-contacts",
+    );
+    let e = run(
+        &scene("explicit", "deformable", "glued"),
+        "adit-test-explicit-contacts",
+    );
+    assert_eq!(i.summary.status, "converged", "{:?}", i.summary.reason);
+    let d = stress_difference(&i, &e);
+    let cost = i.summary.implicit.unwrap();
+    println!(
+        "two blocks: {} iterations, stress difference {d:.2e}",
+        cost.iterations
+    );
+    assert!(d < 1e-4, "{d}");
+    // A Coulomb joint (φ = 30°) converges too; its answer may differ where the explicit path's
+    // relaxation slipped the joint's ends on its way (friction remembers the path).
+    let c = run(
+        &scene("implicit", "deformable", "coulomb"),
+        "adit-test-implicit-coulomb",
+    );
+    assert_eq!(c.summary.status, "converged", "{:?}", c.summary.reason);
+    let a = run(
+        &scene("auto", "deformable", "coulomb"),
+        "adit-test-implicit-auto",
+    );
+    assert!(a.summary.implicit.is_none());
+    assert!(
+        a.summary.methods[0].starts_with("explicit (contacts"),
+        "{:?}",
+        a.summary.methods
+    );
     let out = std::env::temp_dir().join("adit-test-implicit-refused");
-    let msg = adit::run_scene(&sc, &out, &mut Quiet)
+    let msg = adit::run_scene(&scene("implicit", "rigid", "coulomb"), &out, &mut Quiet)
         .err()
         .unwrap()
         .to_string();
     assert!(
-        msg.starts_with("solve.method: implicit cannot solve this model: contacts"),
+        msg.starts_with("solve.method: implicit cannot solve this model: rigid and simple"),
         "{msg}"
-    );
-    let sc = Scene::from_json(&text("auto"), "two_blocks").unwrap();
-    let r = run(&sc, "adit-test-implicit-auto");
-    assert!(r.summary.implicit.is_none());
-    assert!(
-        r.summary.methods[0].starts_with("explicit (contacts"),
-        "{:?}",
-        r.summary.methods
     );
 }
 
@@ -166,4 +196,28 @@ fn implicit_dynamic_is_refused() {
         msg.starts_with("solve.method: an implicit solve finds static equilibrium"),
         "{msg}"
     );
+}
+
+/// A staged excavation (a tunnel filled with rock glued to its walls, excavated with half the
+/// in-situ traction left, then released): the implicit path gives the explicit path's closures,
+/// one iteration per stage.
+#[test]
+fn implicit_stages_give_the_explicit_closures() {
+    let explicit = Scene::from_json(common::STAGED_TUNNEL, "staged").unwrap();
+    let mut implicit = explicit.clone();
+    implicit.solve.method = adit::scene::SolveMethod::Implicit;
+    let e = run(&explicit, "adit-test-staged-explicit");
+    let i = run(&implicit, "adit-test-staged-implicit");
+    for (a, b) in i.summary.stages.iter().zip(&e.summary.stages) {
+        assert_eq!(a.status, "converged", "{}", a.name);
+        assert_eq!(a.cycles, 1, "{}", a.name);
+        for (name, c) in &a.closure {
+            assert!(
+                (c / b.closure[name] - 1.0).abs() < 1e-3,
+                "{}: {c} {}",
+                a.name,
+                b.closure[name]
+            );
+        }
+    }
 }

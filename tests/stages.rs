@@ -1,31 +1,13 @@
 //! Staged runs: a tunnel filled with rock until its stage, excavation releasing the wall, a
 //! support pressure lowered stage by stage, displacements reset, one output step per stage.
 
+mod common;
+
 use adit::Scene;
 use adit::solve::Quiet;
 
-/// Elastic rock (E = 10 GPa, ν = 0.25) under hydrostatic 10 MPa with a 1 m tunnel excavated in
-/// the second stage with half the in-situ traction left on the wall, and released in the third.
-const SCENE_TEXT: &str = r#"{
-        "name": "staged",
-        "materials": { "rock": { "density": 2500, "young": 10e9, "poisson": 0.25 } },
-        "region": { "polygon": [[-12, -12], [12, -12], [12, 12], [-12, 12]], "material": "rock" },
-        "excavations": [{ "name": "tunnel", "circle": { "center": [0, 0], "radius": 1, "segments": 96 } }],
-        "zoning": { "edge_at_excavation": 0.1, "edge_far": 2.0, "grading": 0.25 },
-        "in_situ": { "sxx": -10e6, "syy": -10e6 },
-        "boundary": [ { "part": "outer", "in_situ_traction": true },
-                      { "at": [12, 0], "fix": "y" }, { "at": [-12, 0], "fix": "y" },
-                      { "at": [0, 12], "fix": "x" }, { "at": [0, -12], "fix": "x" } ],
-        "solve": { "ratio": 1e-6 },
-        "stages": [
-            { "name": "in-situ" },
-            { "name": "excavate", "excavate": ["tunnel"], "support_fraction": 0.5 },
-            { "name": "release", "support_fraction": 0.0 }
-        ]
-    }"#;
-
 fn scene() -> Scene {
-    Scene::from_json(SCENE_TEXT, "staged").unwrap()
+    Scene::from_json(common::STAGED_TUNNEL, "staged").unwrap()
 }
 
 /// Run `sc` into a fresh temporary folder named `folder`; every stage must converge.
@@ -301,7 +283,7 @@ fn a_stage_changes_a_zone_material() {
         "density": 3000, "young": 10e9, "poisson": 0.25 } } });
     // Through the loader, as a user's file would be.
     let text = |stages: &serde_json::Value| {
-        let mut s: serde_json::Value = serde_json::from_str(SCENE_TEXT).unwrap();
+        let mut s: serde_json::Value = serde_json::from_str(common::STAGED_TUNNEL).unwrap();
         s["stages"] = serde_json::json!([stages]);
         s.to_string()
     };

@@ -63,18 +63,7 @@ impl Cycle {
             .with_min_len(256)
             .for_each(|(((((((state, f), &i), &e), &xi), &len), &mat), &corner)| {
                 let [j, k] = blocks.edges[e as usize];
-                let n = if corner {
-                    // Rounded corner against rounded corner: along the line of the centres.
-                    let ci = rounding::centre(blocks, &x, i, blocks.round_of(i));
-                    let cj = rounding::centre(blocks, &x, j, blocks.round_of(j));
-                    let (dx, dy) = (ci[0] - cj[0], ci[1] - cj[1]);
-                    let l = (dx * dx + dy * dy).sqrt();
-                    [dx / l, dy / l]
-                } else {
-                    let (pj, pk) = (x(j), x(k));
-                    let l = ((pk[0] - pj[0]).powi(2) + (pk[1] - pj[1]).powi(2)).sqrt();
-                    [(pk[1] - pj[1]) / l, -(pk[0] - pj[0]) / l]
-                };
+                let n = contact_normal(blocks, &x, i, e, corner);
                 let t = [-n[1], n[0]];
                 let (vi, vj, vk) = (vel[i as usize], vel[j as usize], vel[k as usize]);
                 let vr = [
@@ -100,5 +89,30 @@ impl Cycle {
                 f[1] = [-(1.0 - xi) * force[0], -(1.0 - xi) * force[1]];
                 f[2] = [-xi * force[0], -xi * force[1]];
             });
+    }
+}
+
+/// The unit normal of contact (node `i`, edge `e`) at positions `x`: the edge's outward normal
+/// (material on its left), or for two rounded corners (`corner`) the unit vector from the edge's
+/// first node's rounding centre to the node's.
+pub(crate) fn contact_normal(
+    blocks: &Blocks,
+    x: &impl Fn(u32) -> [f64; 2],
+    i: u32,
+    e: u32,
+    corner: bool,
+) -> [f64; 2] {
+    let [j, k] = blocks.edges[e as usize];
+    if corner {
+        // Rounded corner against rounded corner: along the line of the centres.
+        let ci = rounding::centre(blocks, x, i, blocks.round_of(i));
+        let cj = rounding::centre(blocks, x, j, blocks.round_of(j));
+        let (dx, dy) = (ci[0] - cj[0], ci[1] - cj[1]);
+        let l = (dx * dx + dy * dy).sqrt();
+        [dx / l, dy / l]
+    } else {
+        let (pj, pk) = (x(j), x(k));
+        let l = ((pk[0] - pj[0]).powi(2) + (pk[1] - pj[1]).powi(2)).sqrt();
+        [(pk[1] - pj[1]) / l, -(pk[0] - pj[0]) / l]
     }
 }

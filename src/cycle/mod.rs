@@ -4,6 +4,7 @@
 
 mod bodies;
 mod contacts;
+pub(crate) use contacts::contact_normal;
 mod large_strain;
 mod mixed;
 pub mod monitor;
@@ -251,9 +252,11 @@ impl Cycle {
         }
     }
 
-    /// Move the nodes by `du` (m) in one step of the zone stage: each zone strains by sym(∇du)
-    /// and its law updates its stress from there, then `du` is added to the displacements; no
-    /// damping acts. The implicit path's update.
+    /// Move the nodes by `du` (m) in one step of the contact and zone stages: each contact's
+    /// joint law takes the relative displacement and each zone strains by sym(∇du), its law
+    /// updating its stress from there; then `du` is added to the displacements, and contacts are
+    /// detected again once any node may have moved half the contact tolerance. No damping acts.
+    /// The implicit path's update.
     pub fn displace(&mut self, model: &mut Model, du: &[[f64; 2]], p: &CycleParams) {
         let unit = CycleParams {
             dt: 1.0,
@@ -266,10 +269,14 @@ impl Cycle {
             nodes,
             zones,
             gather,
+            blocks,
+            contacts,
+            contact_tolerance,
             mixed,
             materials,
             ..
         } = model;
+        self.contact_forces(nodes, blocks, contacts, &materials.joint, &unit);
         self.zone_forces(
             nodes,
             zones,
@@ -278,11 +285,25 @@ impl Cycle {
             mixed.as_deref(),
             &unit,
         );
+        let mut largest = 0.0f64;
         for (u, d) in nodes.disp.iter_mut().zip(du) {
             u[0] += d[0];
             u[1] += d[1];
+            largest = largest.max(d[0].hypot(d[1]));
         }
         nodes.vel.iter_mut().for_each(|v| *v = [0.0; 2]);
+        self.moved += largest;
+        if blocks.len() > 1 && self.moved > 0.5 * *contact_tolerance {
+            let x = nodes.current();
+            let d = Detection {
+                blocks,
+                x: &x,
+                tolerance: *contact_tolerance,
+                joint_material: &materials.feature,
+                hole_material: &materials.hole,
+            };
+            self.detect(&d, contacts);
+        }
     }
 
     /// Structural stage: bolts and liners take the rock's displacements `rock` (m), push back on

@@ -4,8 +4,11 @@
 use faer::sparse::{SparseColMat, Triplet};
 use rayon::prelude::*;
 
+use crate::cycle::contact_normal;
+use crate::joint::JointLaw;
 use crate::law::ZoneLaw;
-use crate::model::{FIX_X, FIX_Y, Nodes, Zones};
+use crate::model::blocks::Blocks;
+use crate::model::{Contacts, FIX_X, FIX_Y, Model, Nodes, Zones};
 
 /// Marks a fixed component: no unknown.
 pub const FIXED: u32 = u32::MAX;
@@ -79,8 +82,8 @@ pub fn zone_stiffness(
     zones: &Zones,
     laws: &[Box<dyn ZoneLaw>],
     dofs: &Dofs,
-) -> Result<SparseColMat<usize, f64>, faer::sparse::CreationError> {
-    let triplets: Vec<Triplet<usize, usize, f64>> = (0..zones.len())
+) -> Vec<Triplet<usize, usize, f64>> {
+    (0..zones.len())
         .into_par_iter()
         .with_min_len(1024)
         .flat_map_iter(|z| {
@@ -99,8 +102,66 @@ pub fn zone_stiffness(
             }
             out
         })
-        .collect();
+        .collect()
+}
+
+/// The model's stiffness over the unknowns (lower triangle): zones and contacts.
+pub fn stiffness(
+    model: &Model,
+    dofs: &Dofs,
+) -> Result<SparseColMat<usize, f64>, faer::sparse::CreationError> {
+    let mut triplets = zone_stiffness(&model.zones, &model.materials.zone, dofs);
+    if !model.contacts.is_empty() {
+        let x = model.nodes.current();
+        let (blocks, contacts, laws) = (&model.blocks, &model.contacts, &model.materials.joint);
+        triplets.extend(contact_stiffness(blocks, contacts, laws, &x, dofs));
+    }
     SparseColMat::try_new_from_triplets(dofs.count, dofs.count, &triplets)
+}
+
+/// The contacts' stiffness over the unknowns (lower triangle), at the current positions `x`:
+/// a contact of node i against the point ξ of edge (j, k), of length L, normal n and tangent t,
+/// with its joint law's stiffnesses kn, ks (Pa/m), adds
+/// K_c = L (w wᵀ) ⊗ (kn n nᵀ + ks t tᵀ), w = (1, −(1 − ξ), −ξ) over the components of (i, j, k):
+/// the linearization of the contact stage's forces F = −L(σn n + τ t) on i, −(1 − ξ)F on j and
+/// −ξF on k for a contact that neither slips nor opens (the initial stiffness of a joint).
+pub fn contact_stiffness(
+    blocks: &Blocks,
+    contacts: &Contacts,
+    laws: &[Box<dyn JointLaw>],
+    x: &[[f64; 2]],
+    dofs: &Dofs,
+) -> Vec<Triplet<usize, usize, f64>> {
+    let at = |n: u32| x[n as usize];
+    (0..contacts.len())
+        .into_par_iter()
+        .with_min_len(256)
+        .flat_map_iter(|c| {
+            let (i, e) = (contacts.node[c], contacts.edge[c]);
+            let n = contact_normal(blocks, &at, i, e, contacts.corner[c]);
+            let t = [-n[1], n[0]];
+            let (kn, ks) = laws[contacts.material[c] as usize].stiffness();
+            let (len, xi) = (contacts.length[c], contacts.xi[c]);
+            let w = [1.0, -(1.0 - xi), -xi];
+            let [j, k] = blocks.edges[e as usize];
+            let nodes = [i, j, k];
+            let frame = |a: usize, b: usize| kn * n[a] * n[b] + ks * t[a] * t[b];
+            let mut out = Vec::with_capacity(21);
+            for r in 0..6 {
+                for q in 0..6 {
+                    let row = dofs.of_node[nodes[r / 2] as usize][r % 2];
+                    let col = dofs.of_node[nodes[q / 2] as usize][q % 2];
+                    if row != FIXED && col != FIXED && row >= col {
+                        let v = len * w[r / 2] * w[q / 2] * frame(r % 2, q % 2);
+                        if v != 0.0 {
+                            out.push(Triplet::new(row as usize, col as usize, v));
+                        }
+                    }
+                }
+            }
+            out
+        })
+        .collect()
 }
 
 #[cfg(test)]

@@ -6,6 +6,26 @@ use std::io::Read;
 use std::process::Child;
 use std::time::{Duration, Instant};
 
+/// Elastic rock (E = 10 GPa, ν = 0.25) under hydrostatic 10 MPa with a 1 m tunnel excavated in
+/// the second stage with half the in-situ traction left on the wall, and released in the third.
+pub const STAGED_TUNNEL: &str = r#"{
+        "name": "staged",
+        "materials": { "rock": { "density": 2500, "young": 10e9, "poisson": 0.25 } },
+        "region": { "polygon": [[-12, -12], [12, -12], [12, 12], [-12, 12]], "material": "rock" },
+        "excavations": [{ "name": "tunnel", "circle": { "center": [0, 0], "radius": 1, "segments": 96 } }],
+        "zoning": { "edge_at_excavation": 0.1, "edge_far": 2.0, "grading": 0.25 },
+        "in_situ": { "sxx": -10e6, "syy": -10e6 },
+        "boundary": [ { "part": "outer", "in_situ_traction": true },
+                      { "at": [12, 0], "fix": "y" }, { "at": [-12, 0], "fix": "y" },
+                      { "at": [0, 12], "fix": "x" }, { "at": [0, -12], "fix": "x" } ],
+        "solve": { "ratio": 1e-6 },
+        "stages": [
+            { "name": "in-situ" },
+            { "name": "excavate", "excavate": ["tunnel"], "support_fraction": 0.5 },
+            { "name": "release", "support_fraction": 0.0 }
+        ]
+    }"#;
+
 /// A lone rigid block in a dynamic run: nothing to derive a time step from.
 pub const LONE_RIGID_BLOCK: &str = r#"{
     "name": "lone",
