@@ -9,6 +9,7 @@ mod glued;
 mod grains;
 mod gravity;
 mod impact;
+mod implicit;
 mod incline;
 mod inclusion;
 mod incompressible;
@@ -33,6 +34,7 @@ use crate::case::Case;
 pub fn all() -> Vec<Box<dyn Case>> {
     vec![
         Box::new(kirsch::Kirsch),
+        Box::new(implicit::Implicit),
         Box::new(patch::Patch),
         Box::new(gravity::Gravity),
         Box::new(salencon::Salencon),
