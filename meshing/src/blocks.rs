@@ -5,7 +5,7 @@
 //! half-edges; faces inside the region and outside every excavation are the blocks. A component
 //! floating inside a face (an isolated excavation, a closed joint loop) is a hole of that face.
 
-use std::collections::HashMap;
+use crate::Map;
 
 use crate::domain::Domain;
 use crate::error::MeshError;
@@ -88,7 +88,7 @@ struct VertexPool {
     pts: Vec<Point>,
     /// Whether each vertex lies on a wall (inserted while the walls were split).
     wall: Vec<bool>,
-    grid: HashMap<(i64, i64), Vec<u32>>,
+    grid: Map<(i64, i64), Vec<u32>>,
     tol: f64,
     merges: Merges,
 }
@@ -218,7 +218,7 @@ pub fn cut_blocks_filled(
     let mut pool = VertexPool {
         pts: Vec::new(),
         wall: Vec::new(),
-        grid: HashMap::new(),
+        grid: Map::default(),
         tol,
         merges: Merges::default(),
     };
@@ -228,7 +228,7 @@ pub fn cut_blocks_filled(
     for s in &segs[..walls] {
         pool.insert(s.a, true);
     }
-    let mut edges: HashMap<(u32, u32), EdgeKind> = HashMap::new();
+    let mut edges: Map<(u32, u32), EdgeKind> = Map::default();
     let mut params = Vec::new();
     let grid = SegmentGrid::new(&segs, tol);
     let mut near = Vec::new();
@@ -345,7 +345,7 @@ struct Cycle {
 }
 
 /// Trace every face of the planar graph with half-edges (face on the left of each half-edge).
-fn trace_faces(pts: &[Point], edges: &HashMap<(u32, u32), EdgeKind>) -> Vec<Cycle> {
+fn trace_faces(pts: &[Point], edges: &Map<(u32, u32), EdgeKind>) -> Vec<Cycle> {
     let mut list: Vec<((u32, u32), EdgeKind)> = edges.iter().map(|(&k, &v)| (k, v)).collect();
     list.sort_unstable_by_key(|e| e.0);
     // Half-edge 2e runs u→v, 2e+1 runs v→u.
@@ -363,7 +363,7 @@ fn trace_faces(pts: &[Point], edges: &HashMap<(u32, u32), EdgeKind>) -> Vec<Cycl
             list[h / 2].0.0
         }
     };
-    let mut out: HashMap<u32, Vec<usize>> = HashMap::new();
+    let mut out: Map<u32, Vec<usize>> = Map::default();
     for h in 0..2 * list.len() {
         out.entry(origin(h)).or_default().push(h);
     }
@@ -411,7 +411,7 @@ fn trace_faces(pts: &[Point], edges: &HashMap<(u32, u32), EdgeKind>) -> Vec<Cycl
 fn split_pinches(verts: Vec<u32>, kinds: Vec<EdgeKind>) -> Vec<(Vec<u32>, Vec<EdgeKind>)> {
     let mut out = Vec::new();
     let (mut sv, mut sk): (Vec<u32>, Vec<EdgeKind>) = (Vec::new(), Vec::new());
-    let mut at: HashMap<u32, usize> = HashMap::new();
+    let mut at: Map<u32, usize> = Map::default();
     for (v, k) in verts.into_iter().zip(kinds) {
         if let Some(&j) = at.get(&v) {
             let (lv, lk) = (sv.split_off(j), sk.split_off(j));
@@ -474,7 +474,7 @@ fn assemble_blocks(
     // outer cycle is inside no block. A host's box holds the component's box, which leaves few
     // blocks to ask, each through an index of its outer ring built once.
     let boxes: Vec<(Point, Point)> = blocks.iter().map(|b| b.outer.bounds()).collect();
-    let mut indexes: HashMap<usize, PolygonIndex> = HashMap::new();
+    let mut indexes: Map<usize, PolygonIndex> = Map::default();
     let mut holes_of: Vec<(usize, &Cycle)> = Vec::new();
     for c in floating {
         let hole = polygon(c);

@@ -20,3 +20,13 @@ pub use joints::{EdgeKind, JointSet, Segment, SplitMix};
 pub use triangulate::{
     BoundaryEdge, MeshStats, TriMesh, Zoning, triangulate, triangulate_block, triangulate_outline,
 };
+
+/// A hash map with a fixed hasher: the same insertions iterate in the same order in every run and
+/// process, so cutting and meshing are deterministic (std's `RandomState` seeds every map anew,
+/// and an iteration order that varies made the same scene mesh differently from run to run).
+pub(crate) type Map<K, V> = std::collections::HashMap<K, V, FixedHasher>;
+/// A hash set with a fixed hasher (see `Map`).
+pub(crate) type Set<K> = std::collections::HashSet<K, FixedHasher>;
+/// SipHash with fixed keys.
+pub(crate) type FixedHasher =
+    std::hash::BuildHasherDefault<std::collections::hash_map::DefaultHasher>;

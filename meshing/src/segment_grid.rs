@@ -4,7 +4,7 @@
 //! region 17 s). A segment is entered only in the cells its band of half-width `tol` covers, so a
 //! long diagonal segment costs cells in proportion to its length, not to its bounding box's area.
 
-use std::collections::HashMap;
+use crate::Map;
 
 use crate::geometry::Point;
 use crate::joints::Segment;
@@ -15,7 +15,7 @@ pub struct SegmentGrid {
     cell: f64,
     /// Half-width of each segment's band, m.
     tol: f64,
-    cells: HashMap<(i64, i64), Vec<u32>>,
+    cells: Map<(i64, i64), Vec<u32>>,
     /// Each segment's end points, m.
     ends: Vec<[Point; 2]>,
 }
@@ -34,10 +34,10 @@ impl SegmentGrid {
         let mut grid = SegmentGrid {
             cell,
             tol,
-            cells: HashMap::new(),
+            cells: Map::default(),
             ends: segs.iter().map(|s| [s.a, s.b]).collect(),
         };
-        let mut cells = HashMap::<(i64, i64), Vec<u32>>::new();
+        let mut cells = Map::<(i64, i64), Vec<u32>>::default();
         for i in 0..segs.len() {
             grid.each_cell(i, |c| cells.entry(c).or_default().push(i as u32));
         }

@@ -6,7 +6,7 @@
 //! spade's Ruppert refinement (angle limit, global maximum area from h_far, outer faces excluded)
 //! fills the rest; see the meshing note of `design.md`.
 
-use std::collections::{HashMap, HashSet};
+use crate::{Map, Set};
 
 use spade::{
     AngleLimit, ConstrainedDelaunayTriangulation, Point2, RefinementParameters, Triangulation,
@@ -140,7 +140,7 @@ fn ring_constraints(
 ) -> (Vec<Point2<f64>>, Vec<[usize; 2]>) {
     let key = |p: Point| (p[0].to_bits(), p[1].to_bits());
     let mut vertices: Vec<Point2<f64>> = Vec::new();
-    let mut index: HashMap<(u64, u64), usize> = HashMap::new();
+    let mut index: Map<(u64, u64), usize> = Map::default();
     let mut vertex = |p: Point, vertices: &mut Vec<Point2<f64>>| {
         // +0.0 for −0.0, so the two zeros are one key.
         let p = [p[0] + 0.0, p[1] + 0.0];
@@ -151,8 +151,8 @@ fn ring_constraints(
     };
     // Split points of each undirected ring edge, in the direction of the ring that met it first.
     type Key = (u64, u64);
-    let mut splits: HashMap<(Key, Key), (Key, Vec<usize>)> = HashMap::new();
-    let mut edges: HashSet<[usize; 2]> = HashSet::new();
+    let mut splits: Map<(Key, Key), (Key, Vec<usize>)> = Map::default();
+    let mut edges: Set<[usize; 2]> = Set::default();
     let mut ordered: Vec<[usize; 2]> = Vec::new();
     // A hole of no area is a joint piece ending inside the block, absorbed (both its faces are
     // the block's): constrained, its single edge would flip spade's inside/outside parity.
@@ -414,7 +414,7 @@ fn triangulate_once(
             "refinement did not complete within {budget} added vertices; coarsen the zoning or lower the minimum angle"
         )));
     }
-    let excluded: HashSet<_> = result.excluded_faces.iter().copied().collect();
+    let excluded: Set<_> = result.excluded_faces.iter().copied().collect();
     let in_block = |p: Point| block.outer.contains(p) && !block.holes.iter().any(|h| h.contains(p));
     let mut tris: Vec<[usize; 3]> = cdt
         .inner_faces()
@@ -555,7 +555,7 @@ fn label_boundary(
     points: &[Point],
     triangles: &[[u32; 3]],
 ) -> Result<Vec<BoundaryEdge>, MeshError> {
-    let mut count: HashMap<(u32, u32), (u32, [u32; 2])> = HashMap::new();
+    let mut count: Map<(u32, u32), (u32, [u32; 2])> = Map::default();
     for t in triangles {
         for k in 0..3 {
             let (a, b) = (t[k], t[(k + 1) % 3]);

@@ -97,7 +97,7 @@ pub fn voronoi_segments(
         sum[r][1] += c.y;
         sum[r][2] += 1.0;
     }
-    let mut seen = std::collections::HashSet::new();
+    let mut seen = crate::Set::default();
     let mut out = Vec::new();
     for (ia, ib) in edges {
         let (ra, rb) = (root(&mut parent, ia), root(&mut parent, ib));
