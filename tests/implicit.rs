@@ -221,3 +221,27 @@ fn implicit_stages_give_the_explicit_closures() {
         }
     }
 }
+
+/// A block nothing holds (no fixed node, no contact) is a mechanism: the implicit stage stops
+/// naming it before factorizing, instead of reporting a singular matrix or a convergence.
+#[test]
+fn implicit_names_a_block_nothing_holds() {
+    let text = r#"{
+        "name": "loose",
+        "materials": { "rock": { "density": 2500, "young": 10e9, "poisson": 0.25 } },
+        "region": { "polygon": [[0, 0], [1, 0], [1, 1], [0, 1]], "material": "rock" },
+        "zoning": { "edge_at_excavation": 0.5, "edge_far": 0.5 },
+        "boundary": [ { "part": "outer", "normal_stress": -1e6 } ],
+        "solve": { "method": "implicit" }
+    }"#;
+    let r = run(
+        &Scene::from_json(text, "loose").unwrap(),
+        "adit-test-implicit-loose",
+    );
+    assert_eq!(r.summary.status, "failed");
+    let reason = r.summary.reason.unwrap();
+    assert!(
+        reason.contains("1 block(s) held by nothing") && reason.contains("(block 0)"),
+        "{reason}"
+    );
+}

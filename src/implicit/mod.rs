@@ -17,6 +17,7 @@
 //! blocks, bolts and liners, the mixed and large-strain zone schemes.
 
 pub mod assemble;
+mod support;
 
 use std::time::Instant;
 
@@ -147,6 +148,25 @@ pub fn solve(
     observer: &mut dyn Observer,
 ) -> (Solution, Cost) {
     let mut cost = Cost::default();
+    let loose = support::unsupported_blocks(model);
+    if !loose.is_empty() {
+        let names: Vec<String> = loose.iter().take(10).map(|b| b.to_string()).collect();
+        let reason = format!(
+            "implicit: {} block(s) held by nothing, neither a fixed node nor a chain of contacts \
+             to one (block {}{}): a mechanism the matrix cannot solve; fix them in `boundary`, or \
+             solve explicitly",
+            loose.len(),
+            names.join(", "),
+            if loose.len() > 10 { ", …" } else { "" }
+        );
+        let solution = Solution {
+            status: Status::Failed(reason),
+            cycles: 0,
+            history: vec![],
+            final_ratio: f64::NAN,
+        };
+        return (solution, cost);
+    }
     let dofs = Dofs::of(&model.nodes);
     cost.unknowns = dofs.count;
     let mut factor = factorize(model, &dofs, &mut cost);
