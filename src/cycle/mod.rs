@@ -98,6 +98,13 @@ pub struct StageSeconds {
     pub supports: f64,
     pub motion: f64,
     pub output: f64,
+    /// Implicit solves: assembling, factorizing and iterating (absent when none ran).
+    #[serde(skip_serializing_if = "is_zero")]
+    pub implicit: f64,
+}
+
+fn is_zero(x: &f64) -> bool {
+    *x == 0.0
 }
 
 /// Scratch space and timers of the cycle.
