@@ -17,19 +17,17 @@
 //! blocks, bolts and liners, the mixed and large-strain zone schemes.
 
 pub mod assemble;
+mod factor;
 mod support;
 
 use std::time::Instant;
-
-use faer::Side;
-use faer::linalg::solvers::Solve;
-use faer::sparse::linalg::solvers::{Llt, SymbolicLlt};
 
 use crate::cycle::{Cycle, CycleParams, ZoneScheme};
 use crate::model::Model;
 use crate::scene::{SolveMethod, SolveMode};
 use crate::solve::{HistoryRow, Observer, Solution, Status};
 use assemble::{Dofs, FIXED, stiffness};
+use factor::Factor;
 
 /// Why the implicit path cannot solve `model` as it is, or `None` if it can.
 pub fn unsupported(model: &Model, scheme: ZoneScheme) -> Option<&'static str> {
@@ -57,6 +55,8 @@ pub struct Cost {
     pub unknowns: usize,
     /// Non-zeros stored of the stiffness matrix (its lower triangle).
     pub matrix_nonzeros: usize,
+    /// Non-zeros of the Cholesky factor L (8 bytes of value each, with their row indices).
+    pub factor_nonzeros: usize,
     pub factorizations: u64,
     pub iterations: u64,
     /// Seconds assembling, factorizing, and iterating (residuals, solves, zone updates).
@@ -71,6 +71,7 @@ impl Cost {
         Cost {
             unknowns: self.unknowns.max(o.unknowns),
             matrix_nonzeros: self.matrix_nonzeros.max(o.matrix_nonzeros),
+            factor_nonzeros: self.factor_nonzeros.max(o.factor_nonzeros),
             factorizations: self.factorizations + o.factorizations,
             iterations: self.iterations + o.iterations,
             assemble_s: self.assemble_s + o.assemble_s,
@@ -114,20 +115,19 @@ pub fn method(
 
 /// The model's stiffness over `dofs`, factorized; an error in words when it is not positive
 /// definite.
-fn factorize(model: &Model, dofs: &Dofs, cost: &mut Cost) -> Result<Llt<usize, f64>, String> {
+fn factorize(model: &Model, dofs: &Dofs, cost: &mut Cost) -> Result<Factor, String> {
     let t = Instant::now();
     let k = stiffness(model, dofs)
         .map_err(|e| format!("implicit: the stiffness could not be assembled ({e:?})"))?;
     cost.assemble_s += t.elapsed().as_secs_f64();
     cost.matrix_nonzeros = cost.matrix_nonzeros.max(k.compute_nnz());
     let t = Instant::now();
-    let factor = SymbolicLlt::try_new(k.symbolic(), Side::Lower)
-        .map_err(|e| format!("{e:?}"))
-        .and_then(|sym| {
-            Llt::try_new_with_symbolic(sym, k.as_ref(), Side::Lower).map_err(|e| format!("{e:?}"))
-        });
+    let factor = Factor::new(k.as_ref());
     cost.factorize_s += t.elapsed().as_secs_f64();
     cost.factorizations += 1;
+    if let Ok(f) = &factor {
+        cost.factor_nonzeros = cost.factor_nonzeros.max(f.nonzeros());
+    }
     factor.map_err(|e| {
         format!(
             "implicit: the stiffness is not positive definite ({e}): a part of the model is free \
@@ -177,7 +177,7 @@ pub fn solve(
     let mut iteration = 0u64;
     let mut detections = cycle.detections();
     let status = loop {
-        let llt = match &factor {
+        let llt = match &mut factor {
             Ok(llt) => llt,
             Err(reason) => break Status::Failed(reason.clone()),
         };
@@ -210,7 +210,7 @@ pub fn solve(
                 }
             }
         }
-        llt.solve_in_place(faer::ColMut::from_slice_mut(&mut rhs));
+        llt.solve_in_place(&mut rhs);
         for (n, eq) in dofs.of_node.iter().enumerate() {
             du[n] = std::array::from_fn(|d| {
                 if eq[d] == FIXED {
