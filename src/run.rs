@@ -3,14 +3,14 @@
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-use crate::cycle::Cycle;
+use crate::cycle::{Cycle, ZoneScheme};
 use crate::implicit::{self, Method};
 use crate::model::Model;
 use crate::model::bodies::BodyMode;
 use crate::output::{OutputWriter, StageSummary, Summary, measured};
 use crate::scene::Scene;
 use crate::scene::SolveMethod;
-use crate::setup::{Setup, setup};
+use crate::setup::{Plan, Setup, setup};
 use crate::solve::{HistoryRow, Observer, Solution, Solver, Status};
 use crate::stage::Staging;
 
@@ -90,6 +90,24 @@ pub fn run_scene(
     result
 }
 
+/// The path stage `i` of `plan` takes on `model`; an error naming the field when it asks the
+/// implicit path of a model that path cannot solve. The model's features it depends on (blocks,
+/// bodies, supports, zoning) are set up once, so the answer holds from the start of the run.
+fn stage_method(plan: &Plan, i: usize, model: &Model) -> anyhow::Result<Method> {
+    let spec = &plan.stages[i].solve;
+    let scheme = ZoneScheme::of(model, spec.large_strain);
+    implicit::method(spec.method, spec.mode, model, scheme).map_err(|reason| {
+        let field = if plan.staged {
+            format!("stages[{i}].solve.method (or the scene's solve.method)")
+        } else {
+            "solve.method".to_string()
+        };
+        anyhow::anyhow!(
+            "{field}: implicit cannot solve this model: {reason}; use \"explicit\" or \"auto\""
+        )
+    })
+}
+
 /// [`run_scene`] once its folder is open.
 fn build_solve_write(
     scene: &Scene,
@@ -104,21 +122,17 @@ fn build_solve_write(
     let mut seconds = crate::cycle::StageSeconds::default();
     let mut stage_summaries = Vec::new();
     let mut last: Option<(Solver, Solution)> = None;
+    // A stage asking the implicit path of a model it cannot solve is refused before any solve.
+    for i in 0..plan.stages.len() {
+        stage_method(plan, i, model)?;
+    }
     let (mut methods, mut implicit_cost) = (Vec::new(), None::<implicit::Cost>);
     for (i, stage) in plan.stages.iter().enumerate() {
         staging.apply(stage, model, plan);
         let mut solver = Solver::new(model, &stage.solve, scene.output.every);
         ensure_time_step(&solver)?;
         let spec = &stage.solve;
-        let method = implicit::method(spec.method, spec.mode, model, solver.params.scheme)
-            .map_err(|reason| {
-                let field = if plan.staged {
-                    format!("stages[{i}].solve.method (or the scene's solve.method)")
-                } else {
-                    "solve.method".to_string()
-                };
-                anyhow::anyhow!("{field}: implicit cannot solve this model: {reason}; use \"explicit\" or \"auto\"")
-            })?;
+        let method = stage_method(plan, i, model)?;
         let mut writing = Writing {
             writer,
             inner: observer,

@@ -245,3 +245,35 @@ fn implicit_names_a_block_nothing_holds() {
         "{reason}"
     );
 }
+
+/// A later stage asking the implicit path of a model it cannot solve (rigid blocks) is refused
+/// before the first stage solves: no output step is written.
+#[test]
+fn a_later_implicit_stage_is_refused_before_any_solve() {
+    let text = r#"{
+        "name": "staged_rigid",
+        "materials": { "rock": { "density": 2500, "young": 10e9, "poisson": 0.25 } },
+        "joint_materials": { "j": { "normal_stiffness": 1e11, "shear_stiffness": 1e11 } },
+        "region": { "polygon": [[0, 0], [2, 0], [2, 2], [0, 2]], "material": "rock",
+                     "edge_names": ["bottom", "right", "top", "left"] },
+        "joints": [{ "from": [-1, 1], "to": [3, 1], "material": "j" }],
+        "blocks": { "mode": "rigid" },
+        "zoning": { "edge_at_excavation": 0.5, "edge_far": 0.5 },
+        "boundary": [ { "part": "bottom", "fix": "xy" }, { "part": "top", "normal_stress": -1e6 } ],
+        "solve": { "max_cycles": 2000 },
+        "stages": [ { "name": "settle" },
+                    { "name": "again", "solve": { "method": "implicit" } } ]
+    }"#;
+    let out = std::env::temp_dir().join("adit-test-implicit-later-stage");
+    let _ = std::fs::remove_dir_all(&out);
+    let sc = Scene::from_json(text, "staged_rigid").unwrap();
+    let msg = adit::run_scene(&sc, &out, &mut Quiet)
+        .err()
+        .unwrap()
+        .to_string();
+    assert!(
+        msg.starts_with("stages[1].solve.method (or the scene's solve.method): implicit cannot"),
+        "{msg}"
+    );
+    assert!(!out.join("staged_rigid_zones_0000.vtu").exists());
+}

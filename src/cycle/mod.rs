@@ -18,7 +18,8 @@ use crate::contact::detect::Detection;
 use crate::damping::local_damping;
 use crate::law::StrainIncrement;
 use crate::law::ZoneLaw;
-use crate::model::{BODY, FIX_X, FIX_Y, Gather, Model, Nodes, Stress, Zones};
+use crate::model::blocks::Blocks;
+use crate::model::{BODY, Contacts, FIX_X, FIX_Y, Gather, Materials, Model, Nodes, Stress, Zones};
 use crate::support::Supports;
 
 pub use monitor::Monitor;
@@ -190,17 +191,7 @@ impl Cycle {
         } = model;
         let (laws, joint_laws) = (&materials.zone, &materials.joint);
         let t0 = Instant::now();
-        if blocks.len() > 1 && self.moved > 0.5 * *contact_tolerance {
-            let x = nodes.current();
-            let d = Detection {
-                blocks,
-                x: &x,
-                tolerance: *contact_tolerance,
-                joint_material: &materials.feature,
-                hole_material: &materials.hole,
-            };
-            self.detect(&d, contacts);
-        }
+        self.detect_when_moved(nodes, blocks, contacts, materials, *contact_tolerance);
         let t1 = Instant::now();
         self.contact_forces(nodes, blocks, contacts, joint_laws, p);
         let t2 = Instant::now();
@@ -300,12 +291,25 @@ impl Cycle {
         }
         nodes.vel.iter_mut().for_each(|v| *v = [0.0; 2]);
         self.moved += largest;
-        if blocks.len() > 1 && self.moved > 0.5 * *contact_tolerance {
+        self.detect_when_moved(nodes, blocks, contacts, materials, *contact_tolerance);
+    }
+
+    /// The detect stage, when any node may have moved half the contact `tolerance` (m) since the
+    /// last detection (and there are blocks to touch).
+    fn detect_when_moved(
+        &mut self,
+        nodes: &Nodes,
+        blocks: &Blocks,
+        contacts: &mut Contacts,
+        materials: &Materials,
+        tolerance: f64,
+    ) {
+        if blocks.len() > 1 && self.moved > 0.5 * tolerance {
             let x = nodes.current();
             let d = Detection {
                 blocks,
                 x: &x,
-                tolerance: *contact_tolerance,
+                tolerance,
                 joint_material: &materials.feature,
                 hole_material: &materials.hole,
             };

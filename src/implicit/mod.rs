@@ -148,28 +148,23 @@ pub fn solve(
     observer: &mut dyn Observer,
 ) -> (Solution, Cost) {
     let mut cost = Cost::default();
+    let dofs = Dofs::of(&model.nodes);
+    cost.unknowns = dofs.count;
     let loose = support::unsupported_blocks(model);
-    if !loose.is_empty() {
+    // A block nothing holds is named before any factorization: the stage fails as a mechanism.
+    let mut factor = if loose.is_empty() {
+        factorize(model, &dofs, &mut cost)
+    } else {
         let names: Vec<String> = loose.iter().take(10).map(|b| b.to_string()).collect();
-        let reason = format!(
+        Err(format!(
             "implicit: {} block(s) held by nothing, neither a fixed node nor a chain of contacts \
              to one (block {}{}): a mechanism the matrix cannot solve; fix them in `boundary`, or \
              solve explicitly",
             loose.len(),
             names.join(", "),
             if loose.len() > 10 { ", …" } else { "" }
-        );
-        let solution = Solution {
-            status: Status::Failed(reason),
-            cycles: 0,
-            history: vec![],
-            final_ratio: f64::NAN,
-        };
-        return (solution, cost);
-    }
-    let dofs = Dofs::of(&model.nodes);
-    cost.unknowns = dofs.count;
-    let mut factor = factorize(model, &dofs, &mut cost);
+        ))
+    };
     let (t, before) = (Instant::now(), cost.assemble_s + cost.factorize_s);
     let mut history = Vec::new();
     let mut rhs = vec![0.0; dofs.count];
