@@ -381,24 +381,28 @@ fn triangulate_once(
     budget: Option<usize>,
     by_centroid: bool,
 ) -> Result<TriMesh, MeshError> {
-    // Crossing constraint edges (a degenerate block ring) are reported, not a panic in spade.
-    let mut conflict = None;
-    let mut cdt =
-        ConstrainedDelaunayTriangulation::<Point2<f64>>::try_bulk_load_cdt(vertices, edges, |e| {
-            conflict.get_or_insert(e);
-        })
-        .map_err(|e| MeshError::Triangulation(format!("{e:?}")))?;
-    if let Some([a, b]) = conflict {
-        let position = |v: usize| {
-            cdt.vertices()
-                .nth(v)
-                .map(|h| [h.position().x, h.position().y])
+    // Vertices inserted one by one, then the ring edges in their given order: the triangulation
+    // depends on the input alone. (spade's bulk load re-inserts the vertices and edges its sweep
+    // skipped in a std HashSet's order, seeded per process, so the same block meshed twice could
+    // differ.) Crossing constraint edges (a degenerate block ring) are reported, not a panic.
+    let mut cdt = ConstrainedDelaunayTriangulation::<Point2<f64>>::new();
+    let mut handles = Vec::with_capacity(vertices.len());
+    for v in vertices {
+        let handle = cdt
+            .insert(v)
+            .map_err(|e| MeshError::Triangulation(format!("{e:?}")))?;
+        handles.push(handle);
+    }
+    for [a, b] in edges {
+        let (ha, hb) = (handles[a], handles[b]);
+        if ha == hb || !cdt.try_add_constraint(ha, hb).is_empty() {
+            continue;
+        }
+        let position = |h| {
+            let p = cdt.vertex(h).position();
+            [p.x, p.y]
         };
-        let (Some(pa), Some(pb)) = (position(a), position(b)) else {
-            return Err(MeshError::Triangulation(
-                "block boundary crosses itself".into(),
-            ));
-        };
+        let (pa, pb) = (position(ha), position(hb));
         return Err(MeshError::Crossing {
             message: format!(
                 "block boundary crosses itself between ({:.4}, {:.4}) and ({:.4}, {:.4}) m; joints \

@@ -638,6 +638,17 @@ pub enum SolveMethod {
     Auto,
 }
 
+impl SolveMethod {
+    /// The method as a scene spells it.
+    pub fn name(self) -> &'static str {
+        match self {
+            SolveMethod::Explicit => "explicit",
+            SolveMethod::Implicit => "implicit",
+            SolveMethod::Auto => "auto",
+        }
+    }
+}
+
 /// Rayleigh damping (UDEC's `damping rayleigh`): a viscous force −α_R m v at every mass and a
 /// viscous stress β_R σ̇ on top of every zone's, simple block's and loaded contact's elastic one,
 /// so that a mode of angular frequency ω is damped at the fraction of critical

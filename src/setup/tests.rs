@@ -56,15 +56,29 @@ fn tractions_of_a_uniform_stress_balance_on_a_closed_boundary() {
         fx.abs() < 1e-6 && fy.abs() < 1e-6 && m.abs() < 1e-5,
         "{fx} {fy} {m}"
     );
-    // The traction on the top edge (n = +y) is (σxy, σyy) over 10 m.
-    let top: f64 = b.plan.boundary.part_nodes["edge2"]
+    // The traction on the top edge (n = +y) is (σxy, σyy) over 10 m; its corner nodes also carry
+    // half of the first segment of each side edge, whose traction's y part is σxy·nx
+    // (nx = +1 on the right edge, −1 on the left).
+    let pos = &b.model.nodes.pos;
+    let nodes = |part: &str| b.plan.boundary.part_nodes[part].clone();
+    let first_segment = |part: &str, corner: [f64; 2]| {
+        nodes(part)
+            .iter()
+            .map(|&n| pos[n as usize])
+            .map(|p| (p[0] - corner[0]).hypot(p[1] - corner[1]))
+            .filter(|&d| d > 1e-9)
+            .fold(f64::INFINITY, f64::min)
+    };
+    let (right, left) = (
+        first_segment("edge1", [10.0, 10.0]),
+        first_segment("edge3", [0.0, 10.0]),
+    );
+    let top: f64 = nodes("edge2")
         .iter()
         .map(|&n| b.model.nodes.applied[n as usize][1])
         .sum();
-    assert!(
-        (top - (-2e6 * 10.0 - 1e6 * 0.0)).abs() < 1e-3 * 2e7,
-        "{top}"
-    );
+    let expected = -2e6 * 10.0 + 5e5 * (right - left) / 2.0;
+    assert!((top - expected).abs() < 1e-9 * 2e7, "{top} {expected}");
 }
 
 #[test]

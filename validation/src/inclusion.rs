@@ -21,7 +21,7 @@ use std::time::Instant;
 use adit::Scene;
 use adit::scene::{Circle, Inclusion as InclusionSpec, Material};
 use adit::setup::setup;
-use adit::solve::{Quiet, Solver, Status};
+use adit::solve::Status;
 use serde::Serialize;
 
 use crate::kirsch_case::load_outer_exactly;
@@ -134,8 +134,13 @@ pub struct InclusionResult {
 
 impl InclusionResult {
     pub fn report(&self) -> CaseReport {
+        // A run that stopped short of the ratio says so in its row.
+        let case = match self.status.as_str() {
+            "converged" => self.case.clone(),
+            status => format!("{} ({status})", self.case),
+        };
         CaseReport::new(
-            self.case.clone(),
+            case,
             self.zones,
             self.cycles,
             self.wall_s,
@@ -151,8 +156,8 @@ impl InclusionResult {
 }
 
 /// The Kirsch scene with its hole turned into an inclusion `contrast` times as stiff as the rock
-/// (same ν), loaded from zero stress by the far field of the scene's in-situ stress, solved to an
-/// unbalanced-force ratio of 1e-5.
+/// (same ν), loaded from zero stress by the far field of the scene's in-situ stress, solved (by the
+/// scene's `solve.method`) to an unbalanced-force ratio of 1e-5.
 pub fn scene(kirsch: &Scene, contrast: f64) -> Scene {
     let mut s = kirsch.clone();
     // The stiff inclusion's heavy (mass-scaled) nodes converge slowly: a looser ratio, more cycles.
@@ -189,8 +194,7 @@ pub fn run(scene: &Scene, case: &str) -> anyhow::Result<InclusionResult> {
     let start = Instant::now();
     let mut built = setup(&s)?;
     load_outer_exactly(&mut built, |x, y| exact.stress(x, y));
-    let mut solver = Solver::new(&mut built.model, &s.solve, 0);
-    let solution = solver.solve(&mut built.model, &mut Quiet);
+    let (solver, solution) = crate::solve_by_method(&mut built.model, &s.solve);
     let wall_s = start.elapsed().as_secs_f64();
     if let Status::Failed(reason) = &solution.status {
         anyhow::bail!("{case}: run failed: {reason}");
@@ -265,6 +269,7 @@ mod tests {
     use super::*;
     use crate::kirsch::Kirsch;
     use crate::kirsch_case::scaled;
+    use adit::scene::SolveMethod;
 
     fn problem(contrast: f64) -> Inclusion {
         let rock = Elastic {
@@ -334,13 +339,17 @@ mod tests {
         }
     }
 
-    /// Coarse twins of the report's inclusions: 1000× softer and 1000× stiffer than the rock, on
-    /// the Kirsch mesh at twice its zone size.
+    /// Coarse twins of the report's inclusions: 1000× softer (explicit) and 1000× stiffer (implicit;
+    /// explicit relaxation of the stiff one takes 10⁴–10⁵ cycles and on some meshes stalls just
+    /// above the ratio; the report shows both methods) than the rock, on the Kirsch mesh at twice
+    /// its zone size.
     #[test]
     fn soft_and_stiff_inclusions_coarse() {
         let kirsch = scaled(&crate::shipped_kirsch().unwrap(), 2.0);
-        for contrast in [1e-3, 1e3] {
-            let r = run(&scene(&kirsch, contrast), &format!("inclusion ×{contrast}")).unwrap();
+        for (contrast, method) in [(1e-3, SolveMethod::Explicit), (1e3, SolveMethod::Implicit)] {
+            let mut s = scene(&kirsch, contrast);
+            s.solve.method = method;
+            let r = run(&s, &format!("inclusion ×{contrast}")).unwrap();
             eprintln!("{r:?}");
             assert_eq!(r.status, "converged");
             assert!(r.stress_l2 < 0.05, "stress L2 {}", r.stress_l2);

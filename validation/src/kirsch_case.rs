@@ -5,9 +5,8 @@ use std::time::Instant;
 
 use adit::Scene;
 use adit::model::traction;
-use adit::scene::SolveMethod;
 use adit::setup::{Setup, add_tractions, setup};
-use adit::solve::{Quiet, Solver, Status};
+use adit::solve::Status;
 use adit_meshing::EdgeKind;
 use serde::Serialize;
 
@@ -126,21 +125,7 @@ pub fn run(scene: &Scene, case: &str, load: OuterLoad) -> anyhow::Result<KirschR
     if load == OuterLoad::Exact {
         load_outer_exactly(&mut built, |x, y| exact.stress(x, y));
     }
-    let mut solver = Solver::new(&mut built.model, &scene.solve, 0);
-    let solution = if scene.solve.method == SolveMethod::Implicit {
-        let spec = &scene.solve;
-        let (solution, _) = adit::implicit::solve(
-            &mut built.model,
-            &mut solver.cycle,
-            &solver.params,
-            spec.ratio,
-            spec.max_iterations,
-            &mut Quiet,
-        );
-        solution
-    } else {
-        solver.solve(&mut built.model, &mut Quiet)
-    };
+    let (solver, solution) = crate::solve_by_method(&mut built.model, &scene.solve);
     let wall_s = start.elapsed().as_secs_f64();
     if let Status::Failed(reason) = &solution.status {
         anyhow::bail!("{case}: run failed: {reason}");

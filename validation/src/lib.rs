@@ -74,6 +74,27 @@ pub fn settle(model: &mut Model, spec: &SolveSpec, what: &str) -> anyhow::Result
     Ok((solver, sol.cycles))
 }
 
+/// Solve `model` statically by the method `spec` names (`solve.method`: `implicit`, else explicit
+/// cycling), to its ratio, from a fresh solver; returns the solver (masses, step and timings) and
+/// the solution.
+pub fn solve_by_method(model: &mut Model, spec: &SolveSpec) -> (Solver, adit::solve::Solution) {
+    let mut solver = Solver::new(model, spec, 0);
+    let solution = if spec.method == adit::scene::SolveMethod::Implicit {
+        let (solution, _) = adit::implicit::solve(
+            model,
+            &mut solver.cycle,
+            &solver.params,
+            spec.ratio,
+            spec.max_iterations,
+            &mut Quiet,
+        );
+        solution
+    } else {
+        solver.solve(model, &mut Quiet)
+    };
+    (solver, solution)
+}
+
 /// Radial displacement of each of `nodes` about the origin, m (outward positive).
 pub fn radial_displacements<'a>(
     model: &'a Model,
