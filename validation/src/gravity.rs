@@ -8,7 +8,9 @@
 use std::time::Instant;
 
 use adit::Scene;
+use adit::scene::SolveMethod;
 use adit::setup::setup;
+use adit::solve::Status;
 
 use crate::report::CaseReport;
 use crate::settle;
@@ -51,10 +53,22 @@ fn column_scene(h: f64, in_situ: bool) -> Scene {
 /// Self-weight of a confined column: relative L2 error of σyy over zones and largest settlement
 /// error over nodes relative to the top settlement.
 pub fn self_weight(h: f64) -> anyhow::Result<CaseReport> {
+    self_weight_by(h, SolveMethod::Explicit)
+}
+
+/// [`self_weight`] solved by `method` (`solve.method`); the row's case names it unless explicit.
+pub fn self_weight_by(h: f64, method: SolveMethod) -> anyhow::Result<CaseReport> {
     let start = Instant::now();
-    let scene = column_scene(h, false);
+    let mut scene = column_scene(h, false);
+    scene.solve.method = method;
     let mut b = setup(&scene)?;
-    let (_, cycles) = settle(&mut b.model, &scene.solve, "column")?;
+    let (_, solution, implicit) = crate::solve_by_method(&mut b.model, &scene.solve);
+    anyhow::ensure!(
+        solution.status == Status::Converged,
+        "column did not converge: {:?}",
+        solution.status
+    );
+    let cycles = solution.cycles;
     let m = crate::constrained_modulus(YOUNG, POISSON);
     let model = &b.model;
     let (mut num, mut den) = (0.0, 0.0);
@@ -73,14 +87,14 @@ pub fn self_weight(h: f64) -> anyhow::Result<CaseReport> {
         / top;
     let wall_s = start.elapsed().as_secs_f64();
     let errors = [("stress_l2", (num / den).sqrt()), ("settlement", du)];
-    Ok(CaseReport::new(
-        "gravity: confined column self-weight",
-        model.zones.len(),
-        cycles,
-        wall_s,
-        Some(h),
-        &errors,
-    ))
+    let case = match method {
+        SolveMethod::Explicit => "gravity: confined column self-weight".to_string(),
+        _ => format!("gravity: confined column self-weight, {}", method.name()),
+    };
+    Ok(
+        CaseReport::new(case, model.zones.len(), cycles, wall_s, Some(h), &errors)
+            .with_implicit(implicit),
+    )
 }
 
 /// In-situ stress with the gravity gradient: the model must stay at rest. Error: largest

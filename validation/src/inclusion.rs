@@ -130,6 +130,8 @@ pub struct InclusionResult {
     pub inside_exact: [f64; 2],
     pub step: StepInfo,
     pub status: String,
+    /// What the implicit solve cost, when it ran.
+    pub implicit: Option<adit::implicit::Cost>,
 }
 
 impl InclusionResult {
@@ -152,6 +154,7 @@ impl InclusionResult {
             ],
         )
         .with_step(self.step.clone())
+        .with_implicit(self.implicit)
     }
 }
 
@@ -194,7 +197,7 @@ pub fn run(scene: &Scene, case: &str) -> anyhow::Result<InclusionResult> {
     let start = Instant::now();
     let mut built = setup(&s)?;
     load_outer_exactly(&mut built, |x, y| exact.stress(x, y));
-    let (solver, solution) = crate::solve_by_method(&mut built.model, &s.solve);
+    let (solver, solution, implicit) = crate::solve_by_method(&mut built.model, &s.solve);
     let wall_s = start.elapsed().as_secs_f64();
     if let Status::Failed(reason) = &solution.status {
         anyhow::bail!("{case}: run failed: {reason}");
@@ -261,6 +264,7 @@ pub fn run(scene: &Scene, case: &str) -> anyhow::Result<InclusionResult> {
         inside_exact: [e_in[0], e_in[1]],
         step: StepInfo::of(&solver),
         status: solution.status.label().to_string(),
+        implicit,
     })
 }
 

@@ -11,6 +11,7 @@
 use std::time::Instant;
 
 use adit::Scene;
+use adit::scene::SolveMethod;
 use adit::solve::Quiet;
 
 use crate::kirsch_case::{self, KirschResult};
@@ -48,8 +49,14 @@ fn cylinder(nu: f64, mixed: bool, edge: f64) -> anyhow::Result<Scene> {
 
 /// Solve and compare the mean radial displacement of the bore (`bore_displacement`).
 pub fn run(nu: f64, mixed: bool, edge: f64) -> anyhow::Result<CaseReport> {
+    run_by(nu, mixed, edge, SolveMethod::Explicit)
+}
+
+/// [`run`] solved by `method` (`solve.method`); the row's case names it unless explicit.
+pub fn run_by(nu: f64, mixed: bool, edge: f64, method: SolveMethod) -> anyhow::Result<CaseReport> {
     let start = Instant::now();
-    let sc = cylinder(nu, mixed, edge)?;
+    let mut sc = cylinder(nu, mixed, edge)?;
+    sc.solve.method = method;
     let dir = crate::repository_root().join(format!("target/validation/lame_{nu}_{mixed}"));
     let r = adit::run_scene(&sc, &dir, &mut Quiet)?;
     anyhow::ensure!(
@@ -62,8 +69,12 @@ pub fn run(nu: f64, mixed: bool, edge: f64) -> anyhow::Result<CaseReport> {
     let exact = lame(1.0, nu);
     Ok(CaseReport::new(
         format!(
-            "Lamé cylinder, ν = {nu}, {} triangles",
-            if mixed { "mixed" } else { "plain" }
+            "Lamé cylinder, ν = {nu}, {} triangles{}",
+            if mixed { "mixed" } else { "plain" },
+            match method {
+                SolveMethod::Explicit => String::new(),
+                _ => format!(", {}", method.name()),
+            }
         ),
         r.summary.zones,
         r.summary.cycles,
@@ -71,7 +82,8 @@ pub fn run(nu: f64, mixed: bool, edge: f64) -> anyhow::Result<CaseReport> {
         Some(edge),
         &[("bore_displacement", (u - exact).abs() / exact)],
     )
-    .with_step(StepInfo::from_summary(&r.summary)))
+    .with_step(StepInfo::from_summary(&r.summary))
+    .with_implicit(r.summary.implicit))
 }
 
 /// The shipped Kirsch model at zone size × `factor`, Poisson's ratio `nu`, plain or mixed zones,

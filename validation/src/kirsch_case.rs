@@ -32,6 +32,8 @@ pub struct KirschResult {
     pub h: f64,
     pub step: StepInfo,
     pub status: String,
+    /// What the implicit solve cost, when it ran.
+    pub implicit: Option<adit::implicit::Cost>,
 }
 
 /// The closed form matching a scene: first excavation (a circle at the origin), region material,
@@ -86,6 +88,7 @@ impl KirschResult {
             &errors,
         )
         .with_step(self.step.clone())
+        .with_implicit(self.implicit)
     }
 }
 
@@ -125,7 +128,7 @@ pub fn run(scene: &Scene, case: &str, load: OuterLoad) -> anyhow::Result<KirschR
     if load == OuterLoad::Exact {
         load_outer_exactly(&mut built, |x, y| exact.stress(x, y));
     }
-    let (solver, solution) = crate::solve_by_method(&mut built.model, &scene.solve);
+    let (solver, solution, implicit) = crate::solve_by_method(&mut built.model, &scene.solve);
     let wall_s = start.elapsed().as_secs_f64();
     if let Status::Failed(reason) = &solution.status {
         anyhow::bail!("{case}: run failed: {reason}");
@@ -169,6 +172,7 @@ pub fn run(scene: &Scene, case: &str, load: OuterLoad) -> anyhow::Result<KirschR
         h: (area / count as f64).sqrt(),
         step: StepInfo::of(&solver),
         status: solution.status.label().to_string(),
+        implicit,
     })
 }
 

@@ -75,12 +75,15 @@ pub fn settle(model: &mut Model, spec: &SolveSpec, what: &str) -> anyhow::Result
 }
 
 /// Solve `model` statically by the method `spec` names (`solve.method`: `implicit`, else explicit
-/// cycling), to its ratio, from a fresh solver; returns the solver (masses, step and timings) and
-/// the solution.
-pub fn solve_by_method(model: &mut Model, spec: &SolveSpec) -> (Solver, adit::solve::Solution) {
+/// cycling), to its ratio, from a fresh solver; returns the solver (masses, step and timings),
+/// the solution and, when the implicit solve ran, its cost.
+pub fn solve_by_method(
+    model: &mut Model,
+    spec: &SolveSpec,
+) -> (Solver, adit::solve::Solution, Option<adit::implicit::Cost>) {
     let mut solver = Solver::new(model, spec, 0);
-    let solution = if spec.method == adit::scene::SolveMethod::Implicit {
-        let (solution, _) = adit::implicit::solve(
+    let (solution, cost) = if spec.method == adit::scene::SolveMethod::Implicit {
+        let (solution, cost) = adit::implicit::solve(
             model,
             &mut solver.cycle,
             &solver.params,
@@ -88,11 +91,11 @@ pub fn solve_by_method(model: &mut Model, spec: &SolveSpec) -> (Solver, adit::so
             spec.max_iterations,
             &mut Quiet,
         );
-        solution
+        (solution, Some(cost))
     } else {
-        solver.solve(model, &mut Quiet)
+        (solver.solve(model, &mut Quiet), None)
     };
-    (solver, solution)
+    (solver, solution, cost)
 }
 
 /// Radial displacement of each of `nodes` about the origin, m (outward positive).

@@ -21,6 +21,9 @@ pub struct CaseReport {
     /// The time step and what limited it.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub step: Option<StepInfo>,
+    /// What the implicit solve cost (its iterations are the row's `cycles`), when it ran.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub implicit: Option<adit::implicit::Cost>,
 }
 
 /// A run's time step: the critical step with real masses and what set it, and the step used.
@@ -83,7 +86,14 @@ impl CaseReport {
             h,
             errors: errors.iter().map(|&(k, v)| (k.to_string(), v)).collect(),
             step: None,
+            implicit: None,
         }
+    }
+
+    /// The row with the cost of its implicit solve, if one ran.
+    pub fn with_implicit(mut self, cost: Option<adit::implicit::Cost>) -> Self {
+        self.implicit = cost;
+        self
     }
 
     /// The row with its run's time step.
