@@ -20,6 +20,7 @@ pub mod kirsch_case;
 pub mod lined;
 pub mod modes;
 pub mod patch;
+pub mod peer;
 pub mod plot;
 pub mod pullout;
 pub mod random_scenes;
