@@ -277,3 +277,48 @@ fn a_later_implicit_stage_is_refused_before_any_solve() {
     );
     assert!(!out.join("staged_rigid_zones_0000.vtu").exists());
 }
+
+/// A block sliding on a joint flatter than its friction holds (18.4° against φ = 10°): the
+/// implicit path never converges on it and, when its iterations run out, names the block that
+/// keeps moving instead of ending at the iteration limit. At φ = 30° the same block holds and
+/// the solve converges.
+#[test]
+fn implicit_names_a_sliding_block() {
+    let text = r#"{
+        "name": "slide",
+        "materials": { "rock": { "density": 2500, "young": 10e9, "poisson": 0.25 } },
+        "joint_materials": { "j": { "normal_stiffness": 1e10, "shear_stiffness": 5e9,
+                                    "friction": 10 } },
+        "region": { "polygon": [[0, 0], [4, 0], [4, 3], [0, 3]], "material": "rock",
+                     "edge_names": ["bottom", "right", "top", "left"] },
+        "joints": [{ "from": [-1, 0.5], "to": [5, 2.5], "material": "j" }],
+        "zoning": { "edge_at_excavation": 0.5, "edge_far": 0.5 },
+        "gravity": [0, -9.81],
+        "boundary": [ { "part": "bottom", "fix": "xy" } ],
+        "solve": { "method": "implicit", "max_iterations": 120 }
+    }"#;
+    let r = run(
+        &Scene::from_json(text, "slide").unwrap(),
+        "adit-test-implicit-slide",
+    );
+    assert_eq!(r.summary.status, "failed");
+    let reason = r.summary.reason.unwrap();
+    let m = &r.built.model;
+    let top = (0..m.nodes.len())
+        .max_by(|&a, &b| m.nodes.pos[a][1].total_cmp(&m.nodes.pos[b][1]))
+        .unwrap();
+    let sliding = m.blocks.block_of_node(top as u32);
+    assert!(
+        reason.contains("1 block(s) still move") && reason.contains(&format!("(block {sliding} ")),
+        "{reason}"
+    );
+    let held = run(
+        &Scene::from_json(
+            &text.replace(r#""friction": 10"#, r#""friction": 30"#),
+            "hold",
+        )
+        .unwrap(),
+        "adit-test-implicit-hold",
+    );
+    assert_eq!(held.summary.status, "converged");
+}

@@ -13,11 +13,16 @@
 //! 2.2e-3 after 200 iterations); the tangent of slipping and open contacts diverged there (a
 //! wedge left without stiffness runs off), so `auto` keeps jointed models explicit.
 //!
+//! Mechanisms: a block nothing holds is named before any factorization (`support`); a block that
+//! slides or falls on its joints is named when the iterations run out and its corrections have
+//! not shrunk (`moving`). Neither ends as converged or at a bare iteration limit.
+//!
 //! What it does not yet do (`implicit` is refused, `auto` cycles explicitly): rigid and simple
 //! blocks, bolts and liners, the mixed and large-strain zone schemes.
 
 pub mod assemble;
 mod factor;
+mod moving;
 mod support;
 
 use std::time::Instant;
@@ -28,6 +33,7 @@ use crate::scene::{SolveMethod, SolveMode};
 use crate::solve::{HistoryRow, Observer, Solution, Status};
 use assemble::{Dofs, FIXED, stiffness};
 use factor::Factor;
+use moving::Movement;
 
 /// Why the implicit path cannot solve `model` as it is, or `None` if it can.
 pub fn unsupported(model: &Model, scheme: ZoneScheme) -> Option<&'static str> {
@@ -170,6 +176,8 @@ pub fn solve(
     let mut rhs = vec![0.0; dofs.count];
     let mut du = vec![[0.0; 2]; model.nodes.len()];
     let mut iteration = 0u64;
+    let mut movement = Movement::new(model.blocks.len());
+    let window_start = max_iterations.checked_sub(moving::WINDOW);
     let mut detections = cycle.detections();
     let status = loop {
         let llt = match &mut factor {
@@ -196,6 +204,10 @@ pub fn solve(
             break Status::Interrupted;
         }
         if iteration == max_iterations {
+            let steady = movement.steady(model);
+            if window_start.is_some() && !steady.is_empty() {
+                break Status::Failed(moving::describe(model, &steady, iteration));
+            }
             break Status::CycleLimit;
         }
         for (n, eq) in dofs.of_node.iter().enumerate() {
@@ -214,6 +226,9 @@ pub fn solve(
                     rhs[eq[d] as usize]
                 }
             });
+        }
+        if window_start.is_some_and(|w| iteration >= w) {
+            movement.record(model, &du, Some(iteration) == window_start);
         }
         cycle.displace(model, &du, params);
         iteration += 1;

@@ -1,0 +1,93 @@
+//! Blocks still moving when the implicit iterations run out. A block sliding or falling on its
+//! joints keeps the matrix positive definite (its contacts carry the joints' initial stiffness),
+//! but the joint law's forces in the residual never hold it: each iteration moves it by about the
+//! same amount again. Over the last `WINDOW` iterations a converging model's corrections shrink
+//! (by 4× at the slowest rate seen, 0.973 per iteration on a deep plastic zone), while such a
+//! block's stay: it is named instead of the stage ending at its iteration limit. (Slip that
+//! converges but very slowly, which the initial-stiffness iteration of contacts can give, looks
+//! the same over the window: the message says so.)
+
+use crate::model::Model;
+
+/// Iterations over which a moving block's correction must not have shrunk.
+pub const WINDOW: u64 = 50;
+
+/// A block whose correction is still this fraction of what it was `WINDOW` iterations earlier
+/// moves steadily.
+pub const STEADY: f64 = 0.8;
+
+/// Blocks whose correction is under this fraction of the largest block's are left out (their
+/// movement is the model's elastic response to the moving ones).
+const NOTABLE: f64 = 1e-2;
+
+/// Each block's largest node correction, m, at the start of the window and now.
+pub struct Movement {
+    then: Vec<f64>,
+    now: Vec<f64>,
+}
+
+impl Movement {
+    pub fn new(blocks: usize) -> Movement {
+        Movement {
+            then: vec![0.0; blocks],
+            now: vec![0.0; blocks],
+        }
+    }
+
+    /// Record an iteration's corrections `du` (m per node); `first` marks the window's start.
+    pub fn record(&mut self, model: &Model, du: &[[f64; 2]], first: bool) {
+        let starts = &model.blocks.node_start;
+        for (b, now) in self.now.iter_mut().enumerate() {
+            let nodes = starts[b] as usize..starts[b + 1] as usize;
+            *now = du[nodes]
+                .iter()
+                .map(|d| d[0].hypot(d[1]))
+                .fold(0.0, f64::max);
+        }
+        if first {
+            self.then.copy_from_slice(&self.now);
+        }
+    }
+
+    /// The blocks moving steadily, (block, correction of the last iteration in m), largest first.
+    pub fn steady(&self, model: &Model) -> Vec<(usize, f64)> {
+        let largest = self.now.iter().copied().fold(0.0, f64::max);
+        let mut out: Vec<(usize, f64)> = (0..self.now.len())
+            .filter(|&b| !model.blocks.is_removed(b))
+            .filter(|&b| self.now[b] > NOTABLE * largest && self.now[b] >= STEADY * self.then[b])
+            .map(|b| (b, self.now[b]))
+            .collect();
+        out.sort_by(|a, b| b.1.total_cmp(&a.1).then(a.0.cmp(&b.0)));
+        out
+    }
+}
+
+/// The reason a stage stops on `steady` blocks after `iterations`.
+pub fn describe(model: &Model, steady: &[(usize, f64)], iterations: u64) -> String {
+    let starts = &model.blocks.node_start;
+    let named: Vec<String> = steady
+        .iter()
+        .take(5)
+        .map(|&(b, moved)| {
+            let nodes = starts[b] as usize..starts[b + 1] as usize;
+            let count = nodes.len().max(1) as f64;
+            let (sx, sy) = model.nodes.pos[nodes]
+                .iter()
+                .fold((0.0, 0.0), |(x, y), p| (x + p[0], y + p[1]));
+            format!(
+                "block {b} near ({:.3}, {:.3}) m moves {moved:.2e} m per iteration",
+                sx / count,
+                sy / count
+            )
+        })
+        .collect();
+    format!(
+        "implicit: after {iterations} iterations {} block(s) still move by about as much per \
+         iteration as {WINDOW} iterations before ({}{}): sliding or falling on their joints (a \
+         mechanism, or slip too slow for the implicit solve to follow); solve this stage \
+         explicitly",
+        steady.len(),
+        named.join("; "),
+        if steady.len() > 5 { "; …" } else { "" }
+    )
+}
