@@ -83,9 +83,9 @@ pub fn describe(model: &Model, steady: &[(usize, f64)], iterations: u64) -> Stri
         .collect();
     format!(
         "implicit: after {iterations} iterations {} block(s) still move by about as much per \
-         iteration as {WINDOW} iterations before ({}{}): sliding or falling on their joints (a \
-         mechanism, or slip too slow for the implicit solve to follow); solve this stage \
-         explicitly",
+         iteration as {WINDOW} iterations before ({}{}): sliding or falling on their joints, or \
+         flowing plastically (a mechanism, or slip or flow too slow for the implicit solve to \
+         follow); solve this stage explicitly",
         steady.len(),
         named.join("; "),
         if steady.len() > 5 { "; …" } else { "" }
