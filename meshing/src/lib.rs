@@ -10,6 +10,7 @@ mod pinch;
 mod polygon_index;
 mod segment_grid;
 pub mod triangulate;
+pub mod union_find;
 pub mod voronoi;
 
 pub use blocks::{Block, Blocking, Merges, cut_blocks, cut_blocks_filled};

@@ -6,6 +6,7 @@ use spade::{DelaunayTriangulation, Point2, Triangulation};
 use crate::error::MeshError;
 use crate::geometry::Point;
 use crate::joints::{EdgeKind, Segment, SplitMix};
+use crate::union_find::UnionFind;
 
 /// Voronoi edges shorter than this many grain sizes collapse into a vertex.
 pub const SHORTEST_EDGE: f64 = 0.1;
@@ -63,14 +64,7 @@ pub fn voronoi_segments(
     // vertex between two very short edges would stand for a tiny contact length and press deep into
     // its neighbour.
     let faces = dt.num_all_faces();
-    let mut parent: Vec<usize> = (0..faces).collect();
-    fn root(parent: &mut [usize], mut f: usize) -> usize {
-        while parent[f] != f {
-            parent[f] = parent[parent[f]];
-            f = parent[f];
-        }
-        f
-    }
+    let mut sets = UnionFind::new(faces);
     let mut edges = Vec::new();
     for edge in dt.undirected_voronoi_edges() {
         let [a, b] = edge.vertices();
@@ -81,8 +75,7 @@ pub fn voronoi_segments(
             }
             let (ia, ib) = (fa.fix().index(), fb.fix().index());
             if (pa.x - pb.x).hypot(pa.y - pb.y) < SHORTEST_EDGE * size {
-                let (ra, rb) = (root(&mut parent, ia), root(&mut parent, ib));
-                parent[ra.max(rb)] = ra.min(rb);
+                sets.join(ia, ib);
             } else {
                 edges.push((ia, ib));
             }
@@ -92,7 +85,7 @@ pub fn voronoi_segments(
     for face in dt.inner_faces() {
         let i = face.fix().index();
         let c = face.circumcenter();
-        let r = root(&mut parent, i);
+        let r = sets.root(i);
         sum[r][0] += c.x;
         sum[r][1] += c.y;
         sum[r][2] += 1.0;
@@ -100,7 +93,7 @@ pub fn voronoi_segments(
     let mut seen = crate::Set::default();
     let mut out = Vec::new();
     for (ia, ib) in edges {
-        let (ra, rb) = (root(&mut parent, ia), root(&mut parent, ib));
+        let (ra, rb) = (sets.root(ia), sets.root(ib));
         if ra == rb || !seen.insert((ra.min(rb), ra.max(rb))) {
             continue;
         }

@@ -87,10 +87,10 @@ pub fn self_weight_by(h: f64, method: SolveMethod) -> anyhow::Result<CaseReport>
         / top;
     let wall_s = start.elapsed().as_secs_f64();
     let errors = [("stress_l2", (num / den).sqrt()), ("settlement", du)];
-    let case = match method {
-        SolveMethod::Explicit => "gravity: confined column self-weight".to_string(),
-        _ => format!("gravity: confined column self-weight, {}", method.name()),
-    };
+    let case = format!(
+        "gravity: confined column self-weight{}",
+        crate::method_suffix(method)
+    );
     Ok(
         CaseReport::new(case, model.zones.len(), cycles, wall_s, Some(h), &errors)
             .with_implicit(implicit),

@@ -71,10 +71,7 @@ pub fn run_by(nu: f64, mixed: bool, edge: f64, method: SolveMethod) -> anyhow::R
         format!(
             "Lamé cylinder, ν = {nu}, {} triangles{}",
             if mixed { "mixed" } else { "plain" },
-            match method {
-                SolveMethod::Explicit => String::new(),
-                _ => format!(", {}", method.name()),
-            }
+            crate::method_suffix(method)
         ),
         r.summary.zones,
         r.summary.cycles,

@@ -99,6 +99,15 @@ pub fn solve_by_method(
     (solver, solution, cost)
 }
 
+/// What a row's case name adds for the method that solved it: nothing for explicit (the names the
+/// report always had), `, implicit` otherwise.
+pub fn method_suffix(method: adit::scene::SolveMethod) -> String {
+    match method {
+        adit::scene::SolveMethod::Explicit => String::new(),
+        _ => format!(", {}", method.name()),
+    }
+}
+
 /// Radial displacement of each of `nodes` about the origin, m (outward positive).
 pub fn radial_displacements<'a>(
     model: &'a Model,

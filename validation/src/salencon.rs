@@ -316,18 +316,20 @@ fn measure(
     let report = CaseReport::new(
         if *rock == Rock::SHIPPED {
             format!(
-                "Salençon: hole in Mohr–Coulomb rock, p0 = 30 MPa, pi = {} MPa, Rp = {rp:.3} m (×{factor})",
-                pi / 1e6
+                "Salençon: hole in Mohr–Coulomb rock, p0 = 30 MPa, pi = {} MPa, Rp = {rp:.3} m (×{factor}){}",
+                pi / 1e6,
+                crate::method_suffix(method)
             )
         } else {
             format!(
-                "Salençon c = {} MPa, φ = {}°, ψ = {}°, ν = {}, p0 = {} MPa{}, Rp = {rp:.3} m (×{factor})",
+                "Salençon c = {} MPa, φ = {}°, ψ = {}°, ν = {}, p0 = {} MPa{}, Rp = {rp:.3} m (×{factor}){}",
                 rock.cohesion / 1e6,
                 rock.friction_deg,
                 rock.dilation_deg,
                 rock.poisson,
                 rock.p0 / 1e6,
-                if rock.mixed { ", mixed" } else { "" }
+                if rock.mixed { ", mixed" } else { "" },
+                crate::method_suffix(method)
             )
         },
         z.len(),
@@ -344,13 +346,6 @@ fn measure(
         ],
     )
     .with_implicit(implicit);
-    let report = match method {
-        SolveMethod::Explicit => report,
-        _ => CaseReport {
-            case: format!("{}, {}", report.case, method.name()),
-            ..report
-        },
-    };
     Ok((report, u_wall / u_exact))
 }
 
