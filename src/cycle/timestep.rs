@@ -7,6 +7,7 @@
 //! masses instead (m_i = R_i/(4 s²), Δt = 1), as FLAC's mass scaling for static solutions
 //! (Itasca, FLAC *Theory and Background*, §1.3.5; Cundall 1982).
 
+use crate::law::plane_strain_moduli;
 use crate::model::bodies::{BodyMode, DOFS, Dof, Moments, polygon_moments, velocity_map};
 use crate::model::{Model, NodeId, Zones};
 
@@ -82,7 +83,8 @@ pub fn zone_stiffness(model: &Model) -> Vec<f64> {
     let mut r = vec![[0.0f64; 2]; model.nodes.len()];
     for z in 0..nodes.len() {
         let (k, g) = model.materials.zone[material[z].0 as usize].moduli();
-        let sums = zone_row_sums(&grad[z], area[z], k + 4.0 / 3.0 * g, k - 2.0 / 3.0 * g, g);
+        let (a1, a2) = plane_strain_moduli(k, g);
+        let sums = zone_row_sums(&grad[z], area[z], a1, a2, g);
         for (c, &n) in nodes[z].iter().enumerate() {
             r[n as usize][0] += sums[c][0];
             r[n as usize][1] += sums[c][1];

@@ -6,7 +6,7 @@ use rayon::prelude::*;
 
 use crate::cycle::contact_normal;
 use crate::joint::JointLaw;
-use crate::law::ZoneLaw;
+use crate::law::{ZoneLaw, plane_strain_moduli};
 use crate::model::blocks::Blocks;
 use crate::model::{Contacts, FIX_X, FIX_Y, Model, Nodes, Zones};
 
@@ -42,7 +42,7 @@ impl Dofs {
 /// Plane-strain elasticity of bulk modulus K and shear modulus G (Pa), engineering shear strain:
 /// σ = D ε with D = [[K + 4G/3, K − 2G/3, 0], [K − 2G/3, K + 4G/3, 0], [0, 0, G]].
 pub fn plane_strain(bulk: f64, shear: f64) -> [[f64; 3]; 3] {
-    let (a, b) = (bulk + 4.0 * shear / 3.0, bulk - 2.0 * shear / 3.0);
+    let (a, b) = plane_strain_moduli(bulk, shear);
     [[a, b, 0.0], [b, a, 0.0], [0.0, 0.0, shear]]
 }
 

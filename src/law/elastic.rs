@@ -24,14 +24,21 @@ impl Elastic {
     }
 }
 
+/// The plane-strain moduli α1 = K + 4G/3 and α2 = K − 2G/3 (Pa) of bulk modulus K and shear
+/// modulus G (Pa): Δσxx = α1 Δεxx + α2 Δεyy in plane strain (Itasca, FLAC *Theory and
+/// Background*, §1.3.3).
+#[inline]
+pub fn plane_strain_moduli(bulk: f64, shear: f64) -> (f64, f64) {
+    (bulk + 4.0 / 3.0 * shear, bulk - 2.0 / 3.0 * shear)
+}
+
 impl ZoneLaw for Elastic {
     /// Hooke's law in plane strain (Δεzz = 0), with α1 = K + 4G/3 and α2 = K − 2G/3:
     /// Δσxx = α1 Δεxx + α2 Δεyy, Δσyy = α2 Δεxx + α1 Δεyy, Δσzz = α2 (Δεxx + Δεyy), Δσxy = G Δγxy
     /// (Itasca, FLAC *Theory and Background*, §1.3.3).
     #[inline]
     fn update(&self, s: &mut Stress, _state: &mut u8, _plastic: &mut f64, de: &StrainIncrement) {
-        let a1 = self.bulk + 4.0 / 3.0 * self.shear;
-        let a2 = self.bulk - 2.0 / 3.0 * self.shear;
+        let (a1, a2) = plane_strain_moduli(self.bulk, self.shear);
         s[0] += a1 * de[0] + a2 * de[1];
         s[1] += a2 * de[0] + a1 * de[1];
         s[2] += a2 * (de[0] + de[1]);

@@ -4,7 +4,7 @@ mod elastic;
 mod mohr_coulomb;
 mod null;
 
-pub use elastic::Elastic;
+pub use elastic::{Elastic, plane_strain_moduli};
 pub use mohr_coulomb::{MohrCoulomb, SHEAR_NOW, SHEAR_PAST, TENSION_NOW, TENSION_PAST};
 pub use null::Null;
 

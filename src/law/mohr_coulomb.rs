@@ -19,7 +19,7 @@
 //! table of the plastic shear strain e^ps, accumulated from each shear correction as
 //! Δe^ps = √(½[(Δε1 − Δεm)² + Δεm² + (Δε3 − Δεm)²]), Δε1 = λs, Δε3 = −λs Nψ, Δεm = (Δε1 + Δε3)/3.
 
-use super::{Elastic, StrainIncrement, Stress, ZoneLaw};
+use super::{Elastic, StrainIncrement, Stress, ZoneLaw, plane_strain_moduli};
 
 /// Zone state bit: yielding in shear now.
 pub const SHEAR_NOW: u8 = 1;
@@ -93,8 +93,7 @@ impl MohrCoulomb {
     fn correct(&self, p: &mut [f64; 3], c: f64, phi: f64) -> (u8, f64) {
         let n = |a: f64| (1.0 + a.sin()) / (1.0 - a.sin());
         let (n_phi, n_psi) = (n(phi), n(self.dilation.min(phi)));
-        let (k, g) = (self.elastic.bulk, self.elastic.shear);
-        let (a1, a2) = (k + 4.0 / 3.0 * g, k - 2.0 / 3.0 * g);
+        let (a1, a2) = plane_strain_moduli(self.elastic.bulk, self.elastic.shear);
         let apex = if phi > 0.0 {
             c / phi.tan()
         } else {
