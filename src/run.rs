@@ -150,7 +150,7 @@ fn build_solve_write(
                     spec.max_iterations,
                     &mut writing,
                 );
-                seconds.implicit += cost.assemble_s + cost.factorize_s + cost.iterate_s;
+                seconds.implicit += cost.seconds();
                 implicit_cost = Some(implicit_cost.map_or(cost, |c| c.plus(cost)));
                 solution
             }

@@ -72,6 +72,11 @@ pub struct Cost {
 }
 
 impl Cost {
+    /// Seconds the solve took in all: assembling, factorizing and iterating.
+    pub fn seconds(&self) -> f64 {
+        self.assemble_s + self.factorize_s + self.iterate_s
+    }
+
     /// The costs of two solves together (the largest system's size).
     pub fn plus(self, o: Cost) -> Cost {
         Cost {

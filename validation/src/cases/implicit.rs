@@ -123,7 +123,7 @@ impl Case for Implicit {
                 .fold(0.0f64, |a, d| if d.abs() > a.abs() { d } else { a });
             // Meshing and setting up are the same code either way: what the implicit run spent
             // outside its solve is taken off both to compare the solves alone.
-            let solve_s = cost.assemble_s + cost.factorize_s + cost.iterate_s;
+            let solve_s = cost.seconds();
             let setup_s = i.wall_s - solve_s;
             let _ = writeln!(
                 md,
@@ -188,7 +188,7 @@ fn peer_section(
     );
     for ((factor, e, i), p) in levels.iter().zip(&peers) {
         let cost = i.implicit.unwrap_or_default();
-        let solve_s = cost.assemble_s + cost.factorize_s + cost.iterate_s;
+        let solve_s = cost.seconds();
         let _ = writeln!(
             md,
             "| ×{factor} | {} | {} | {:.2} | {:.3} | {:.3} | {:.3} | {:.1}× | {:.3e} | {:.1e} |",
@@ -214,10 +214,7 @@ fn peer_section(
         plotters::style::RGBColor(44, 160, 44),
         plotters::style::RGBColor(127, 127, 127),
     );
-    let implicit_solve = |i: &KirschResult| {
-        let c = i.implicit.unwrap_or_default();
-        c.assemble_s + c.factorize_s + c.iterate_s
-    };
+    let implicit_solve = |i: &KirschResult| i.implicit.unwrap_or_default().seconds();
     let plot = [
         series(
             "adit implicit, total",
