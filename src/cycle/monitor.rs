@@ -23,7 +23,9 @@ const CHUNK: usize = 4096;
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Monitor {
     /// max_i |F_i| / mean_i Σ|f_i|: largest unbalanced nodal force over the mean gross nodal force
-    /// (sum of magnitudes of the zone and applied forces meeting at a node), as FLAC's ratio.
+    /// (sum of magnitudes of the zone and applied forces meeting at a node), as FLAC's ratio; 1
+    /// (nothing balanced) where an unbalanced force meets no gross force at all (an unstressed
+    /// model loaded only through its supports), 0 where there is neither.
     pub ratio: f64,
     /// Kinetic energy ½ Σ m v², J/m (with the scaled masses in static runs).
     pub kinetic: f64,
@@ -105,7 +107,13 @@ impl Cycle {
             return Err(reason);
         }
         let mean = gross / n as f64;
-        let ratio = if mean > 0.0 { max_force / mean } else { 0.0 };
+        let ratio = if mean > 0.0 {
+            max_force / mean
+        } else if max_force > 0.0 {
+            1.0
+        } else {
+            0.0
+        };
         Ok(Monitor {
             ratio,
             kinetic,

@@ -4,24 +4,29 @@
 use faer::sparse::{SparseColMat, Triplet};
 use rayon::prelude::*;
 
+use super::structural::{SupportDofs, support_stiffness};
 use crate::cycle::contact_normal;
 use crate::joint::JointLaw;
 use crate::law::{ZoneLaw, plane_strain_moduli};
 use crate::model::blocks::Blocks;
 use crate::model::{Contacts, FIX_X, FIX_Y, Model, Nodes, Zones};
+use crate::support::Supports;
 
 /// Marks a fixed component: no unknown.
 pub const FIXED: u32 = u32::MAX;
 
-/// The unknowns: for each node its x and y component's equation number, or `FIXED`.
+/// The unknowns: for each node its x and y component's equation number, or `FIXED`; then the
+/// installed supports' own.
 pub struct Dofs {
     pub of_node: Vec<[u32; 2]>,
+    pub supports: SupportDofs,
     pub count: usize,
 }
 
 impl Dofs {
-    /// One unknown per component that is not fixed, numbered node by node.
-    pub fn of(nodes: &Nodes) -> Dofs {
+    /// One unknown per node component that is not fixed, numbered node by node, then those of
+    /// the installed bolts and liners.
+    pub fn of(nodes: &Nodes, supports: &Supports) -> Dofs {
         let mut count = 0usize;
         let of_node = (nodes.fixed.iter())
             .map(|&f| {
@@ -35,7 +40,31 @@ impl Dofs {
                 })
             })
             .collect();
-        Dofs { of_node, count }
+        let (supports, count) = SupportDofs::of(supports, count);
+        Dofs {
+            of_node,
+            supports,
+            count,
+        }
+    }
+}
+
+/// The lower-triangle entries (row ≥ column) of a dense element matrix `k` (k(r, c) over the
+/// element's components) at the equation numbers `eq`, skipping fixed components and zeros.
+pub fn lower_triplets(
+    eq: &[u32],
+    k: impl Fn(usize, usize) -> f64,
+    out: &mut Vec<Triplet<usize, usize, f64>>,
+) {
+    for (r, &row) in eq.iter().enumerate() {
+        for (c, &col) in eq.iter().enumerate() {
+            if row != FIXED && col != FIXED && row >= col {
+                let v = k(r, c);
+                if v != 0.0 {
+                    out.push(Triplet::new(row as usize, col as usize, v));
+                }
+            }
+        }
     }
 }
 
@@ -92,20 +121,13 @@ pub fn zone_stiffness(
             let eq: [u32; 6] =
                 std::array::from_fn(|i| dofs.of_node[zones.nodes[z][i / 2] as usize][i % 2]);
             let mut out = Vec::with_capacity(21);
-            for r in 0..6 {
-                for c in 0..6 {
-                    let (row, col) = (eq[r], eq[c]);
-                    if row != FIXED && col != FIXED && row >= col && k[r][c] != 0.0 {
-                        out.push(Triplet::new(row as usize, col as usize, k[r][c]));
-                    }
-                }
-            }
+            lower_triplets(&eq, |r, c| k[r][c], &mut out);
             out
         })
         .collect()
 }
 
-/// The model's stiffness over the unknowns (lower triangle): zones and contacts.
+/// The model's stiffness over the unknowns (lower triangle): zones, contacts, bolts and liners.
 pub fn stiffness(
     model: &Model,
     dofs: &Dofs,
@@ -115,6 +137,13 @@ pub fn stiffness(
         let x = model.nodes.current();
         let (blocks, contacts, laws) = (&model.blocks, &model.contacts, &model.materials.joint);
         triplets.extend(contact_stiffness(blocks, contacts, laws, &x, dofs));
+    }
+    if !model.supports.is_empty() {
+        triplets.extend(support_stiffness(
+            &model.supports,
+            &dofs.of_node,
+            &dofs.supports,
+        ));
     }
     SparseColMat::try_new_from_triplets(dofs.count, dofs.count, &triplets)
 }
@@ -146,19 +175,13 @@ pub fn contact_stiffness(
             let [j, k] = blocks.edges[e as usize];
             let nodes = [i, j, k];
             let frame = |a: usize, b: usize| kn * n[a] * n[b] + ks * t[a] * t[b];
+            let eq: [u32; 6] = std::array::from_fn(|r| dofs.of_node[nodes[r / 2] as usize][r % 2]);
             let mut out = Vec::with_capacity(21);
-            for r in 0..6 {
-                for q in 0..6 {
-                    let row = dofs.of_node[nodes[r / 2] as usize][r % 2];
-                    let col = dofs.of_node[nodes[q / 2] as usize][q % 2];
-                    if row != FIXED && col != FIXED && row >= col {
-                        let v = len * w[r / 2] * w[q / 2] * frame(r % 2, q % 2);
-                        if v != 0.0 {
-                            out.push(Triplet::new(row as usize, col as usize, v));
-                        }
-                    }
-                }
-            }
+            lower_triplets(
+                &eq,
+                |r, q| len * w[r / 2] * w[q / 2] * frame(r % 2, q % 2),
+                &mut out,
+            );
             out
         })
         .collect()

@@ -17,12 +17,15 @@
 //! slides or falls on its joints is named when the iterations run out and its corrections have
 //! not shrunk (`moving`). Neither ends as converged or at a bare iteration limit.
 //!
+//! Bolts and liners bring their own unknowns and their elastic stiffness (`structural`).
+//!
 //! What it does not yet do (`implicit` is refused, `auto` cycles explicitly): rigid and simple
-//! blocks, bolts and liners, the mixed and large-strain zone schemes.
+//! blocks, the mixed and large-strain zone schemes.
 
 pub mod assemble;
 mod factor;
 mod moving;
+mod structural;
 mod support;
 
 use std::time::Instant;
@@ -39,8 +42,6 @@ use moving::Movement;
 pub fn unsupported(model: &Model, scheme: ZoneScheme) -> Option<&'static str> {
     if !model.bodies.is_empty() {
         Some("rigid and simple blocks are not yet assembled")
-    } else if !model.supports.is_empty() {
-        Some("bolts and liners are not yet assembled")
     } else if scheme != ZoneScheme::SmallStrain {
         Some(
             "only the small-strain zone scheme is assembled (not `zoning.mixed` or `solve.large_strain`)",
@@ -159,7 +160,7 @@ pub fn solve(
     observer: &mut dyn Observer,
 ) -> (Solution, Cost) {
     let mut cost = Cost::default();
-    let dofs = Dofs::of(&model.nodes);
+    let dofs = Dofs::of(&model.nodes, &model.supports);
     cost.unknowns = dofs.count;
     let loose = support::unsupported_blocks(model);
     // A block nothing holds is named before any factorization: the stage fails as a mechanism.
@@ -222,6 +223,7 @@ pub fn solve(
                 }
             }
         }
+        dofs.supports.residual(&model.supports, &mut rhs);
         llt.solve_in_place(&mut rhs);
         for (n, eq) in dofs.of_node.iter().enumerate() {
             du[n] = std::array::from_fn(|d| {
@@ -236,6 +238,7 @@ pub fn solve(
             movement.record(model, &du, Some(iteration) == window_start);
         }
         cycle.displace(model, &du, params);
+        dofs.supports.displace(&mut model.supports, &rhs);
         iteration += 1;
         if cycle.detections() != detections {
             detections = cycle.detections();

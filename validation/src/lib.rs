@@ -99,6 +99,22 @@ pub fn solve_by_method(
     (solver, solution, cost)
 }
 
+/// [`solve_by_method`], failing with `what` named unless it converged; returns the cycles (or
+/// iterations) and, when the implicit solve ran, its cost.
+pub fn settle_by_method(
+    model: &mut Model,
+    spec: &SolveSpec,
+    what: &str,
+) -> anyhow::Result<(u64, Option<adit::implicit::Cost>)> {
+    let (_, sol, cost) = solve_by_method(model, spec);
+    anyhow::ensure!(
+        sol.status == Status::Converged,
+        "{what} did not converge: {:?}",
+        sol.status
+    );
+    Ok((sol.cycles, cost))
+}
+
 /// What a row's case name adds for the method that solved it: nothing for explicit (the names the
 /// report always had), `, implicit` otherwise.
 pub fn method_suffix(method: adit::scene::SolveMethod) -> String {

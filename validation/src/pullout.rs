@@ -17,6 +17,7 @@
 
 use std::time::Instant;
 
+use adit::scene::SolveMethod;
 use adit::setup::setup;
 
 use crate::report::CaseReport;
@@ -118,14 +119,24 @@ fn scene(segment: f64) -> anyhow::Result<adit::Scene> {
 /// `segment` m), pulled at its head by `fraction` × the pull-out load s L. Error `axial`: the
 /// largest |N_h − N| over the segments (at their middles) relative to the pull.
 pub fn run(fraction: f64, segment: f64) -> anyhow::Result<(CaseReport, Vec<ProfilePoint>)> {
+    run_by(fraction, segment, SolveMethod::Explicit)
+}
+
+/// [`run`] solved by `method` (`solve.method`); the row's case names it.
+pub fn run_by(
+    fraction: f64,
+    segment: f64,
+    method: SolveMethod,
+) -> anyhow::Result<(CaseReport, Vec<ProfilePoint>)> {
     let start = Instant::now();
     let exact = CASE;
-    let scene = scene(segment)?;
+    let mut scene = scene(segment)?;
+    scene.solve.method = method;
     let mut b = setup(&scene)?;
     let pull = fraction * exact.bond_strength * exact.length;
     // Pull the head out of the rock: against the bolt's axis (head to toe, +x).
     b.model.supports.cables.applied[0] = -pull;
-    let (_, cycles) = crate::settle(&mut b.model, &scene.solve, "pull-out")?;
+    let (cycles, implicit) = crate::settle_by_method(&mut b.model, &scene.solve, "pull-out")?;
     let c = &b.model.supports.cables;
     let mut profile = Vec::new();
     let mut err = 0.0f64;
@@ -141,20 +152,22 @@ pub fn run(fraction: f64, segment: f64) -> anyhow::Result<(CaseReport, Vec<Profi
     }
     let report = CaseReport::new(
         format!(
-            "Grouted bolt pull-out at {:.0} % of s·L ({}), segments {segment} m",
+            "Grouted bolt pull-out at {:.0} % of s·L ({}), segments {segment} m{}",
             100.0 * fraction,
             if pull > exact.first_slip() {
                 format!("grout slipping over {:.2} m", exact.slip_length(pull))
             } else {
                 "elastic".to_string()
-            }
+            },
+            crate::method_suffix(method)
         ),
         b.model.zones.len(),
         cycles,
         start.elapsed().as_secs_f64(),
         Some(segment),
         &[("axial", err)],
-    );
+    )
+    .with_implicit(implicit);
     Ok((report, profile))
 }
 
@@ -183,6 +196,21 @@ mod tests {
         for fraction in [0.25, 0.6] {
             let (r, _) = run(fraction, 0.1).unwrap();
             assert!(r.errors["axial"] < 0.02, "{r:?}");
+        }
+    }
+
+    /// The implicit solve assembles the bolt (segments and grout springs): with the grout
+    /// slipping over part of the bolt it converges to the same profile.
+    #[test]
+    fn the_implicit_solve_carries_the_bolt() {
+        for fraction in [0.25, 0.6] {
+            let (e, _) = run(fraction, 0.1).unwrap();
+            let (i, _) = run_by(fraction, 0.1, SolveMethod::Implicit).unwrap();
+            assert!(i.errors["axial"] < 0.02, "{i:?}");
+            assert!(
+                (i.errors["axial"] - e.errors["axial"]).abs() < 5e-3,
+                "{i:?} {e:?}"
+            );
         }
     }
 

@@ -9,7 +9,7 @@ use crate::peer;
 use crate::plot::{Series, speed_and_convergence};
 use crate::report::CaseReport;
 use crate::salencon::{self, Rock, WEAK_ROCK};
-use crate::{gravity, incompressible};
+use crate::{gravity, incompressible, lined, pullout};
 use adit::scene::SolveMethod;
 
 pub struct Implicit;
@@ -73,6 +73,12 @@ impl Case for Implicit {
         for rock in [Rock::SHIPPED, WEAK_ROCK, DILATANT_ROCK] {
             both(&|method| salencon::run_rock_by(&cx.kirsch, 1.0, 0.0, &rock, method))?;
         }
+        for thickness in [0.15, 0.05] {
+            both(&|method| lined::run_by(&cx.kirsch, 1.0, thickness, method))?;
+        }
+        for fraction in [0.25, 0.6] {
+            both(&|method| Ok(pullout::run_by(fraction, 0.1, method)?.0))?;
+        }
         let peer_md = peer_section(cx, &levels)?;
         let _ = writeln!(md, "\n## Implicit static solve (issue 17)\n");
         let _ = writeln!(
@@ -89,8 +95,11 @@ impl Case for Implicit {
              Salençon rock but stalled on the weak rock. Each case of the report \
              below solved both ways: Kirsch's hole with the exact traction on its outer boundary at \
              four zonings (×2 coarser to ×0.4 finer than shipped), Lamé's cylinder (ν = 0.45, plain triangles), \
-             the self-weight column (h = 0.5 m) and Salençon's hole at the shipped rock, the weak \
-             rock of issue 13 and a dilatant rock (c = 2 MPa, φ = 35°, ψ = 10°, p0 = 20 MPa). \
+             the self-weight column (h = 0.5 m), Salençon's hole at the shipped rock, the weak \
+             rock of issue 13 and a dilatant rock (c = 2 MPa, φ = 35°, ψ = 10°, p0 = 20 MPa), the \
+             lined hole of Einstein–Schwartz (liners: beam elements and their wall links in the \
+             matrix) and the grouted bolt's pull-out, elastic and with the grout slipping (bolts: \
+             segments and grout springs in the matrix, the slip converging by the iterations). \
              Cycles are the explicit cycles or the implicit iterations; the seconds include meshing \
              and setting up.\n"
         );
