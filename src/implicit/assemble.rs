@@ -49,6 +49,32 @@ impl Dofs {
     }
 }
 
+impl Dofs {
+    /// The free components of the node vectors `v` into their rows of `x`.
+    pub fn gather(&self, v: &[[f64; 2]], x: &mut [f64]) {
+        for (eq, v) in self.of_node.iter().zip(v) {
+            for d in 0..2 {
+                if eq[d] != FIXED {
+                    x[eq[d] as usize] = v[d];
+                }
+            }
+        }
+    }
+
+    /// The node vectors of `x` into `v` (zero in a fixed component).
+    pub fn scatter(&self, x: &[f64], v: &mut [[f64; 2]]) {
+        for (eq, v) in self.of_node.iter().zip(v) {
+            *v = std::array::from_fn(|d| {
+                if eq[d] == FIXED {
+                    0.0
+                } else {
+                    x[eq[d] as usize]
+                }
+            });
+        }
+    }
+}
+
 /// The lower-triangle entries (row ≥ column) of a dense element matrix `k` (k(r, c) over the
 /// element's components) at the equation numbers `eq`, skipping fixed components and zeros.
 pub fn lower_triplets(

@@ -2,6 +2,7 @@
 //! the exact solution and its cost, and is run in full by the report binary and coarsely by tests.
 
 pub mod axisymmetric;
+pub mod bundled;
 pub mod case;
 pub mod cases;
 pub mod corners;
