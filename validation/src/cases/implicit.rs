@@ -72,8 +72,15 @@ impl Case for Implicit {
             levels.push((factor, e, i));
         }
         both(&|method| incompressible::run_by(0.45, false, 0.06, method))?;
+        for nu in [0.45, 0.499] {
+            both(&|method| incompressible::run_by(nu, true, 0.06, method))?;
+        }
         both(&|method| gravity::self_weight_by(0.5, method))?;
-        for rock in [Rock::SHIPPED, WEAK_ROCK, DILATANT_ROCK] {
+        let weak_mixed = Rock {
+            mixed: true,
+            ..WEAK_ROCK
+        };
+        for rock in [Rock::SHIPPED, WEAK_ROCK, weak_mixed, DILATANT_ROCK] {
             both(&|method| salencon::run_rock_by(&cx.kirsch, 1.0, 0.0, &rock, method))?;
         }
         for thickness in [0.15, 0.05] {
@@ -115,9 +122,11 @@ impl Case for Implicit {
              and yield are evaluated from the stage's start (trial and commit), which the zones' \
              Mohr–Coulomb return cannot yet be (one return over a whole stage crosses the corners \
              of its yield surface). Each case of the report below solved both ways: Kirsch's hole with the exact traction on its outer boundary at \
-             four zonings (×2 coarser to ×0.4 finer than shipped), Lamé's cylinder (ν = 0.45, plain triangles), \
+             four zonings (×2 coarser to ×0.4 finer than shipped), Lamé's cylinder (ν = 0.45 in plain triangles; ν = 0.45 and 0.499 in mixed zones, \
+             `zoning.mixed`, whose matrix is the plain triangles' while the residual is the mixed \
+             zone stage's), \
              the self-weight column (h = 0.5 m), Salençon's hole at the shipped rock, the weak \
-             rock of issue 13 and a dilatant rock (c = 2 MPa, φ = 35°, ψ = 10°, p0 = 20 MPa), the \
+             rock of issue 13 in plain and in mixed zones, and a dilatant rock (c = 2 MPa, φ = 35°, ψ = 10°, p0 = 20 MPa), the \
              lined hole of Einstein–Schwartz (liners: beam elements and their wall links in the \
              matrix) and the grouted bolt's pull-out, elastic and with the grout slipping (bolts: \
              segments and grout springs in the matrix, the slip converging by the iterations), and \
