@@ -113,8 +113,9 @@ fn implicit_plastic_hole_matches_explicit() {
 }
 
 /// Two blocks across a horizontal glued joint under 1 MPa: `implicit` carries the load through
-/// the contacts as the explicit path does; `auto` keeps a model with contacts explicit and says why;
-/// rigid blocks are refused by `implicit`, naming the field and the reason.
+/// the contacts as the explicit path does, in deformable, rigid and simple blocks; `auto` keeps a
+/// model with contacts explicit and says why; the large-strain update is refused by `implicit`,
+/// naming the field and the reason.
 #[test]
 fn implicit_contacts_and_what_it_refuses() {
     let text = |method: &str, mode: &str, law: &str| {
@@ -168,13 +169,43 @@ fn implicit_contacts_and_what_it_refuses() {
         "{:?}",
         a.summary.methods
     );
+    // Rigid and simple blocks: their generalised displacements are the unknowns; the glued
+    // (linear) joint gives the explicit settlement to the solve's tolerance.
+    let settlement = |r: &adit::RunResult| {
+        let m = &r.built.model;
+        m.nodes.disp.iter().map(|u| u[1]).fold(0.0f64, f64::min)
+    };
+    for mode in ["rigid", "simple"] {
+        let i = run(
+            &scene("implicit", mode, "glued"),
+            "adit-test-implicit-bodies",
+        );
+        let e = run(
+            &scene("explicit", mode, "glued"),
+            "adit-test-explicit-bodies",
+        );
+        assert_eq!(i.summary.status, "converged", "{:?}", i.summary.reason);
+        let (si, se) = (settlement(&i), settlement(&e));
+        assert!(
+            se < 0.0 && (si / se - 1.0).abs() < 1e-3,
+            "{mode}: {si} {se}"
+        );
+    }
     let out = std::env::temp_dir().join("adit-test-implicit-refused");
-    let msg = adit::run_scene(&scene("implicit", "rigid", "coulomb"), &out, &mut Quiet)
-        .err()
-        .unwrap()
-        .to_string();
+    let large = text("implicit", "deformable", "glued").replace(
+        r#""method": "implicit","#,
+        r#""method": "implicit", "large_strain": true,"#,
+    );
+    let msg = adit::run_scene(
+        &Scene::from_json(&large, "two_blocks").unwrap(),
+        &out,
+        &mut Quiet,
+    )
+    .err()
+    .unwrap()
+    .to_string();
     assert!(
-        msg.starts_with("solve.method: implicit cannot solve this model: rigid and simple"),
+        msg.starts_with("solve.method: implicit cannot solve this model: the large-strain"),
         "{msg}"
     );
 }
@@ -246,7 +277,7 @@ fn implicit_names_a_block_nothing_holds() {
     );
 }
 
-/// A later stage asking the implicit path of a model it cannot solve (rigid blocks) is refused
+/// A later stage asking the implicit path of what it cannot solve (the large-strain update) is refused
 /// before the first stage solves: no output step is written.
 #[test]
 fn a_later_implicit_stage_is_refused_before_any_solve() {
@@ -257,12 +288,11 @@ fn a_later_implicit_stage_is_refused_before_any_solve() {
         "region": { "polygon": [[0, 0], [2, 0], [2, 2], [0, 2]], "material": "rock",
                      "edge_names": ["bottom", "right", "top", "left"] },
         "joints": [{ "from": [-1, 1], "to": [3, 1], "material": "j" }],
-        "blocks": { "mode": "rigid" },
         "zoning": { "edge_at_excavation": 0.5, "edge_far": 0.5 },
         "boundary": [ { "part": "bottom", "fix": "xy" }, { "part": "top", "normal_stress": -1e6 } ],
         "solve": { "max_cycles": 2000 },
         "stages": [ { "name": "settle" },
-                    { "name": "again", "solve": { "method": "implicit" } } ]
+                    { "name": "again", "solve": { "method": "implicit", "large_strain": true } } ]
     }"#;
     let out = std::env::temp_dir().join("adit-test-implicit-later-stage");
     let _ = std::fs::remove_dir_all(&out);

@@ -241,12 +241,16 @@ impl Cycle {
         for n in 0..model.nodes.len() {
             let mut f = self.node_force(model, n);
             let fixed = model.nodes.fixed[n];
+            // A body node's force goes whole to its body, whose constraint takes the fixities.
             for (d, flag) in [(0, FIX_X), (1, FIX_Y)] {
-                if fixed & flag != 0 {
+                if fixed & flag != 0 && fixed & BODY == 0 {
                     f[d] = 0.0;
                 }
             }
             model.nodes.force[n] = f;
+        }
+        if !model.bodies.is_empty() {
+            self.body_balance(&mut model.nodes, &mut model.bodies);
         }
     }
 

@@ -4,34 +4,38 @@
 use faer::sparse::{SparseColMat, Triplet};
 use rayon::prelude::*;
 
+use super::bodies::BodyDofs;
 use super::structural::{SupportDofs, support_stiffness};
 use crate::cycle::contact_normal;
 use crate::joint::JointLaw;
 use crate::law::{ZoneLaw, plane_strain_moduli};
 use crate::model::blocks::Blocks;
-use crate::model::{Contacts, FIX_X, FIX_Y, Model, Nodes, Zones};
+use crate::model::bodies::{Bodies, NO_BODY};
+use crate::model::{BODY, Contacts, FIX_X, FIX_Y, Model, Nodes, Zones};
 use crate::support::Supports;
 
 /// Marks a fixed component: no unknown.
 pub const FIXED: u32 = u32::MAX;
 
-/// The unknowns: for each node its x and y component's equation number, or `FIXED`; then the
-/// installed supports' own.
+/// The unknowns: for each node its x and y component's equation number, or `FIXED` (a fixed
+/// component, or a node of a rigid or simple block, which follows its body's); then the bodies'
+/// and the installed supports' own.
 pub struct Dofs {
     pub of_node: Vec<[u32; 2]>,
+    pub bodies: BodyDofs,
     pub supports: SupportDofs,
     pub count: usize,
 }
 
 impl Dofs {
-    /// One unknown per node component that is not fixed, numbered node by node, then those of
-    /// the installed bolts and liners.
-    pub fn of(nodes: &Nodes, supports: &Supports) -> Dofs {
+    /// One unknown per component of a zoned block's node that is not fixed, numbered node by
+    /// node, then those of the bodies and of the installed bolts and liners.
+    pub fn of(nodes: &Nodes, bodies: &Bodies, supports: &Supports) -> Dofs {
         let mut count = 0usize;
         let of_node = (nodes.fixed.iter())
             .map(|&f| {
                 [FIX_X, FIX_Y].map(|flag| {
-                    if f & flag != 0 {
+                    if f & (flag | BODY) != 0 {
                         FIXED
                     } else {
                         count += 1;
@@ -40,11 +44,105 @@ impl Dofs {
                 })
             })
             .collect();
+        let (bodies, count) = BodyDofs::of(bodies, count);
         let (supports, count) = SupportDofs::of(supports, count);
         Dofs {
             of_node,
+            bodies,
             supports,
             count,
+        }
+    }
+
+    /// How component `d` of node `n` moves with the unknowns: its own equation, or through its
+    /// body's (at the current positions `x`), or not at all.
+    pub fn terms(&self, bodies: &Bodies, x: &[[f64; 2]], n: u32, d: usize) -> Terms {
+        let n = n as usize;
+        match bodies.of_node.get(n) {
+            Some(&k) if k != NO_BODY => {
+                let c = bodies.centroid[k as usize];
+                let r = [x[n][0] - c[0], x[n][1] - c[1]];
+                self.bodies.node_terms(k as usize, r, d)
+            }
+            _ => {
+                let mut t = Terms::default();
+                if self.of_node[n][d] != FIXED {
+                    t.push(self.of_node[n][d], 1.0);
+                }
+                t
+            }
+        }
+    }
+}
+
+/// A node component as a combination of unknowns: up to six (equation, coefficient) pairs.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Terms {
+    eq: [u32; 6],
+    coef: [f64; 6],
+    len: usize,
+}
+
+impl Terms {
+    pub fn push(&mut self, eq: u32, coef: f64) {
+        self.eq[self.len] = eq;
+        self.coef[self.len] = coef;
+        self.len += 1;
+    }
+
+    fn pairs(&self) -> impl Iterator<Item = (u32, f64)> + '_ {
+        self.eq[..self.len]
+            .iter()
+            .copied()
+            .zip(self.coef[..self.len].iter().copied())
+    }
+}
+
+/// The lower-triangle entries of a dense element matrix `k` (k(r, c) over the element's
+/// components) whose components move with the unknowns as `terms` say: Σ c_a c_b k(r, c) at
+/// (eq_a, eq_b), summed per pair of equations first (a contact between two bodies' nodes has 18
+/// equations, not 36 × 36 products), skipping zeros. At most 8 components.
+pub fn expanded_triplets(
+    terms: &[Terms],
+    k: impl Fn(usize, usize) -> f64,
+    out: &mut Vec<Triplet<usize, usize, f64>>,
+) {
+    const MOST: usize = 48;
+    let mut eqs = [0u32; MOST];
+    let mut count = 0;
+    // local[r][i]: the local index of component r's i-th term.
+    let mut local = [[0usize; 6]; 8];
+    for (r, t) in terms.iter().enumerate() {
+        for (i, (eq, _)) in t.pairs().enumerate() {
+            local[r][i] = match eqs[..count].iter().position(|&e| e == eq) {
+                Some(j) => j,
+                None => {
+                    eqs[count] = eq;
+                    count += 1;
+                    count - 1
+                }
+            };
+        }
+    }
+    let mut m = [[0.0; MOST]; MOST];
+    for (r, tr) in terms.iter().enumerate() {
+        for (c, tc) in terms.iter().enumerate() {
+            let v = k(r, c);
+            if v == 0.0 {
+                continue;
+            }
+            for (i, (_, cr)) in tr.pairs().enumerate() {
+                for (j, (_, cc)) in tc.pairs().enumerate() {
+                    m[local[r][i]][local[c][j]] += cr * cc * v;
+                }
+            }
+        }
+    }
+    for a in 0..count {
+        for b in 0..count {
+            if eqs[a] >= eqs[b] && m[a][b] != 0.0 {
+                out.push(Triplet::new(eqs[a] as usize, eqs[b] as usize, m[a][b]));
+            }
         }
     }
 }
@@ -159,17 +257,17 @@ pub fn stiffness(
     dofs: &Dofs,
 ) -> Result<SparseColMat<usize, f64>, faer::sparse::CreationError> {
     let mut triplets = zone_stiffness(&model.zones, &model.materials.zone, dofs);
+    let x = model.nodes.current();
+    let terms = |n: u32, d: usize| dofs.terms(&model.bodies, &x, n, d);
     if !model.contacts.is_empty() {
-        let x = model.nodes.current();
         let (blocks, contacts, laws) = (&model.blocks, &model.contacts, &model.materials.joint);
-        triplets.extend(contact_stiffness(blocks, contacts, laws, &x, dofs));
+        triplets.extend(contact_stiffness(blocks, contacts, laws, &x, &terms));
+    }
+    if !model.bodies.is_empty() {
+        triplets.extend(dofs.bodies.stiffness(&model.bodies, &model.materials.zone));
     }
     if !model.supports.is_empty() {
-        triplets.extend(support_stiffness(
-            &model.supports,
-            &dofs.of_node,
-            &dofs.supports,
-        ));
+        triplets.extend(support_stiffness(&model.supports, &terms, &dofs.supports));
     }
     SparseColMat::try_new_from_triplets(dofs.count, dofs.count, &triplets)
 }
@@ -185,7 +283,7 @@ pub fn contact_stiffness(
     contacts: &Contacts,
     laws: &[Box<dyn JointLaw>],
     x: &[[f64; 2]],
-    dofs: &Dofs,
+    terms: &(dyn Fn(u32, usize) -> Terms + Sync),
 ) -> Vec<Triplet<usize, usize, f64>> {
     let at = |n: u32| x[n as usize];
     (0..contacts.len())
@@ -201,10 +299,10 @@ pub fn contact_stiffness(
             let [j, k] = blocks.edges[e as usize];
             let nodes = [i, j, k];
             let frame = |a: usize, b: usize| kn * n[a] * n[b] + ks * t[a] * t[b];
-            let eq: [u32; 6] = std::array::from_fn(|r| dofs.of_node[nodes[r / 2] as usize][r % 2]);
+            let comps: [Terms; 6] = std::array::from_fn(|r| terms(nodes[r / 2], r % 2));
             let mut out = Vec::with_capacity(21);
-            lower_triplets(
-                &eq,
+            expanded_triplets(
+                &comps,
                 |r, q| len * w[r / 2] * w[q / 2] * frame(r % 2, q % 2),
                 &mut out,
             );

@@ -24,11 +24,14 @@
 //! slides or falls on its joints is named when the iterations run out and its corrections have
 //! not shrunk (`moving`). Neither ends as converged or at a bare iteration limit.
 //!
-//! What it does not yet do (`implicit` is refused, `auto` cycles explicitly): rigid and simple
-//! blocks, the large-strain zone update.
+//! Rigid and simple blocks bring their generalised displacements as unknowns (`bodies`).
+//!
+//! What it does not yet do (`implicit` is refused, `auto` cycles explicitly): the large-strain
+//! zone update.
 
 mod anderson;
 pub mod assemble;
+mod bodies;
 mod commit;
 mod factor;
 mod moving;
@@ -48,10 +51,8 @@ use factor::Factor;
 use moving::Movement;
 
 /// Why the implicit path cannot solve `model` as it is, or `None` if it can.
-pub fn unsupported(model: &Model, scheme: ZoneScheme) -> Option<&'static str> {
-    if !model.bodies.is_empty() {
-        Some("rigid and simple blocks are not yet assembled")
-    } else if scheme == ZoneScheme::LargeStrain {
+pub fn unsupported(scheme: ZoneScheme) -> Option<&'static str> {
+    if scheme == ZoneScheme::LargeStrain {
         Some("the large-strain zone update (`solve.large_strain`) is not assembled")
     } else {
         None
@@ -121,12 +122,12 @@ pub fn method(
     match (asked, mode) {
         (SolveMethod::Explicit, _) => Ok(Method::Explicit),
         (SolveMethod::Auto, SolveMode::Dynamic) => Ok(Method::Explicit),
-        (SolveMethod::Auto, SolveMode::Static) => Ok(match unsupported(model, scheme) {
+        (SolveMethod::Auto, SolveMode::Static) => Ok(match unsupported(scheme) {
             Some(reason) => Method::Fallback(reason),
             None if model.blocks.len() > 1 => Method::Fallback(SLOW_SLIP),
             None => Method::Implicit,
         }),
-        (SolveMethod::Implicit, _) => match unsupported(model, scheme) {
+        (SolveMethod::Implicit, _) => match unsupported(scheme) {
             Some(reason) => Err(reason),
             None => Ok(Method::Implicit),
         },
@@ -168,7 +169,7 @@ pub fn solve(
     observer: &mut dyn Observer,
 ) -> (Solution, Cost) {
     let mut cost = Cost::default();
-    let dofs = Dofs::of(&model.nodes, &model.supports);
+    let dofs = Dofs::of(&model.nodes, &model.bodies, &model.supports);
     cost.unknowns = dofs.count;
     let loose = support::unsupported_blocks(model);
     // A block nothing holds is named before any factorization: the stage fails as a mechanism.
@@ -189,6 +190,7 @@ pub fn solve(
     let mut history = Vec::new();
     let mut rhs = vec![0.0; dofs.count];
     let mut du = vec![[0.0; 2]; model.nodes.len()];
+    let mut dq = vec![[0.0; crate::model::bodies::DOFS]; model.bodies.len()];
     let mut iteration = 0u64;
     let mut movement = Movement::new(model.blocks.len());
     let window_start = max_iterations.checked_sub(moving::WINDOW);
@@ -236,12 +238,15 @@ pub fn solve(
             break Status::CycleLimit;
         }
         dofs.gather(&model.nodes.force, &mut rhs);
+        dofs.bodies.residual(&model.bodies, &mut rhs);
         dofs.supports.residual(&model.supports, &mut rhs);
         llt.solve_in_place(&mut rhs);
         // Blocks still moving are judged on the plain correction K⁻¹R, which the residual of a
         // block the joints cannot hold keeps up; the accelerated one mixes in earlier iterates.
         if window_start.is_some_and(|w| iteration >= w) {
             dofs.scatter(&rhs, &mut du);
+            dofs.bodies.expand(&rhs, &mut dq);
+            bodies::node_motion(&model.bodies, &model.nodes, &dq, &mut du);
             movement.record(model, &du, Some(iteration) == window_start);
         }
         anderson.step(&x, &mut rhs);
@@ -249,6 +254,16 @@ pub fn solve(
             *xi += d;
         }
         dofs.scatter(&rhs, &mut du);
+        if !model.bodies.is_empty() {
+            dofs.bodies.expand(&rhs, &mut dq);
+            let Model {
+                nodes,
+                bodies,
+                materials,
+                ..
+            } = model;
+            cycle.body_displace(nodes, bodies, &materials.zone, &dq, &mut du);
+        }
         cycle.displace(model, &du, params);
         dofs.supports.displace(&mut model.supports, &rhs);
         iteration += 1;

@@ -7,7 +7,7 @@
 
 use faer::sparse::Triplet;
 
-use super::assemble::{FIXED, lower_triplets};
+use super::assemble::{FIXED, Terms, expanded_triplets, lower_triplets};
 use crate::support::Supports;
 
 /// The supports' unknowns: each cable node's equation number and each liner node's three (x, y,
@@ -89,7 +89,7 @@ impl SupportDofs {
 /// - a link of stiffness k between a liner node and its rock node, in x and in y.
 pub fn support_stiffness(
     supports: &Supports,
-    rock: &[[u32; 2]],
+    rock: &dyn Fn(u32, usize) -> Terms,
     dofs: &SupportDofs,
 ) -> Vec<Triplet<usize, usize, f64>> {
     let mut out = Vec::new();
@@ -105,16 +105,17 @@ pub fn support_stiffness(
         }
         let k = c.props[c.group[n] as usize].grout_stiffness * c.length[n];
         let (a, w, host) = (c.axis[n], c.weight[n], c.host[n]);
-        let mut eq = [FIXED; 7];
+        let mut comps = [Terms::default(); 7];
         let mut v = [0.0; 7];
         for h in 0..3 {
             for d in 0..2 {
-                eq[2 * h + d] = rock[host[h] as usize][d];
+                comps[2 * h + d] = rock(host[h], d);
                 v[2 * h + d] = w[h] * a[d];
             }
         }
-        (eq[6], v[6]) = (cable, -1.0);
-        lower_triplets(&eq, |r, q| k * v[r] * v[q], &mut out);
+        comps[6].push(cable, 1.0);
+        v[6] = -1.0;
+        expanded_triplets(&comps, |r, q| k * v[r] * v[q], &mut out);
     }
     let l = &supports.liners;
     for (e, &[a, b]) in l.element.iter().enumerate() {
@@ -139,13 +140,11 @@ pub fn support_stiffness(
             continue;
         }
         let k = l.link_stiffness[link];
-        let r = rock[l.link_rock[link] as usize];
-        for d in 0..2 {
-            lower_triplets(
-                &[r[d], liner[d]],
-                |i, j| if i == j { k } else { -k },
-                &mut out,
-            );
+        for (d, &eq) in liner.iter().enumerate().take(2) {
+            let mut own = Terms::default();
+            own.push(eq, 1.0);
+            let comps = [rock(l.link_rock[link], d), own];
+            expanded_triplets(&comps, |i, j| if i == j { k } else { -k }, &mut out);
         }
     }
     out
