@@ -53,13 +53,18 @@ enum Command {
     },
 }
 
-/// Progress bar over cycles showing the unbalanced-force ratio.
-struct Progress(ProgressBar);
+/// Progress bar over cycles (or implicit iterations) showing the unbalanced-force ratio, and the
+/// last factorization's size and time when the solve is implicit.
+struct Progress(ProgressBar, String);
 
 impl Observer for Progress {
     fn monitored(&mut self, row: &HistoryRow) {
         self.0.set_position(row.cycle);
-        self.0.set_message(format!("ratio {:.2e}", row.ratio));
+        self.0
+            .set_message(format!("ratio {:.2e}{}", row.ratio, self.1));
+    }
+    fn factorized(&mut self, bytes: usize, seconds: f64) {
+        self.1 = format!(", factor {:.1} MB in {seconds:.3} s", bytes as f64 / 1e6);
     }
 }
 
@@ -79,7 +84,7 @@ fn run(scene_path: &Path, out: Option<PathBuf>, quiet: bool) -> anyhow::Result<E
         ProgressStyle::with_template("{elapsed_precise} [{bar:30}] {pos}/{len} cycles, {msg}")?
             .progress_chars("=> "),
     );
-    let mut progress = Progress(bar);
+    let mut progress = Progress(bar, String::new());
     let result = run_scene(&scene, &out, &mut progress)?;
     progress.0.finish_and_clear();
     let s = &result.summary;

@@ -53,12 +53,32 @@ impl Observer for Writing<'_> {
         }
         self.inner.monitored(&row);
     }
+    fn factorized(&mut self, bytes: usize, seconds: f64) {
+        self.inner.factorized(bytes, seconds);
+    }
     fn output_step(&mut self, cycle: u64, _time: f64, model: &Model, _c: &mut Cycle) {
         let t = Instant::now();
         if let Err(e) = self.writer.write_step(model, (cycle + self.offset) as f64) {
             self.error.get_or_insert(e);
         }
         self.output_seconds += t.elapsed().as_secs_f64();
+    }
+}
+
+/// Why an `auto` stage's implicit solve hands over to explicit cycling: it ended at its
+/// iteration limit or failed (a block nothing holds, or one still moving); `None` when it
+/// converged, was interrupted, or the method was asked for by name.
+fn hand_over(asked: SolveMethod, solution: &Solution) -> Option<String> {
+    if asked != SolveMethod::Auto {
+        return None;
+    }
+    match &solution.status {
+        Status::CycleLimit => Some(format!(
+            "the implicit solve did not converge in {} iterations, ratio {:.2e}",
+            solution.cycles, solution.final_ratio
+        )),
+        Status::Failed(reason) => Some(reason.clone()),
+        Status::Converged | Status::Interrupted => None,
     }
 }
 
@@ -91,12 +111,12 @@ pub fn run_scene(
 }
 
 /// The path stage `i` of `plan` takes on `model`; an error naming the field when it asks the
-/// implicit path of a model that path cannot solve. The model's features it depends on (blocks,
-/// bodies, supports, zoning) are set up once, so the answer holds from the start of the run.
+/// implicit path of a model that path cannot solve. The model's feature it depends on (its zone
+/// scheme) is set up once, so the answer holds from the start of the run.
 fn stage_method(plan: &Plan, i: usize, model: &Model) -> anyhow::Result<Method> {
     let spec = &plan.stages[i].solve;
     let scheme = ZoneScheme::of(model, spec.large_strain);
-    implicit::method(spec.method, spec.mode, model, scheme).map_err(|reason| {
+    implicit::method(spec.method, spec.mode, scheme).map_err(|reason| {
         let field = if plan.staged {
             format!("stages[{i}].solve.method (or the scene's solve.method)")
         } else {
@@ -140,6 +160,7 @@ fn build_solve_write(
             error: None,
             offset: cycles,
         };
+        let mut handed_over = None;
         let solution = match method {
             Method::Implicit => {
                 let (solution, cost) = implicit::solve(
@@ -152,13 +173,28 @@ fn build_solve_write(
                 );
                 seconds.implicit += cost.seconds();
                 implicit_cost = Some(implicit_cost.map_or(cost, |c| c.plus(cost)));
-                solution
+                match hand_over(spec.method, &solution) {
+                    // `auto`: what the iterations could not settle, explicit cycling relaxes from
+                    // where they left the model.
+                    Some(reason) => {
+                        solver = Solver::new(model, &stage.solve, scene.output.every);
+                        ensure_time_step(&solver)?;
+                        writing.offset += solution.cycles;
+                        let rest = solver.solve(model, &mut writing);
+                        handed_over = Some(reason);
+                        solution.then(rest)
+                    }
+                    None => solution,
+                }
             }
             _ => solver.solve(model, &mut writing),
         };
         if spec.method != SolveMethod::Explicit {
             methods.push(match &method {
-                Method::Implicit => "implicit".to_string(),
+                Method::Implicit => match &handed_over {
+                    Some(reason) => format!("implicit, then explicit ({reason})"),
+                    None => "implicit".to_string(),
+                },
                 Method::Fallback(reason) => format!("explicit ({reason})"),
                 Method::Explicit => "explicit".to_string(),
             });

@@ -56,12 +56,33 @@ pub struct Solution {
     pub final_ratio: f64,
 }
 
+impl Solution {
+    /// This solve followed by `rest`, which went on from where it stopped: the cycles and the
+    /// history of both (`rest`'s counted on from this one's), `rest`'s status and final ratio.
+    pub fn then(mut self, rest: Solution) -> Solution {
+        let offset = self.cycles;
+        self.history.extend(rest.history.iter().map(|r| HistoryRow {
+            cycle: r.cycle + offset,
+            ..*r
+        }));
+        Solution {
+            status: rest.status,
+            cycles: offset + rest.cycles,
+            history: self.history,
+            final_ratio: rest.final_ratio,
+        }
+    }
+}
+
 /// Receives progress during a solve.
 pub trait Observer: Send {
     /// After each monitor step.
     fn monitored(&mut self, _row: &HistoryRow) {}
     /// When an intermediate output step is due (every `output_every` cycles).
     fn output_step(&mut self, _cycle: u64, _time: f64, _model: &Model, _cycle_state: &mut Cycle) {}
+    /// After an implicit solve factorized its stiffness: the factor's size (bytes of its
+    /// values) and the seconds assembling and factorizing took.
+    fn factorized(&mut self, _bytes: usize, _seconds: f64) {}
 }
 
 /// An observer that ignores everything.

@@ -113,9 +113,9 @@ fn implicit_plastic_hole_matches_explicit() {
 }
 
 /// Two blocks across a horizontal glued joint under 1 MPa: `implicit` carries the load through
-/// the contacts as the explicit path does, in deformable, rigid and simple blocks; `auto` keeps a
-/// model with contacts explicit and says why; the large-strain update is refused by `implicit`,
-/// naming the field and the reason.
+/// the contacts as the explicit path does, in deformable, rigid and simple blocks; `auto` takes
+/// the implicit path; the large-strain update is refused by `implicit`, naming the field and the
+/// reason.
 #[test]
 fn implicit_contacts_and_what_it_refuses() {
     let text = |method: &str, mode: &str, law: &str| {
@@ -163,12 +163,8 @@ fn implicit_contacts_and_what_it_refuses() {
         &scene("auto", "deformable", "coulomb"),
         "adit-test-implicit-auto",
     );
-    assert!(a.summary.implicit.is_none());
-    assert!(
-        a.summary.methods[0].starts_with("explicit (contacts"),
-        "{:?}",
-        a.summary.methods
-    );
+    assert_eq!(a.summary.methods, ["implicit"]);
+    assert_eq!(a.summary.status, "converged");
     // Rigid and simple blocks: their generalised displacements are the unknowns; the glued
     // (linear) joint gives the explicit settlement to the solve's tolerance.
     let settlement = |r: &adit::RunResult| {
@@ -351,6 +347,25 @@ fn implicit_names_a_sliding_block() {
         "adit-test-implicit-hold",
     );
     assert_eq!(held.summary.status, "converged");
+    // `auto` hands the sliding block over to explicit cycling, saying why.
+    let auto = run(
+        &Scene::from_json(
+            &text.replace(
+                r#""method": "implicit""#,
+                r#""method": "auto", "max_cycles": 3000"#,
+            ),
+            "slide_auto",
+        )
+        .unwrap(),
+        "adit-test-implicit-slide-auto",
+    );
+    let said = &auto.summary.methods[0];
+    assert!(
+        said.starts_with("implicit, then explicit (implicit: after 120 iterations 1 block(s)"),
+        "{said}"
+    );
+    assert_eq!(auto.summary.cycles, 120 + 3000, "{:?}", auto.summary.status);
+    assert!(auto.summary.implicit.is_some());
 }
 
 /// The patch test solved implicitly: a graded, irregular mesh of a square loaded from zero stress
@@ -390,4 +405,30 @@ fn implicit_passes_the_patch_test() {
         .fold(0.0, f64::max);
     println!("largest stress error {worst:.3e} Pa");
     assert!(worst < 1e-8 * 2e6, "largest stress error {worst} Pa");
+}
+
+/// The observer (the CLI's progress bar) hears of each factorization, with the factor's size
+/// and the time it took, as many times as `summary.json` counts.
+#[test]
+fn each_factorization_is_reported_to_the_observer() {
+    struct Heard(Vec<(usize, f64)>);
+    impl adit::solve::Observer for Heard {
+        fn factorized(&mut self, bytes: usize, seconds: f64) {
+            self.0.push((bytes, seconds));
+        }
+    }
+    let mut sc = model_scene("models/kirsch.json");
+    sc.solve.method = adit::scene::SolveMethod::Implicit;
+    let out = std::env::temp_dir().join("adit-test-implicit-heard");
+    let _ = std::fs::remove_dir_all(&out);
+    let mut heard = Heard(Vec::new());
+    let r = adit::run_scene(&sc, &out, &mut heard).unwrap();
+    let cost = r.summary.implicit.unwrap();
+    assert_eq!(heard.0.len() as u64, cost.factorizations);
+    assert!(
+        heard
+            .0
+            .iter()
+            .all(|&(b, s)| b == 8 * cost.factor_nonzeros && s > 0.0)
+    );
 }

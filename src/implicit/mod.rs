@@ -59,11 +59,6 @@ pub fn unsupported(scheme: ZoneScheme) -> Option<&'static str> {
     }
 }
 
-/// Why `auto` keeps a model with contacts explicit.
-const SLOW_SLIP: &str = "contacts between blocks: slip converges on the joints' initial \
-                         stiffness in hundreds of iterations, and a wedge about to move can \
-                         exhaust them; implicit runs them when asked";
-
 /// What an implicit solve cost (summed over the stages in `summary.json`).
 #[derive(Debug, Clone, Copy, Default, PartialEq, serde::Serialize)]
 pub struct Cost {
@@ -111,12 +106,13 @@ pub enum Method {
     Fallback(&'static str),
 }
 
-/// The path `asked` takes on `model`; an error (the reason) when `implicit` is asked of a model
-/// the implicit path cannot solve.
+/// The path `asked` takes on a model of zone `scheme`; an error (the reason) when `implicit` is
+/// asked of what the implicit path cannot solve. `auto` takes the implicit path for every static
+/// solve it can; a stage whose iterations do not converge is then handed over to explicit
+/// cycling (`run`).
 pub fn method(
     asked: SolveMethod,
     mode: SolveMode,
-    model: &Model,
     scheme: ZoneScheme,
 ) -> Result<Method, &'static str> {
     match (asked, mode) {
@@ -124,7 +120,6 @@ pub fn method(
         (SolveMethod::Auto, SolveMode::Dynamic) => Ok(Method::Explicit),
         (SolveMethod::Auto, SolveMode::Static) => Ok(match unsupported(scheme) {
             Some(reason) => Method::Fallback(reason),
-            None if model.blocks.len() > 1 => Method::Fallback(SLOW_SLIP),
             None => Method::Implicit,
         }),
         (SolveMethod::Implicit, _) => match unsupported(scheme) {
@@ -136,11 +131,16 @@ pub fn method(
 
 /// The model's stiffness over `dofs`, factorized; an error in words when it is not positive
 /// definite.
-fn factorize(model: &Model, dofs: &Dofs, cost: &mut Cost) -> Result<Factor, String> {
-    let t = Instant::now();
+fn factorize(
+    model: &Model,
+    dofs: &Dofs,
+    cost: &mut Cost,
+    observer: &mut dyn Observer,
+) -> Result<Factor, String> {
+    let start = Instant::now();
     let k = stiffness(model, dofs)
         .map_err(|e| format!("implicit: the stiffness could not be assembled ({e:?})"))?;
-    cost.assemble_s += t.elapsed().as_secs_f64();
+    cost.assemble_s += start.elapsed().as_secs_f64();
     cost.matrix_nonzeros = cost.matrix_nonzeros.max(k.compute_nnz());
     let t = Instant::now();
     let factor = Factor::new(k.as_ref());
@@ -148,6 +148,8 @@ fn factorize(model: &Model, dofs: &Dofs, cost: &mut Cost) -> Result<Factor, Stri
     cost.factorizations += 1;
     if let Ok(f) = &factor {
         cost.factor_nonzeros = cost.factor_nonzeros.max(f.nonzeros());
+        let bytes = f.nonzeros() * std::mem::size_of::<f64>();
+        observer.factorized(bytes, start.elapsed().as_secs_f64());
     }
     factor.map_err(|e| {
         format!(
@@ -174,7 +176,7 @@ pub fn solve(
     let loose = support::unsupported_blocks(model);
     // A block nothing holds is named before any factorization: the stage fails as a mechanism.
     let mut factor = if loose.is_empty() {
-        factorize(model, &dofs, &mut cost)
+        factorize(model, &dofs, &mut cost, observer)
     } else {
         let names: Vec<String> = loose.iter().take(10).map(|b| b.to_string()).collect();
         Err(format!(
@@ -269,7 +271,7 @@ pub fn solve(
         iteration += 1;
         if cycle.detections() != detections {
             detections = cycle.detections();
-            factor = factorize(model, &dofs, &mut cost);
+            factor = factorize(model, &dofs, &mut cost, observer);
             anderson.reset();
         }
     };
