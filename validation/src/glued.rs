@@ -3,7 +3,7 @@
 //! stiffness grows. Reported against the joint normal stiffness.
 
 use adit::Scene;
-use adit::scene::{JointLawKind, JointMaterial, JointSetSpec};
+use adit::scene::{JointLawKind, JointMaterial, JointSetSpec, SolveMethod};
 
 use crate::kirsch_case::{KirschResult, OuterLoad, run};
 
@@ -43,9 +43,45 @@ pub fn glued_scene(kirsch: &Scene, k: f64) -> Scene {
 
 /// Run the glued Kirsch case at normal stiffness `k` (Pa/m).
 pub fn run_glued(kirsch: &Scene, k: f64) -> anyhow::Result<KirschResult> {
+    run_glued_by(kirsch, k, SolveMethod::Explicit)
+}
+
+/// [`run_glued`] solved by `method` (`solve.method`); the row's case names it.
+pub fn run_glued_by(kirsch: &Scene, k: f64, method: SolveMethod) -> anyhow::Result<KirschResult> {
+    let mut s = glued_scene(kirsch, k);
+    s.solve.method = method;
     run(
-        &glued_scene(kirsch, k),
-        &format!("kirsch, glued joints, kn = {k:.0e} Pa/m"),
+        &s,
+        &format!(
+            "kirsch, glued joints, kn = {k:.0e} Pa/m{}",
+            crate::method_suffix(method)
+        ),
+        OuterLoad::Scene,
+    )
+}
+
+/// The glued Kirsch scene with Coulomb joints instead (friction `friction` degrees, no cohesion):
+/// joints near the hole slip, so the answer departs from Kirsch's; solved by `method`.
+pub fn run_coulomb_by(
+    kirsch: &Scene,
+    k: f64,
+    friction: f64,
+    method: SolveMethod,
+) -> anyhow::Result<KirschResult> {
+    let mut s = glued_scene(kirsch, k);
+    let m = s
+        .joint_materials
+        .get_mut("glued")
+        .expect("the glued material");
+    m.law = JointLawKind::Coulomb;
+    m.friction = friction;
+    s.solve.method = method;
+    run(
+        &s,
+        &format!(
+            "kirsch, Coulomb joints φ = {friction}°, kn = {k:.0e} Pa/m{}",
+            crate::method_suffix(method)
+        ),
         OuterLoad::Scene,
     )
 }
@@ -68,5 +104,13 @@ mod tests {
             "wall displacement {}",
             r.wall_displacement
         );
+        // Implicitly, glued and Coulomb (φ = 30°: slipping near the hole) joints meet the same
+        // bounds as the explicit answer.
+        let i = run_glued_by(&scaled(&kirsch, 2.0), 1e11, SolveMethod::Implicit).unwrap();
+        let c = run_coulomb_by(&scaled(&kirsch, 2.0), 1e11, 30.0, SolveMethod::Implicit).unwrap();
+        for r in [i, c] {
+            assert_eq!(r.status, "converged", "{r:?}");
+            assert!(r.stress_l2 < 0.05 && r.wall_displacement < 0.10, "{r:?}");
+        }
     }
 }

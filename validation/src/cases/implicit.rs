@@ -9,7 +9,7 @@ use crate::peer;
 use crate::plot::{Series, speed_and_convergence};
 use crate::report::CaseReport;
 use crate::salencon::{self, Rock, WEAK_ROCK};
-use crate::{bundled, gravity, incompressible, lined, modes, pullout};
+use crate::{bundled, glued, gravity, incompressible, lined, modes, pullout};
 use adit::scene::{BlockMode, SolveMethod};
 
 pub struct Implicit;
@@ -89,6 +89,14 @@ impl Case for Implicit {
         for fraction in [0.25, 0.6] {
             both(&|method| Ok(pullout::run_by(fraction, 0.1, method)?.0))?;
         }
+        both(&|method| {
+            let fractions = [0.8, 0.6, 0.5, 0.4, 0.3, 0.2, 0.1, 0.05, 0.0];
+            Ok(salencon::ground_reaction_by(&cx.kirsch, 1.0, &fractions, method)?.1)
+        })?;
+        for k in [1e11, 1e12] {
+            both(&|method| Ok(glued::run_glued_by(&cx.kirsch, k, method)?.report()))?;
+        }
+        both(&|method| Ok(glued::run_coulomb_by(&cx.kirsch, 1e11, 30.0, method)?.report()))?;
         let dir = cx.root.join("target/validation/bundled");
         let mut tunnel_ramped = None;
         for file in ["models/tunnel.json", "models/jointed_tunnel.json"] {
@@ -154,7 +162,10 @@ impl Case for Implicit {
              implicit rows give the change of the median wall closure (the largest closures, in \
              the case names, differ by design: released, a loose rigid or simple wedge keeps \
              drifting explicitly at the speed it had, as in UDEC, while the static solve leaves it \
-             where it lost its clamping, as the deformable wedges stop). \
+             where it lost its clamping, as the deformable wedges stop); further, Salençon's \
+             ground reaction curve (staged support pressures 100 % to 0 %), the Kirsch model cut \
+             by glued joints (kn = 1e11 and 1e12 Pa/m) and by the same joints with Coulomb \
+             friction 30° (slipping near the hole). \
              Cycles are the explicit cycles or the implicit iterations; the seconds include meshing \
              and setting up.\n"
         );
