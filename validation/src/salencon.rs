@@ -632,7 +632,10 @@ mod tests {
         )
         .unwrap();
         assert!(i.errors["grc"] < 0.05, "{i:?}");
-        assert!((i.errors["grc"] - r.errors["grc"]).abs() < 0.01, "{i:?} {r:?}");
+        assert!(
+            (i.errors["grc"] - r.errors["grc"]).abs() < 0.01,
+            "{i:?} {r:?}"
+        );
     }
 
     /// Coarse twins of the sweep. On the shipped mesh at ν = 0.45 plain triangles lock (−15 %)
