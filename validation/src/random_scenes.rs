@@ -13,6 +13,7 @@
 use std::time::Instant;
 
 use adit::Scene;
+use adit::scene::SolveMethod;
 use adit::solve::Quiet;
 use proptest::strategy::{Strategy, ValueTree};
 use proptest::test_runner::{Config, TestRng, TestRunner};
@@ -140,7 +141,13 @@ impl Outcome {
 
 /// Run one draw (output written under the system's temporary directory).
 pub fn run(d: &Draw) -> anyhow::Result<Outcome> {
-    let sc = scene(d)?;
+    run_by(d, SolveMethod::Explicit)
+}
+
+/// [`run`] solved by `method` (`solve.method`).
+pub fn run_by(d: &Draw, method: SolveMethod) -> anyhow::Result<Outcome> {
+    let mut sc = scene(d)?;
+    sc.solve.method = method;
     // A directory of its own per run: tests run draws on several threads of one process.
     static RUNS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
     let run = RUNS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
@@ -327,6 +334,22 @@ mod tests {
         #[test]
         fn random_jointed_boxes_stay_sane(d in draw()) {
             let o = run(&d).unwrap();
+            prop_assert!(o.check().is_ok(), "{:?}: {:?}", d, o.check());
+        }
+    }
+
+    proptest! {
+        // Other scenes, solved by `auto`: the implicit path, handing over to explicit cycling
+        // what it cannot settle (a sliding or loose block); the same property.
+        #![proptest_config(ProptestConfig {
+            cases: 32,
+            rng_seed: proptest::test_runner::RngSeed::Fixed(20261124),
+            failure_persistence: None,
+            ..ProptestConfig::default()
+        })]
+        #[test]
+        fn random_jointed_boxes_stay_sane_solved_by_auto(d in draw()) {
+            let o = run_by(&d, SolveMethod::Auto).unwrap();
             prop_assert!(o.check().is_ok(), "{:?}: {:?}", d, o.check());
         }
     }
