@@ -47,7 +47,7 @@ use crate::solve::{HistoryRow, Observer, Solution, Status};
 use anderson::Anderson;
 use assemble::{Dofs, stiffness};
 use commit::Committed;
-use factor::Factor;
+use factor::{Factor, FactorError};
 use moving::Movement;
 
 /// Why the implicit path cannot solve `model` as it is, or `None` if it can.
@@ -151,11 +151,12 @@ fn factorize(
         let bytes = f.nonzeros() * std::mem::size_of::<f64>();
         observer.factorized(bytes, start.elapsed().as_secs_f64());
     }
-    factor.map_err(|e| {
-        format!(
+    factor.map_err(|e| match e {
+        FactorError::Memory(reason) => reason,
+        FactorError::Numeric(e) => format!(
             "implicit: the stiffness is not positive definite ({e}): a part of the model is free \
              to move (a mechanism) or has no stiffness"
-        )
+        ),
     })
 }
 
