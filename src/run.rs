@@ -66,10 +66,12 @@ impl Observer for Writing<'_> {
 }
 
 /// Why an `auto` stage's implicit solve hands over to explicit cycling: it ended at its
-/// iteration limit or failed (a block nothing holds, or one still moving); `None` when it
-/// converged, was interrupted, or the method was asked for by name.
-fn hand_over(asked: SolveMethod, solution: &Solution) -> Option<String> {
-    if asked != SolveMethod::Auto {
+/// iteration limit or failed (a block nothing holds, or one still moving, or a factor that would
+/// not fit) with the model in a `sound` state; `None` when it converged, was interrupted, the
+/// monitor stopped it (a non-finite value, a runaway: the stage fails as it is), or the method
+/// was asked for by name.
+fn hand_over(asked: SolveMethod, solution: &Solution, sound: bool) -> Option<String> {
+    if asked != SolveMethod::Auto || !sound {
         return None;
     }
     match &solution.status {
@@ -163,7 +165,11 @@ fn build_solve_write(
         let mut handed_over = None;
         let solution = match method {
             Method::Implicit => {
-                let (solution, cost) = implicit::solve(
+                let implicit::Solved {
+                    solution,
+                    cost,
+                    sound,
+                } = implicit::solve(
                     model,
                     &mut solver.cycle,
                     &solver.params,
@@ -173,7 +179,7 @@ fn build_solve_write(
                 );
                 seconds.implicit += cost.seconds();
                 implicit_cost = Some(implicit_cost.map_or(cost, |c| c.plus(cost)));
-                match hand_over(spec.method, &solution) {
+                match hand_over(spec.method, &solution, sound) {
                     // `auto`: what the iterations could not settle, explicit cycling relaxes from
                     // where they left the model.
                     Some(reason) => {

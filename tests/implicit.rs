@@ -432,3 +432,27 @@ fn each_factorization_is_reported_to_the_observer() {
             .all(|&(b, s)| b == 8 * cost.factor_nonzeros && s > 0.0)
     );
 }
+
+/// `auto` hands over to explicit cycling only from a state it can go on from: when the monitor
+/// stops the implicit iterations (here a runaway: a soft square squashed by five times its
+/// modulus), the stage fails as it is, naming the cause.
+#[test]
+fn auto_does_not_hand_over_a_runaway() {
+    let text = r#"{
+        "name": "squash",
+        "materials": { "rock": { "density": 2500, "young": 1e6, "poisson": 0.25 } },
+        "region": { "polygon": [[0, 0], [1, 0], [1, 1], [0, 1]], "material": "rock",
+                     "edge_names": ["bottom", "right", "top", "left"] },
+        "zoning": { "edge_at_excavation": 0.25, "edge_far": 0.25 },
+        "boundary": [ { "part": "bottom", "fix": "xy" }, { "part": "top", "normal_stress": -5e6 } ],
+        "solve": { "method": "auto", "max_cycles": 2000 }
+    }"#;
+    let r = run(
+        &Scene::from_json(text, "squash").unwrap(),
+        "adit-test-implicit-squash",
+    );
+    assert_eq!(r.summary.status, "failed");
+    assert_eq!(r.summary.methods, ["implicit"]);
+    let reason = r.summary.reason.unwrap();
+    assert!(reason.contains("runaway displacement"), "{reason}");
+}

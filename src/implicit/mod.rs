@@ -129,8 +129,9 @@ pub fn method(
     }
 }
 
-/// The model's stiffness over `dofs`, factorized; an error in words when it is not positive
-/// definite.
+/// The model's stiffness over `dofs`, factorized; an
+/// error in words when it is not positive definite or its factor would not fit in memory. Its
+/// size and time go to `observer`.
 fn factorize(
     model: &Model,
     dofs: &Dofs,
@@ -160,6 +161,17 @@ fn factorize(
     })
 }
 
+/// How an implicit solve ended.
+pub struct Solved {
+    pub solution: Solution,
+    pub cost: Cost,
+    /// Whether the model is left in a state explicit cycling can go on from: false when the
+    /// monitor stopped the iterations (a non-finite value, a runaway displacement,
+    /// interpenetration), true otherwise (converged, at the iteration limit, or stopped on a
+    /// mechanism or a factorization before the state went wrong).
+    pub sound: bool,
+}
+
 /// Solve `model` to static equilibrium (ratio below `ratio`, at most `max_iterations`
 /// iterations), reporting each iteration to `observer` as a history row. The stiffness is
 /// factorized again when contacts are detected anew.
@@ -170,7 +182,8 @@ pub fn solve(
     ratio: f64,
     max_iterations: u64,
     observer: &mut dyn Observer,
-) -> (Solution, Cost) {
+) -> Solved {
+    let mut sound = true;
     let mut cost = Cost::default();
     let dofs = Dofs::of(&model.nodes, &model.bodies, &model.supports);
     cost.unknowns = dofs.count;
@@ -211,7 +224,10 @@ pub fn solve(
         cycle.balance(model, params);
         let m = match cycle.monitor(model) {
             Ok(m) => m,
-            Err(reason) => break Status::Failed(format!("iteration {iteration}: {reason}")),
+            Err(reason) => {
+                sound = false;
+                break Status::Failed(format!("iteration {iteration}: {reason}"));
+            }
         };
         let row = HistoryRow {
             cycle: iteration,
@@ -286,5 +302,9 @@ pub fn solve(
         history,
         final_ratio,
     };
-    (solution, cost)
+    Solved {
+        solution,
+        cost,
+        sound,
+    }
 }

@@ -85,7 +85,7 @@ pub fn solve_by_method(
 ) -> (Solver, adit::solve::Solution, Option<adit::implicit::Cost>) {
     let mut solver = Solver::new(model, spec, 0);
     let (solution, cost) = if spec.method == adit::scene::SolveMethod::Implicit {
-        let (solution, cost) = adit::implicit::solve(
+        let adit::implicit::Solved { solution, cost, .. } = adit::implicit::solve(
             model,
             &mut solver.cycle,
             &solver.params,

@@ -74,7 +74,7 @@ pub fn solve(kirsch: &Scene, factor: f64, dir: &Path) -> anyhow::Result<PeerResu
             exact.stress(c[0], c[1])
         }).collect::<Vec<_>>(),
     });
-    let (solution, _) = adit::implicit::solve(
+    let adit::implicit::Solved { solution, .. } = adit::implicit::solve(
         model,
         &mut solver.cycle,
         &solver.params,
