@@ -208,7 +208,7 @@ pub fn solve(
     let mut du = vec![[0.0; 2]; model.nodes.len()];
     let mut dq = vec![[0.0; crate::model::bodies::DOFS]; model.bodies.len()];
     let mut iteration = 0u64;
-    let mut movement = Movement::new(model.blocks.len());
+    let mut movement = Movement::new(model);
     let window_start = max_iterations.checked_sub(moving::WINDOW);
     let mut detections = cycle.detections();
     let mut anderson = Anderson::new(dofs.count);
