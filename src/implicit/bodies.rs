@@ -10,11 +10,11 @@
 //! constraint's reaction has no part.
 
 use faer::sparse::Triplet;
-use nalgebra::{DMatrix, SymmetricEigen};
 
 use super::assemble::{Terms, plane_strain};
 use crate::law::ZoneLaw;
-use crate::model::bodies::{Bodies, BodyMode, DOFS, Dof, Gram, velocity_map};
+use crate::model::Nodes;
+use crate::model::bodies::{Bodies, BodyMode, DOFS, Dof, NO_BODY, allowed_motions, velocity_map};
 
 /// The bodies' unknowns.
 #[derive(Debug, Clone, Default)]
@@ -26,38 +26,16 @@ pub struct BodyDofs {
     pub basis: Vec<[Dof; DOFS]>,
 }
 
-/// An orthonormal basis of the generalised motions over the first `dofs` components that the
-/// constraint Gram `g` allows (its null space: eigenvalues below 1e-9 of the largest, as
-/// `model::bodies::projector` takes them); the unit vectors for a free body.
-fn allowed(g: &Gram, dofs: usize) -> Vec<Dof> {
-    let gd = DMatrix::from_fn(dofs, dofs, |i, j| g[i][j]);
-    let eig = SymmetricEigen::new(gd);
-    let largest = eig.eigenvalues.iter().fold(0.0f64, |m, &v| m.max(v.abs()));
-    let unit = |j: usize| std::array::from_fn(|i| if i == j { 1.0 } else { 0.0 });
-    if largest == 0.0 {
-        return (0..dofs).map(unit).collect();
-    }
-    (0..dofs)
-        .filter(|&j| eig.eigenvalues[j].abs() <= 1e-9 * largest)
-        .map(|j| {
-            std::array::from_fn(|i| {
-                if i < dofs {
-                    eig.eigenvectors[(i, j)]
-                } else {
-                    0.0
-                }
-            })
-        })
-        .collect()
-}
-
 impl BodyDofs {
     /// Number the bodies' unknowns from `first`; returns them and the next number.
     pub fn of(bodies: &Bodies, first: usize) -> (BodyDofs, usize) {
         let mut out = BodyDofs::default();
         let mut next = first;
         for k in 0..bodies.len() {
-            let cols = allowed(&bodies.constraint[k], bodies.mode[k].dofs());
+            let dofs = bodies.mode[k].dofs();
+            let unit = |j: usize| std::array::from_fn(|i| if i == j { 1.0 } else { 0.0 });
+            let cols = allowed_motions(&bodies.constraint[k], dofs)
+                .unwrap_or_else(|| (0..dofs).map(unit).collect());
             let mut basis = [[0.0; DOFS]; DOFS];
             basis[..cols.len()].copy_from_slice(&cols);
             out.first.push(next as u32);
@@ -148,9 +126,9 @@ impl BodyDofs {
 
 /// The displacement of each body node (m) to first order in the bodies' generalised
 /// displacements `dq`: T_i q, at the current positions (into `du`; other nodes untouched).
-pub fn node_motion(bodies: &Bodies, nodes: &crate::model::Nodes, dq: &[Dof], du: &mut [[f64; 2]]) {
+pub fn node_motion(bodies: &Bodies, nodes: &Nodes, dq: &[Dof], du: &mut [[f64; 2]]) {
     for (n, &k) in bodies.of_node.iter().enumerate() {
-        if k == crate::model::bodies::NO_BODY {
+        if k == NO_BODY {
             continue;
         }
         let (p, u, c) = (nodes.pos[n], nodes.disp[n], bodies.centroid[k as usize]);

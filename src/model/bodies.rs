@@ -105,12 +105,10 @@ impl Bodies {
     }
 }
 
-/// The mass-orthogonal projector onto the velocities a constraint allows, over the first `dofs`
-/// DOFs: with N an orthonormal basis of the null space of G (eigenvalues below 1e-9 of the
-/// largest), P = N (Nᵀ M N)⁻¹ Nᵀ M. It keeps what the constraint allows (P N = N) and removes the
-/// reaction: P M⁻¹ Cᵀλ = 0, so the body is in equilibrium when its force is a reaction. `None`
-/// for a free body (G = 0).
-pub fn projector(g: &Gram, mass: &Dof, dofs: usize) -> Option<Gram> {
+/// An orthonormal basis of the generalised motions over the first `dofs` DOFs that the
+/// constraint Gram `g` allows: its null space, the eigenvectors whose eigenvalues are below 1e-9
+/// of the largest (empty for a body held still); `None` for a free body (G = 0).
+pub fn allowed_motions(g: &Gram, dofs: usize) -> Option<Vec<Dof>> {
     use nalgebra::{DMatrix, SymmetricEigen};
     let gd = DMatrix::from_fn(dofs, dofs, |i, j| g[i][j]);
     let eig = SymmetricEigen::new(gd);
@@ -118,14 +116,34 @@ pub fn projector(g: &Gram, mass: &Dof, dofs: usize) -> Option<Gram> {
     if largest == 0.0 {
         return None;
     }
-    let free: Vec<usize> = (0..dofs)
-        .filter(|&i| eig.eigenvalues[i].abs() <= 1e-9 * largest)
-        .collect();
+    Some(
+        (0..dofs)
+            .filter(|&j| eig.eigenvalues[j].abs() <= 1e-9 * largest)
+            .map(|j| {
+                std::array::from_fn(|i| {
+                    if i < dofs {
+                        eig.eigenvectors[(i, j)]
+                    } else {
+                        0.0
+                    }
+                })
+            })
+            .collect(),
+    )
+}
+
+/// The mass-orthogonal projector onto the velocities a constraint allows, over the first `dofs`
+/// DOFs: with N the basis of `allowed_motions`, P = N (Nᵀ M N)⁻¹ Nᵀ M. It keeps what the
+/// constraint allows (P N = N) and removes the reaction: P M⁻¹ Cᵀλ = 0, so the body is in
+/// equilibrium when its force is a reaction. `None` for a free body (G = 0).
+pub fn projector(g: &Gram, mass: &Dof, dofs: usize) -> Option<Gram> {
+    use nalgebra::DMatrix;
+    let free = allowed_motions(g, dofs)?;
     let mut out = [[0.0; DOFS]; DOFS];
     if free.is_empty() {
         return Some(out);
     }
-    let n = DMatrix::from_fn(dofs, free.len(), |i, j| eig.eigenvectors[(i, free[j])]);
+    let n = DMatrix::from_fn(dofs, free.len(), |i, j| free[j][i]);
     let m = DMatrix::from_fn(dofs, dofs, |i, j| if i == j { mass[i] } else { 0.0 });
     let reduced = (n.transpose() * &m * &n).try_inverse()?;
     let p = &n * reduced * n.transpose() * m;
