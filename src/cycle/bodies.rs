@@ -32,9 +32,10 @@ struct BodyView<'a> {
 }
 
 /// A body's generalised out-of-balance force: Q = Σ T_iᵀ f_i over its nodes' gathered forces
-/// (`nodes.force`, N/m), plus its weight, minus A(σxx, σyy, 2σxy) on a simple block's strain DOFs (σ
-/// with the viscous stress `sv`), zero beyond its mode's DOFs; for a constrained body the part
-/// its constraint does not react to, q ← M P M⁻¹ q.
+/// (`nodes.force`, N/m; offsets from its centroid `c`, m), plus its weight, minus
+/// A(σxx, σyy, 2σxy) on a simple block's strain DOFs (`area` A in m², σ in Pa with the viscous
+/// stress `sv`), zero beyond its mode's DOFs; for a constrained body the part its constraint does
+/// not react to, q ← M P M⁻¹ q.
 fn generalised_force(
     b: &BodyView,
     nodes: &Nodes,
