@@ -77,8 +77,8 @@ impl SupportDofs {
     }
 }
 
-/// The installed supports' stiffness over the unknowns (lower triangle), with `rock` each rock
-/// node's equation numbers:
+/// The installed supports' stiffness over the unknowns (lower triangle), with `rock(n, d)` how
+/// component d of rock node n moves with the unknowns (`assemble::Dofs::terms`):
 /// - a cable segment of axial stiffness k = (EA/s)/L between its nodes' displacements;
 /// - a grout spring of stiffness kg ℓ: K = kg ℓ c cᵀ over c = (w_h a for each host node h, −1 for
 ///   the cable node), a the bolt's axis and w_h the host zone's shape-function weights, the
@@ -192,7 +192,7 @@ pub fn beam_stiffness(ea: f64, ei: f64, len: f64, axis: [f64; 2]) -> [[f64; 6]; 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::support::{LinerProps, Liners};
+    use crate::support::liner::tests::liner_on;
 
     /// The beam matrix is the linearization of the liner's own element forces: for any
     /// displacement d of a slanted element's two nodes, K d = −F(d) (the element is linear in
@@ -200,18 +200,7 @@ mod tests {
     #[test]
     fn the_beam_matrix_is_the_liner_forces_linearized() {
         let rock = [[0.3, -0.2], [1.1, 0.4]];
-        let mut l = Liners {
-            names: vec!["l".into()],
-            props: vec![LinerProps {
-                axial_stiffness: 3e9,
-                bending_stiffness: 2e6,
-                line_density: 1.0,
-                line_inertia: 1.0,
-            }],
-            active: vec![false],
-            ..Default::default()
-        };
-        l.add(0, &[[0, 1]], &rock, 1e-9);
+        let mut l = liner_on(&[[0, 1]], &rock);
         l.install(0, &[[0.0; 2]; 2]);
         let d = [[1e-3, -2e-3, 3e-3], [-0.5e-3, 1.5e-3, -1e-3]];
         l.disp = d.to_vec();
@@ -219,7 +208,13 @@ mod tests {
         // Rock displaced as the liner is: the links carry nothing.
         let rock_disp = [[d[0][0], d[0][1]], [d[1][0], d[1][1]]];
         l.forces(&rock_disp, &mut slots);
-        let k = beam_stiffness(3e9, 2e6, l.element_length[0], l.element_axis[0]);
+        let p = l.props[0];
+        let k = beam_stiffness(
+            p.axial_stiffness,
+            p.bending_stiffness,
+            l.element_length[0],
+            l.element_axis[0],
+        );
         let flat = [d[0][0], d[0][1], d[0][2], d[1][0], d[1][1], d[1][2]];
         for (r, row) in k.iter().enumerate() {
             let kd: f64 = row.iter().zip(&flat).map(|(a, b)| a * b).sum();

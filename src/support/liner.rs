@@ -261,13 +261,13 @@ impl Liners {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
 
     const ROCK: [[f64; 2]; 4] = [[0.0, 0.0], [1.0, 0.0], [1.0, 0.0], [2.0, 0.0]];
 
     /// A liner (EA = 1e9 N, EI = 1e6 N·m²) on the wall `edges` of rock nodes at `rock`.
-    fn liner_on(edges: &[[u32; 2]], rock: &[[f64; 2]]) -> Liners {
+    pub(crate) fn liner_on(edges: &[[u32; 2]], rock: &[[f64; 2]]) -> Liners {
         let mut l = Liners {
             names: vec!["l".into()],
             props: vec![LinerProps {

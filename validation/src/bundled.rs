@@ -57,8 +57,7 @@ pub fn run(
     );
     let m = &r.built.model;
     let wall = &r.built.plan.boundary.part_nodes["tunnel"];
-    let mut closures: Vec<f64> = crate::radial_displacements(m, wall).map(|u| -u).collect();
-    closures.sort_by(f64::total_cmp);
+    let closures = crate::modes::closures(m, wall);
     let yielded = (m.zones.state.iter())
         .filter(|&&s| s & (SHEAR_NOW | SHEAR_PAST | TENSION_NOW | TENSION_PAST) != 0)
         .count();

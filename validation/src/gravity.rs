@@ -10,7 +10,6 @@ use std::time::Instant;
 use adit::Scene;
 use adit::scene::SolveMethod;
 use adit::setup::setup;
-use adit::solve::Status;
 
 use crate::report::CaseReport;
 use crate::settle;
@@ -62,13 +61,7 @@ pub fn self_weight_by(h: f64, method: SolveMethod) -> anyhow::Result<CaseReport>
     let mut scene = column_scene(h, false);
     scene.solve.method = method;
     let mut b = setup(&scene)?;
-    let (_, solution, implicit) = crate::solve_by_method(&mut b.model, &scene.solve);
-    anyhow::ensure!(
-        solution.status == Status::Converged,
-        "column did not converge: {:?}",
-        solution.status
-    );
-    let cycles = solution.cycles;
+    let (cycles, implicit) = crate::settle_by_method(&mut b.model, &scene.solve, "column")?;
     let m = crate::constrained_modulus(YOUNG, POISSON);
     let model = &b.model;
     let (mut num, mut den) = (0.0, 0.0);

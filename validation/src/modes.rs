@@ -43,7 +43,7 @@ pub struct ModeRun {
 }
 
 /// Inward radial displacements of the nodes of `wall`, about the origin, m, in increasing order.
-fn closures(model: &Model, wall: &[u32]) -> Vec<f64> {
+pub fn closures(model: &Model, wall: &[u32]) -> Vec<f64> {
     let mut c: Vec<f64> = crate::radial_displacements(model, wall)
         .map(|u| -u)
         .collect();

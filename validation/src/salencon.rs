@@ -26,7 +26,6 @@ use adit::law::{SHEAR_NOW, SHEAR_PAST};
 use adit::scene::{SolveMethod, SolveSpec};
 use adit::scene::{Stage, ZoneLawKind};
 use adit::setup::setup;
-use adit::solve::Status;
 use adit::stage::Staging;
 
 use crate::kirsch_case::scaled;
@@ -274,12 +273,7 @@ fn measure(
     sc.solve.max_cycles += ramp;
     sc.solve.method = method;
     let mut b = setup(&sc)?;
-    let (_, sol, implicit) = crate::solve_by_method(&mut b.model, &sc.solve);
-    anyhow::ensure!(
-        sol.status == Status::Converged,
-        "Salençon case did not converge: {:?}",
-        sol.status
-    );
+    let (cycles, implicit) = crate::settle_by_method(&mut b.model, &sc.solve, "Salençon case")?;
     let (m, rp) = (&b.model, exact.plastic_radius());
     let z = &m.zones;
     let hole_area = b.plan.boundary.domain.holes[0].polygon.signed_area().abs();
@@ -334,7 +328,7 @@ fn measure(
             )
         },
         z.len(),
-        sol.cycles,
+        cycles,
         start.elapsed().as_secs_f64(),
         Some(h),
         &[
@@ -546,18 +540,13 @@ pub fn ground_reaction_by(
             method,
             ..st.solve.clone()
         };
-        let (_, sol, cost) = crate::solve_by_method(model, &spec);
+        let what = format!("ground reaction, stage {}", st.name);
+        let (stage_cycles, cost) = crate::settle_by_method(model, &spec, &what)?;
         implicit = match (implicit, cost) {
             (Some(a), Some(b)) => Some(a.plus(b)),
             (a, b) => a.or(b),
         };
-        anyhow::ensure!(
-            sol.status == Status::Converged,
-            "ground reaction, stage {}: {:?}",
-            st.name,
-            sol.status
-        );
-        cycles += sol.cycles;
+        cycles += stage_cycles;
         let pi = st.support_fraction * p0;
         curve.push(GrcPoint {
             pressure: pi,
