@@ -125,13 +125,17 @@ fn run(scene_path: &Path, out: Option<PathBuf>, quiet: bool) -> anyhow::Result<E
     if let Some(c) = &s.implicit {
         say!(
             "implicit: {} unknowns, factor of {} non-zeros ({:.1} MB), {} factorization(s), {} \
-             iteration(s); {:.3} s assembling, {:.3} s factorizing, {:.3} s iterating (cycles above \
-             count explicit cycles and implicit iterations together)",
+             iteration(s){}; {:.3} s assembling, {:.3} s factorizing, {:.3} s iterating (cycles \
+             above count explicit cycles and implicit iterations together)",
             c.unknowns,
             c.factor_nonzeros,
             c.factor_nonzeros as f64 * 8e-6,
             c.factorizations,
             c.iterations,
+            match c.cuts {
+                0 => String::new(),
+                n => format!(", {n} load step(s) halved"),
+            },
             c.assemble_s,
             c.factorize_s,
             c.iterate_s

@@ -169,14 +169,7 @@ fn build_solve_write(
                     solution,
                     cost,
                     sound,
-                } = implicit::solve(
-                    model,
-                    &mut solver.cycle,
-                    &solver.params,
-                    spec.ratio,
-                    spec.max_iterations,
-                    &mut writing,
-                );
+                } = implicit::solve(model, &mut solver.cycle, &solver.params, spec, &mut writing);
                 seconds.implicit += cost.seconds();
                 implicit_cost = Some(implicit_cost.map_or(cost, |c| c.plus(cost)));
                 match hand_over(spec.method, &solution, sound) {

@@ -1,39 +1,74 @@
-//! The bolts' committed state (issue 17: "laws evaluate a trial stress or force from their last
-//! committed state and a total increment"). Each implicit iteration puts the bolts' grout slip
-//! and plastic elongation back to where they were when the solve began, and their laws then take
-//! the whole displacement since (`support::Cables::forces` works from total displacements): one
-//! step of the grout and segment laws, so where they converge does not depend on the iterations'
-//! path. Without it an accelerated iteration that overshoots leaves slip behind (the pull-out
-//! at 60 % of its capacity ended 1.3 % off the shear-lag solution instead of 0.006 %).
+//! The committed state of an implicit solve: what the bolts' trials start from (issue 17: "laws
+//! evaluate a trial stress or force from their last committed state and a total increment, and
+//! commit on convergence"), and what a load step that does not converge goes back to before it
+//! is halved (`steps`).
 //!
-//! The zones and the joints still integrate along the iterations' path: one step of the
+//! - **Bolts.** Their grout slip and plastic elongation go back to the commit, and their laws take
+//!   the whole displacement since (`support::Cables::forces` works from total displacements).
+//!   Without it an accelerated iteration that overshoots leaves slip behind (the pull-out at 60 %
+//!   of its capacity ended 1.3 % off the shear-lag solution instead of 0.006 %).
+//!
+//! The zones and the joints still integrate along the iterations' path. One step of the
 //! Mohr–Coulomb return over a whole stage crosses the corners of its yield surface, which the law
-//! does not handle, and joints stepped from a fixed commit flip between stick and slip from one
-//! iteration to the next where the jointed tunnel's wedges are about to move (its ratio then
-//! alternated between 2.5e-5 and 2.9e-5 for 200 iterations).
+//! does not handle (branch `wip/corner-return` has the corner return and the zones' commit); and
+//! joints stepped from a fixed commit flip between stick and slip from one iteration to the next
+//! where the jointed tunnel's wedges are about to move (its ratio then alternated between 2.5e-5
+//! and 2.9e-5 for 200 iterations).
 
+use crate::law::Stress;
+use crate::model::bodies::Bodies;
+use crate::model::{Contacts, Model};
 use crate::support::Supports;
 
-/// The bolts' grout slip and plastic elongation at the commit.
+/// The model's state at the commit: what the trials start from, and what a cut step
+/// (`steps`) goes back to.
 pub struct Committed {
-    /// Each cable node's grout slip and each segment's plastic elongation, m.
-    slip: Vec<f64>,
+    /// Node displacements, m.
+    disp: Vec<[f64; 2]>,
+    /// Zone stresses, Pa.
+    stress: Vec<Stress>,
+    /// Zone yield flags.
+    state: Vec<u8>,
+    /// Zone plastic shear strains (dimensionless).
     plastic: Vec<f64>,
+    /// The supports (the bolts' grout slip and plastic elongation are their state), the contacts
+    /// and the bodies, whole.
+    supports: Supports,
+    contacts: Contacts,
+    bodies: Bodies,
 }
 
 impl Committed {
-    /// Commit the supports' present state.
-    pub fn of(supports: &Supports) -> Committed {
+    /// Commit the model's present state.
+    pub fn of(model: &Model) -> Committed {
         Committed {
-            slip: supports.cables.slip.clone(),
-            plastic: supports.cables.plastic.clone(),
+            disp: model.nodes.disp.clone(),
+            stress: model.zones.stress.clone(),
+            state: model.zones.state.clone(),
+            plastic: model.zones.plastic.clone(),
+            supports: model.supports.clone(),
+            contacts: model.contacts.clone(),
+            bodies: model.bodies.clone(),
         }
+    }
+
+    /// Put the whole model back to the commit (a step that failed, before it is cut).
+    pub fn restore(&self, model: &mut Model) {
+        model.nodes.disp.copy_from_slice(&self.disp);
+        let zones = &mut model.zones;
+        zones.stress.copy_from_slice(&self.stress);
+        zones.state.copy_from_slice(&self.state);
+        zones.plastic.copy_from_slice(&self.plastic);
+        model.supports.clone_from(&self.supports);
+        model.contacts.clone_from(&self.contacts);
+        model.bodies.clone_from(&self.bodies);
     }
 
     /// Put the bolts' grout slip and plastic elongation back to the commit, before the force
     /// stage evaluates them from the total displacements.
-    pub fn trial(&self, supports: &mut Supports) {
-        supports.cables.slip.copy_from_slice(&self.slip);
-        supports.cables.plastic.copy_from_slice(&self.plastic);
+    pub fn trial_supports(&self, supports: &mut Supports) {
+        let cables = &self.supports.cables;
+        supports.cables.slip.copy_from_slice(&cables.slip);
+        supports.cables.plastic.copy_from_slice(&cables.plastic);
     }
 }

@@ -15,7 +15,9 @@
 //! diverged there (a wedge left without stiffness runs off).
 //!
 //! Bolts and liners bring their own unknowns and their elastic stiffness (`structural`); the
-//! bolts' grout slip and yield are evaluated from the state the solve began with (`commit`).
+//! bolts' grout slip and yield are evaluated from the state of the last commit (`commit`). The
+//! stage's out-of-balance force is released in `solve.load_steps` steps, a step that does not
+//! converge halved from the last commit (`steps`).
 //! Mixed zones (`zoning.mixed`) keep the plain triangles' matrix, too stiff volumetrically near
 //! ν = 0.5, while the residual is the mixed zone stage's: the iterations converge to the mixed
 //! answer (Lamé's cylinder at ν = 0.499: 107 iterations, no locking).
@@ -35,6 +37,7 @@ mod bodies;
 mod commit;
 mod factor;
 mod moving;
+mod steps;
 mod structural;
 mod support;
 
@@ -42,13 +45,14 @@ use std::time::Instant;
 
 use crate::cycle::{Cycle, CycleParams, ZoneScheme};
 use crate::model::Model;
-use crate::scene::{SolveMethod, SolveMode};
+use crate::scene::{SolveMethod, SolveMode, SolveSpec};
 use crate::solve::{HistoryRow, Observer, Solution, Status};
 use anderson::Anderson;
 use assemble::{Dofs, stiffness};
 use commit::Committed;
 use factor::{Factor, FactorError};
 use moving::Movement;
+use steps::LoadSteps;
 
 /// Why the implicit path cannot solve `model` as it is, or `None` if it can.
 pub fn unsupported(scheme: ZoneScheme) -> Option<&'static str> {
@@ -70,6 +74,8 @@ pub struct Cost {
     pub factor_nonzeros: usize,
     pub factorizations: u64,
     pub iterations: u64,
+    /// Load steps halved because they did not converge (`steps`).
+    pub cuts: u64,
     /// Seconds assembling, factorizing, and iterating (residuals, solves, zone updates).
     pub assemble_s: f64,
     pub factorize_s: f64,
@@ -90,6 +96,7 @@ impl Cost {
             factor_nonzeros: self.factor_nonzeros.max(o.factor_nonzeros),
             factorizations: self.factorizations + o.factorizations,
             iterations: self.iterations + o.iterations,
+            cuts: self.cuts + o.cuts,
             assemble_s: self.assemble_s + o.assemble_s,
             factorize_s: self.factorize_s + o.factorize_s,
             iterate_s: self.iterate_s + o.iterate_s,
@@ -172,17 +179,19 @@ pub struct Solved {
     pub sound: bool,
 }
 
-/// Solve `model` to static equilibrium (ratio below `ratio`, at most `max_iterations`
-/// iterations), reporting each iteration to `observer` as a history row. The stiffness is
-/// factorized again when contacts are detected anew.
+/// Solve `model` to static equilibrium as `spec` asks: the ratio below `spec.ratio`, the stage's
+/// out-of-balance force released in `spec.load_steps` steps of at most `spec.max_iterations`
+/// iterations each (a step that needs more is halved: `steps`), reporting each iteration to
+/// `observer` as a history row. The stiffness is factorized again when contacts are detected
+/// anew and after a cut.
 pub fn solve(
     model: &mut Model,
     cycle: &mut Cycle,
     params: &CycleParams,
-    ratio: f64,
-    max_iterations: u64,
+    spec: &SolveSpec,
     observer: &mut dyn Observer,
 ) -> Solved {
+    let (ratio, max_iterations) = (spec.ratio, spec.max_iterations);
     let mut sound = true;
     let mut cost = Cost::default();
     let dofs = Dofs::of(&model.nodes, &model.bodies, &model.supports);
@@ -207,20 +216,23 @@ pub fn solve(
     let mut rhs = vec![0.0; dofs.count];
     let mut du = vec![[0.0; 2]; model.nodes.len()];
     let mut dq = vec![[0.0; crate::model::bodies::DOFS]; model.bodies.len()];
-    let mut iteration = 0u64;
+    // Iterations in all, and in the step being solved.
+    let (mut iteration, mut in_step) = (0u64, 0u64);
     let mut movement = Movement::new(model);
     let window_start = max_iterations.checked_sub(moving::WINDOW);
     let mut detections = cycle.detections();
     let mut anderson = Anderson::new(dofs.count);
     let mut x = vec![0.0; dofs.count];
     let mut last_ratio = f64::INFINITY;
-    let committed = Committed::of(&model.supports);
+    let mut steps = LoadSteps::new(spec.load_steps, model, cycle, params);
+    steps.apply(model);
+    let mut committed = Committed::of(model);
     let status = loop {
         let llt = match &mut factor {
             Ok(llt) => llt,
             Err(reason) => break Status::Failed(reason.clone()),
         };
-        committed.trial(&mut model.supports);
+        committed.trial_supports(&mut model.supports);
         cycle.balance(model, params);
         let m = match cycle.monitor(model) {
             Ok(m) => m,
@@ -238,7 +250,15 @@ pub fn solve(
         history.push(row);
         observer.monitored(&row);
         if m.ratio <= ratio {
-            break Status::Converged;
+            if steps.is_last() {
+                break Status::Converged;
+            }
+            steps.advance();
+            steps.apply(model);
+            committed = Committed::of(model);
+            (in_step, last_ratio, movement) = (0, f64::INFINITY, Movement::new(model));
+            anderson.reset();
+            continue;
         }
         // An accelerated step that raised the out-of-balance force restarts the acceleration
         // from a plain step.
@@ -249,12 +269,21 @@ pub fn solve(
         if crate::interrupt::requested() {
             break Status::Interrupted;
         }
-        if iteration == max_iterations {
+        if in_step == max_iterations {
             let steady = movement.steady(model);
             if window_start.is_some() && !steady.is_empty() {
                 break Status::Failed(moving::describe(model, &steady, iteration));
             }
-            break Status::CycleLimit;
+            // A step that does not converge is cut: back to the commit, half the step.
+            if !steps.cut() {
+                break Status::CycleLimit;
+            }
+            committed.restore(model);
+            steps.apply(model);
+            factor = factorize(model, &dofs, &mut cost, observer);
+            (in_step, last_ratio, movement) = (0, f64::INFINITY, Movement::new(model));
+            anderson.reset();
+            continue;
         }
         dofs.gather(&model.nodes.force, &mut rhs);
         dofs.bodies.residual(&model.bodies, &mut rhs);
@@ -262,11 +291,11 @@ pub fn solve(
         llt.solve_in_place(&mut rhs);
         // Blocks still moving are judged on the plain correction K⁻¹R, which the residual of a
         // block the joints cannot hold keeps up; the accelerated one mixes in earlier iterates.
-        if window_start.is_some_and(|w| iteration >= w) {
+        if window_start.is_some_and(|w| in_step >= w) {
             dofs.scatter(&rhs, &mut du);
             dofs.bodies.expand(&rhs, &mut dq);
             bodies::node_motion(&model.bodies, &model.nodes, &dq, &mut du);
-            movement.record(model, &du, Some(iteration) == window_start);
+            movement.record(model, &du, Some(in_step) == window_start);
         }
         anderson.step(&x, &mut rhs);
         for (xi, d) in x.iter_mut().zip(&rhs) {
@@ -286,6 +315,7 @@ pub fn solve(
         cycle.displace(model, &du, params);
         dofs.supports.displace(&mut model.supports, &rhs);
         iteration += 1;
+        in_step += 1;
         if cycle.detections() != detections {
             detections = cycle.detections();
             factor = factorize(model, &dofs, &mut cost, observer);
@@ -293,6 +323,7 @@ pub fn solve(
         }
     };
     cost.iterations = iteration;
+    cost.cuts = u64::from(steps.cuts());
     let refactoring = cost.assemble_s + cost.factorize_s - before;
     cost.iterate_s = t.elapsed().as_secs_f64() - refactoring;
     let final_ratio = history.last().map_or(f64::NAN, |r| r.ratio);

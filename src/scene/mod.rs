@@ -627,6 +627,10 @@ pub struct SolveSpec {
     /// Iterations of an implicit solve at the latest (default 500: the accelerated iterations of
     /// the report's cases take at most about 220).
     pub max_iterations: u64,
+    /// Equal steps in which an implicit stage releases the out-of-balance force it starts with
+    /// (default 1: at once), each solved and committed before the next; a step that does not
+    /// converge within `max_iterations` is halved. The implicit path's `ramp`.
+    pub load_steps: u64,
 }
 
 /// How a static solve reaches equilibrium.
@@ -737,6 +741,7 @@ impl Default for SolveSpec {
             rayleigh: None,
             method: SolveMethod::Explicit,
             max_iterations: 500,
+            load_steps: 1,
         }
     }
 }
@@ -1006,6 +1011,33 @@ mod tests {
             long.starts_with("solve.ramp: 1000 cycles leave none"),
             "{long}"
         );
+        // Load steps are the implicit path's ramp: each is refused where it cannot act.
+        assert_eq!(with(r#"{ "method": "implicit", "load_steps": 4 }"#), None);
+        assert_eq!(
+            with(r#"{ "method": "auto", "load_steps": 4, "ramp": 100 }"#),
+            None
+        );
+        for (solve, start) in [
+            (
+                r#"{ "load_steps": 4 }"#,
+                "solve.load_steps: acts in implicit solves",
+            ),
+            (
+                r#"{ "method": "implicit", "ramp": 100 }"#,
+                "solve.ramp: acts in explicit",
+            ),
+            (
+                r#"{ "method": "implicit", "load_steps": 0 }"#,
+                "solve.load_steps: must be from 1 to 1000",
+            ),
+            (
+                r#"{ "method": "implicit", "load_steps": 1001 }"#,
+                "solve.load_steps: must be from 1 to 1000",
+            ),
+        ] {
+            let e = with(solve).unwrap();
+            assert!(e.starts_with(start), "{solve}: {e}");
+        }
     }
 
     /// Rayleigh damping is a dynamic solve's, replaces local damping, and gives ξ at its frequency.

@@ -206,6 +206,24 @@ fn validate_solve(p: &str, v: &SolveSpec) -> Result<(), SceneError> {
     if v.max_iterations == 0 {
         return Err(invalid(format!("{p}.max_iterations"), "must be at least 1"));
     }
+    if !(1..=MAX_LOAD_STEPS).contains(&v.load_steps) {
+        return Err(invalid(
+            format!("{p}.load_steps"),
+            format!("must be from 1 to {MAX_LOAD_STEPS}, got {}", v.load_steps),
+        ));
+    }
+    if v.load_steps > 1 && v.method == SolveMethod::Explicit {
+        return Err(invalid(
+            format!("{p}.load_steps"),
+            "acts in implicit solves (`method`: \"implicit\" or \"auto\"); explicit cycling releases its forces over `ramp` cycles",
+        ));
+    }
+    if v.ramp > 0 && v.method == SolveMethod::Implicit {
+        return Err(invalid(
+            format!("{p}.ramp"),
+            "acts in explicit cycling; an implicit solve releases its out-of-balance forces in `load_steps`",
+        ));
+    }
     if v.ramp >= v.max_cycles {
         return Err(invalid(
             format!("{p}.ramp"),
@@ -217,6 +235,9 @@ fn validate_solve(p: &str, v: &SolveSpec) -> Result<(), SceneError> {
     }
     Ok(())
 }
+
+/// Most load steps of an implicit stage: each is a solve of up to `max_iterations` iterations.
+pub const MAX_LOAD_STEPS: u64 = 1000;
 
 /// Rayleigh damping at `p`.rayleigh: a dynamic solve's, in place of local damping.
 fn validate_rayleigh(p: &str, v: &SolveSpec, r: &Rayleigh) -> Result<(), SceneError> {

@@ -28,13 +28,14 @@ pub struct ModelRun {
 }
 
 /// Run the model `file` (under `root`) with every stage's `solve.method` set to `method`, and
-/// explicit stages' out-of-balance forces released over `ramp` cycles (`solve.ramp`; 0: at
-/// once), writing into `out` (removed afterwards).
+/// each stage's out-of-balance forces released gradually: explicitly over `release` cycles
+/// (`solve.ramp`; 0: at once), implicitly in `release` load steps (`solve.load_steps`; 0 or 1:
+/// at once); writing into `out` (removed afterwards).
 pub fn run(
     root: &Path,
     file: &str,
     method: SolveMethod,
-    ramp: u64,
+    release: u64,
     out: &Path,
 ) -> anyhow::Result<ModelRun> {
     let mut sc = Scene::load(&root.join(file))?;
@@ -42,9 +43,14 @@ pub fn run(
         .chain(sc.stages.iter_mut().filter_map(|st| st.solve.as_mut()));
     for s in solves {
         s.method = method;
-        s.ramp = ramp;
-        s.max_cycles += ramp;
+        if method == SolveMethod::Explicit {
+            s.ramp = release;
+            s.max_cycles += release;
+        } else {
+            s.load_steps = release.max(1);
+        }
     }
+    sc.validate()?;
     let start = Instant::now();
     let r = adit::run_scene(&sc, out, &mut Quiet)?;
     let wall_s = start.elapsed().as_secs_f64();

@@ -85,14 +85,8 @@ pub fn solve_by_method(
 ) -> (Solver, adit::solve::Solution, Option<adit::implicit::Cost>) {
     let mut solver = Solver::new(model, spec, 0);
     let (solution, cost) = if spec.method == adit::scene::SolveMethod::Implicit {
-        let adit::implicit::Solved { solution, cost, .. } = adit::implicit::solve(
-            model,
-            &mut solver.cycle,
-            &solver.params,
-            spec.ratio,
-            spec.max_iterations,
-            &mut Quiet,
-        );
+        let adit::implicit::Solved { solution, cost, .. } =
+            adit::implicit::solve(model, &mut solver.cycle, &solver.params, spec, &mut Quiet);
         (solution, Some(cost))
     } else {
         (solver.solve(model, &mut Quiet), None)

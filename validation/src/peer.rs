@@ -78,8 +78,7 @@ pub fn solve(kirsch: &Scene, factor: f64, dir: &Path) -> anyhow::Result<PeerResu
         model,
         &mut solver.cycle,
         &solver.params,
-        s.solve.ratio,
-        s.solve.max_iterations,
+        &s.solve,
         &mut Quiet,
     );
     anyhow::ensure!(
