@@ -192,16 +192,53 @@ impl Solver {
     }
 }
 
-/// Gradual release of the out-of-balance forces F0 a static solve starts with (`solve.ramp`):
-/// at cycle c < N the nodes carry their applied loads minus (1 − c/N) F0, so the net force starts
-/// at zero and grows linearly to the true one, as when a load is applied slowly (FLAC's gradual
-/// relaxation of an excavation's forces works the same way). F0 is the nodal force of the zones,
-/// contacts and supports in the state the solve starts from, with the loads; a rigid or simple
-/// block's own weight and stress terms are not ramped.
+/// The out-of-balance force F0 a static solve starts with, released gradually: the nodes carry
+/// their applied loads minus a held share h of F0, so the net force grows from zero (h = 1) to
+/// the true one (h = 0), as when a load is applied slowly (FLAC's gradual relaxation of an
+/// excavation's forces works the same way). F0 is the nodal force of the zones, contacts and
+/// supports in the state the solve starts from, with the loads; a rigid or simple block's own
+/// weight and stress terms are released at once. Explicit cycling holds it over `solve.ramp`
+/// cycles ([`Ramp`]), the implicit path in `solve.load_steps` steps (`implicit::steps`).
+pub struct Release {
+    /// The nodes' applied loads, N/m.
+    applied: Vec<[f64; 2]>,
+    /// F0, N/m.
+    unbalanced: Vec<[f64; 2]>,
+}
+
+impl Release {
+    /// F0 of `model` as it is now.
+    pub fn of(model: &mut Model, cycle: &mut Cycle, params: &CycleParams) -> Release {
+        cycle.prime(model, params);
+        let unbalanced = (0..model.nodes.len())
+            .map(|n| cycle.node_force(model, n))
+            .collect();
+        Release {
+            applied: model.nodes.applied.clone(),
+            unbalanced,
+        }
+    }
+
+    /// Set the nodes' loads to the applied ones minus `held` × F0 (the applied loads themselves
+    /// at 0).
+    pub fn hold(&self, held: f64, model: &mut Model) {
+        if held == 0.0 {
+            model.nodes.applied.copy_from_slice(&self.applied);
+            return;
+        }
+        for ((a, full), f0) in (model.nodes.applied.iter_mut())
+            .zip(&self.applied)
+            .zip(&self.unbalanced)
+        {
+            *a = [full[0] - held * f0[0], full[1] - held * f0[1]];
+        }
+    }
+}
+
+/// `solve.ramp`: at cycle c < N the held share of F0 is 1 − c/N ([`Release`]).
 struct Ramp {
     cycles: u64,
-    applied: Vec<[f64; 2]>,
-    unbalanced: Vec<[f64; 2]>,
+    release: Release,
 }
 
 impl Ramp {
@@ -211,17 +248,9 @@ impl Ramp {
         cycle: &mut Cycle,
         params: &CycleParams,
     ) -> Option<Ramp> {
-        if cycles == 0 {
-            return None;
-        }
-        cycle.prime(model, params);
-        let unbalanced = (0..model.nodes.len())
-            .map(|n| cycle.node_force(model, n))
-            .collect();
-        Some(Ramp {
+        (cycles > 0).then(|| Ramp {
             cycles,
-            applied: model.nodes.applied.clone(),
-            unbalanced,
+            release: Release::of(model, cycle, params),
         })
     }
 
@@ -231,15 +260,7 @@ impl Ramp {
             return;
         }
         let held = 1.0 - c as f64 / self.cycles as f64;
-        for ((a, full), f0) in model
-            .nodes
-            .applied
-            .iter_mut()
-            .zip(&self.applied)
-            .zip(&self.unbalanced)
-        {
-            *a = [full[0] - held * f0[0], full[1] - held * f0[1]];
-        }
+        self.release.hold(held, model);
     }
 }
 

@@ -1,30 +1,27 @@
 //! Load steps of an implicit stage (`solve.load_steps`): the out-of-balance force F0 the stage
 //! starts with (from an excavation, a load, a change of material or gravity) is released in equal
 //! steps, each solved to the stage's ratio and committed before the next, as the explicit path's
-//! `solve.ramp` releases it over cycles (the same F0, taken at the nodes: a rigid or simple
-//! block's own weight and stress terms are released at once). At a fraction s of the stage the
+//! `solve.ramp` releases it over cycles (`solve::Release`): at a fraction s of the stage the
 //! nodes carry their applied loads minus (1 − s) F0. Plasticity and friction remember the path:
 //! `models/tunnel.json`'s median wall closure is 7.33 mm (666 zones yielded) in one step, 7.32 mm
 //! (657) in 4 and 7.29 mm (651) in 8, against 7.27 mm (644) explicitly with each stage released
 //! over 16 000 cycles and 7.41 mm (679) released at once.
 //!
 //! A step that does not converge within `solve.max_iterations` is cut: the model goes back to the
-//! last commit and the step is halved (a stage solved in one step too), at most `MAX_CUTS` times in a
-//! stage (RS2's and ABAQUS's
-//! automatic increment cutting, in its simplest form).
+//! last commit and the step is halved (a stage solved in one step too), at most `MAX_CUTS` times
+//! in a stage (RS2's and ABAQUS's automatic increment cutting, in its simplest form).
 
 use crate::cycle::{Cycle, CycleParams};
 use crate::model::Model;
+use crate::solve::Release;
 
 /// Halvings of a step a stage may make in all.
 pub const MAX_CUTS: u32 = 4;
 
 /// The stage's load fraction done and the step being solved.
 pub struct LoadSteps {
-    /// The nodes' applied loads at the stage's end, N/m.
-    full: Vec<[f64; 2]>,
-    /// F0: the nodes' out-of-balance force when the stage began, N/m.
-    unbalanced: Vec<[f64; 2]>,
+    /// F0 and the loads it is released towards.
+    release: Release,
     /// Fraction of F0 released and committed.
     done: f64,
     /// Fraction the step being solved releases.
@@ -35,13 +32,8 @@ pub struct LoadSteps {
 impl LoadSteps {
     /// `count` equal steps over the out-of-balance force `model` has now.
     pub fn new(count: u64, model: &mut Model, cycle: &mut Cycle, params: &CycleParams) -> Self {
-        cycle.prime(model, params);
-        let unbalanced = (0..model.nodes.len())
-            .map(|n| cycle.node_force(model, n))
-            .collect();
         LoadSteps {
-            full: model.nodes.applied.clone(),
-            unbalanced,
+            release: Release::of(model, cycle, params),
             done: 0.0,
             size: 1.0 / count.max(1) as f64,
             cuts: 0,
@@ -64,17 +56,7 @@ impl LoadSteps {
 
     /// Set the nodes' loads for the step being solved.
     pub fn apply(&self, model: &mut Model) {
-        let held = 1.0 - self.target();
-        if held == 0.0 {
-            model.nodes.applied.copy_from_slice(&self.full);
-            return;
-        }
-        for ((a, full), f0) in (model.nodes.applied.iter_mut())
-            .zip(&self.full)
-            .zip(&self.unbalanced)
-        {
-            *a = [full[0] - held * f0[0], full[1] - held * f0[1]];
-        }
+        self.release.hold(1.0 - self.target(), model);
     }
 
     /// The step converged: the next one starts from its end.
