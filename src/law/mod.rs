@@ -1,5 +1,6 @@
 //! Zone constitutive laws behind one small trait; each law is one file.
 
+mod corner_return;
 mod elastic;
 mod mohr_coulomb;
 mod null;

@@ -77,13 +77,22 @@ pub fn run(
     })
 }
 
-/// The two runs of a model as report rows; the implicit row's errors are its relative
-/// differences from the explicit run (closure, yielded zones), the explicit row's zero.
-pub fn reports(file: &str, e: &ModelRun, i: &ModelRun) -> (CaseReport, CaseReport) {
+/// Cycles over which an explicit run releases each stage's load in the quasi-static path (a slow
+/// excavation, `solve.ramp`): the tunnel's median closure moves by 0.04 % from 16 000 to 32 000.
+pub const QUASI_STATIC_RAMP: u64 = 16_000;
+
+/// Load steps of an implicit run on the quasi-static path (`solve.load_steps`): the tunnel's
+/// median closure is 0.19 % from the explicit one's at 16 steps, 0.05 % at 32.
+pub const QUASI_STATIC_STEPS: u64 = 16;
+
+/// The two runs of a model along one `path` (said in the rows' names) as report rows; the
+/// implicit row's errors are its relative differences from the explicit run (closure, yielded
+/// zones), the explicit row's zero.
+pub fn reports(file: &str, path: &str, e: &ModelRun, i: &ModelRun) -> (CaseReport, CaseReport) {
     let row = |r: &ModelRun, method: SolveMethod, errors: &[(&str, f64)]| {
         CaseReport::new(
             format!(
-                "`{file}`: median closure {:.2} mm, {} zones yielded{}",
+                "`{file}` {path}: median closure {:.2} mm, {} zones yielded{}",
                 1e3 * r.closure,
                 r.yielded,
                 crate::method_suffix(method)
@@ -119,9 +128,10 @@ mod tests {
     use super::*;
 
     /// Issue 17's bar on the bundled tunnel models is 1 % of the explicit wall closure and
-    /// yielded-zone count. Measured: the jointed tunnel 0.17 % and 0 of 0; the tunnel 1.1 % and
-    /// 1.9 % (666 of 679 zones), its explicit answer itself moving by 2 % with the path (released
-    /// over 16 000 cycles). Asserted at what holds: 1.5 % and 2.5 %.
+    /// yielded-zone count, on the quasi-static path (the plastic answer depends on the path:
+    /// released at once, the explicit tunnel overshoots dynamically to 7.44 mm and 678 zones,
+    /// +2.4 % and +5 %). Measured: the tunnel +0.15 % and +0.16 % (645 of 644 zones), the jointed
+    /// tunnel +0.22 % and 0 of 0.
     #[test]
     fn the_implicit_solve_gives_the_tunnel_models_explicit_answer() {
         let root = crate::repository_root();
@@ -131,11 +141,25 @@ mod tests {
                 std::process::id(),
                 file.replace(['/', '.'], "_")
             ));
-            let e = run(&root, file, SolveMethod::Explicit, 0, &dir.join("e")).unwrap();
-            let i = run(&root, file, SolveMethod::Implicit, 0, &dir.join("i")).unwrap();
-            let (_, r) = reports(file, &e, &i);
-            assert!(r.errors["closure"] < 0.015, "{r:?}");
-            assert!(r.errors["yielded"] < 0.025, "{r:?}");
+            let (e, i) = (
+                run(
+                    &root,
+                    file,
+                    SolveMethod::Explicit,
+                    QUASI_STATIC_RAMP,
+                    &dir.join("e"),
+                ),
+                run(
+                    &root,
+                    file,
+                    SolveMethod::Implicit,
+                    QUASI_STATIC_STEPS,
+                    &dir.join("i"),
+                ),
+            );
+            let (_, r) = reports(file, "slowly", &e.unwrap(), &i.unwrap());
+            assert!(r.errors["closure"] < 0.01, "{r:?}");
+            assert!(r.errors["yielded"] < 0.01, "{r:?}");
         }
     }
 }
