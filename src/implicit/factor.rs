@@ -41,7 +41,7 @@ impl Factor {
         let mut values = vec![0.0; symbolic.len_val()];
         let mut work = MemBuffer::try_new(scratch_req)
             .map_err(|e| FactorError::Memory(format!("implicit: factorization scratch: {e:?}")))?;
-        symbolic
+        let factorized = symbolic
             .factorize_numeric_llt::<f64>(
                 &mut values,
                 k,
@@ -51,7 +51,9 @@ impl Factor {
                 MemStack::new(&mut work),
                 Default::default(),
             )
-            .map_err(|e| FactorError::Numeric(format!("{e:?}")))?;
+            .map_err(|e| FactorError::Numeric(format!("{e:?}")));
+        clear_upper_vector_state(Threads::All);
+        factorized?;
         let scratch = MemBuffer::try_new(symbolic.solve_in_place_scratch::<f64>(1, par))
             .map_err(|e| FactorError::Memory(format!("implicit: solve scratch: {e:?}")))?;
         Ok(Factor {
@@ -75,7 +77,44 @@ impl Factor {
             par,
             MemStack::new(&mut self.scratch),
         );
+        clear_upper_vector_state(Threads::This);
     }
+}
+
+/// The threads whose vector state to clear.
+#[derive(Clone, Copy)]
+enum Threads {
+    /// This thread: where a solve with one right-hand side runs (the test below finds a solve
+    /// leaving them clean; cleared all the same, at one instruction a solve).
+    This,
+    /// Every rayon worker and this thread: where the numeric factorization runs in parallel.
+    All,
+}
+
+/// Clear the upper halves of the vector registers on `threads`. faer's kernels (chosen at run
+/// time, AVX-512 on this project's machines) leave those halves in use on the rayon workers
+/// after a numeric factorization with dense supernodes (the test below); the SSE code
+/// compiled for the baseline x86-64 (the zone and joint laws, libm's `sin` and `tan`) then pays
+/// the AVX–SSE transition on every instruction: measured, explicit cycling of
+/// `models/tunnel.json` after an implicit Mohr–Coulomb solve in the same process took 6.5 s
+/// instead of 1.35 s, and the implicit iterations' own force stages paid it too (the weak rock's
+/// Salençon hole: 0.61 s, 0.21 s cleared). `vzeroupper` is the remedy of Intel's optimization
+/// manual ("Mixing AVX code with SSE code").
+fn clear_upper_vector_state(threads: Threads) {
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("avx") {
+        fn clear() {
+            // SAFETY: `vzeroupper` only zeroes the upper halves of the vector registers, which
+            // no live value on this thread holds across this call; the CPU has AVX (checked).
+            unsafe { std::arch::x86_64::_mm256_zeroupper() }
+        }
+        if let Threads::All = threads {
+            rayon::broadcast(|_| clear());
+        }
+        clear();
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    let _ = threads;
 }
 
 /// An error naming both sizes when a factorization needing `bytes` would not fit in the `free`
@@ -118,5 +157,54 @@ mod tests {
         if cfg!(target_os = "linux") {
             assert!(available_memory().is_some_and(|b| b > 0));
         }
+    }
+
+    /// The 5-point Laplacian of an n × n grid plus the identity (symmetric positive definite),
+    /// its lower triangle: a matrix whose factor has dense supernodes, as a zoned model's has.
+    fn grid(n: usize) -> faer::sparse::SparseColMat<usize, f64> {
+        use faer::sparse::Triplet;
+        let id = |i: usize, j: usize| i * n + j;
+        let mut t = Vec::new();
+        for i in 0..n {
+            for j in 0..n {
+                t.push(Triplet::new(id(i, j), id(i, j), 5.0));
+                if i + 1 < n {
+                    t.push(Triplet::new(id(i + 1, j), id(i, j), -1.0));
+                }
+                if j + 1 < n {
+                    t.push(Triplet::new(id(i, j + 1), id(i, j), -1.0));
+                }
+            }
+        }
+        faer::sparse::SparseColMat::try_new_from_triplets(n * n, n * n, &t).unwrap()
+    }
+
+    /// After a factorization (on every rayon worker) and a solve (on this thread), no upper half
+    /// of a vector register is left in use (XGETBV with ECX = 1, XINUSE: bit 2 the upper halves
+    /// of YMM0–15, bit 6 of ZMM0–15), so the SSE code that follows pays no AVX–SSE transition.
+    /// Skipped where the CPU cannot report it.
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    fn a_factorization_and_a_solve_leave_the_vector_registers_clean() {
+        use std::arch::x86_64::{__cpuid_count, _xgetbv};
+        const UPPER: u64 = 1 << 2 | 1 << 6;
+        let xinuse =
+            std::arch::is_x86_feature_detected!("xsave") && __cpuid_count(0xD, 1).eax & 4 != 0;
+        if !xinuse {
+            eprintln!("skipped: this CPU does not report the registers in use (XINUSE)");
+            return;
+        }
+        fn in_use() -> u64 {
+            // SAFETY: XSAVE and XGETBV with ECX = 1 are supported (checked above).
+            unsafe { _xgetbv(1) }
+        }
+        let k = grid(150);
+        let mut f = Factor::new(k.as_ref()).unwrap();
+        let workers: Vec<u64> = rayon::broadcast(|_| in_use() & UPPER);
+        assert!(workers.iter().all(|&u| u == 0), "{workers:?}");
+        let mut x = vec![1.0; 150 * 150];
+        f.solve_in_place(&mut x);
+        assert_eq!(in_use() & UPPER, 0);
+        assert!(x.iter().all(|v| v.is_finite() && *v > 0.0));
     }
 }

@@ -1,6 +1,5 @@
 //! Zone constitutive laws behind one small trait; each law is one file.
 
-mod corner_return;
 mod elastic;
 mod mohr_coulomb;
 mod null;
