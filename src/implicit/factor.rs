@@ -198,13 +198,21 @@ mod tests {
             // SAFETY: XSAVE and XGETBV with ECX = 1 are supported (checked above).
             unsafe { _xgetbv(1) }
         }
-        let k = grid(150);
-        let mut f = Factor::new(k.as_ref()).unwrap();
-        let workers: Vec<u64> = rayon::broadcast(|_| in_use() & UPPER);
-        assert!(workers.iter().all(|&u| u == 0), "{workers:?}");
-        let mut x = vec![1.0; 150 * 150];
-        f.solve_in_place(&mut x);
-        assert_eq!(in_use() & UPPER, 0);
-        assert!(x.iter().all(|v| v.is_finite() && *v > 0.0));
+        // A pool of its own: other tests' factorizations on the global pool's workers cannot
+        // leave them dirty in between.
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(2)
+            .build()
+            .unwrap();
+        pool.install(|| {
+            let k = grid(150);
+            let mut f = Factor::new(k.as_ref()).unwrap();
+            let workers: Vec<u64> = rayon::broadcast(|_| in_use() & UPPER);
+            assert!(workers.iter().all(|&u| u == 0), "{workers:?}");
+            let mut x = vec![1.0; 150 * 150];
+            f.solve_in_place(&mut x);
+            assert_eq!(in_use() & UPPER, 0);
+            assert!(x.iter().all(|v| v.is_finite() && *v > 0.0));
+        });
     }
 }
