@@ -255,12 +255,11 @@ impl Case for Implicit {
                 si.yielded,
                 si.cycles,
                 si.wall_s,
-                if (si.closure - se.closure).abs() < 0.01 * se.closure
-                    && (si.yielded as f64 - se.yielded as f64).abs() < 0.01 * se.yielded as f64
-                {
-                    "holds"
-                } else {
-                    "does not hold"
+                match bundled::differences(se, si) {
+                    (closure, yielded) if closure < bundled::BAR && yielded < bundled::BAR => {
+                        "holds"
+                    }
+                    _ => "does not hold",
                 },
                 100.0 * (e.closure - se.closure) / se.closure,
             );
