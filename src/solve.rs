@@ -113,6 +113,7 @@ impl Solver {
                 scheme: ZoneScheme::of(model, spec.large_strain),
                 mass_damping: spec.rayleigh.map_or(0.0, |r| r.coefficients().0),
                 stiffness_damping: spec.rayleigh.map_or(0.0, |r| r.coefficients().1),
+                trial: false,
             },
             step,
             spec: spec.clone(),

@@ -120,16 +120,17 @@ fn implicit_plastic_hole_matches_explicit() {
 }
 
 /// A load step that does not converge within `max_iterations` is halved from the last commit
-/// until its steps do: the hole in Mohr–Coulomb rock, which takes 107 iterations in one step,
-/// solved with at most 100 a step converges after halving, reports its cuts, and stays near the
-/// explicit answer. The zones integrate along the iterations' path, so the answer depends on the
-/// cuts: measured closure +2.0 % and yielded zones +2.4 % after 3 cuts; asserted at 3 %.
+/// until its steps do: the hole in Mohr–Coulomb rock, solved with at most 24 iterations a step
+/// (released at once it takes 35), converges after halving, reports its cuts, and keeps the
+/// explicit answer: the zones' trial is from the commit, so the cuts leave the answer alone
+/// (measured after 4 cuts: closure −0.01 %, 336 zones yielded against 338; asserted at 1 %;
+/// integrated along the iterations' path it was +2.0 % and +2.4 % after 3 cuts).
 #[test]
 fn a_step_that_does_not_converge_is_cut() {
     let explicit = Scene::from_json(MC_HOLE, "mc_hole").unwrap();
     let mut implicit = explicit.clone();
     implicit.solve.method = adit::scene::SolveMethod::Implicit;
-    implicit.solve.max_iterations = 100;
+    implicit.solve.max_iterations = 24;
     let e = run(&explicit, "adit-test-cut-explicit");
     let i = run(&implicit, "adit-test-cut-implicit");
     assert_eq!(i.summary.status, "converged", "{:?}", i.summary.reason);
@@ -138,9 +139,9 @@ fn a_step_that_does_not_converge_is_cut() {
     assert!(cost.cuts >= 1, "{cost:?}");
     let wall = &i.built.plan.boundary.part_nodes["hole"];
     let (ci, ce) = (closure(&i, wall), closure(&e, wall));
-    assert!((ci / ce - 1.0).abs() < 0.03, "{ci} {ce}");
+    assert!((ci / ce - 1.0).abs() < 0.01, "{ci} {ce}");
     let (yi, ye) = (yielded(&i) as f64, yielded(&e) as f64);
-    assert!((yi - ye).abs() <= 0.03 * ye, "{yi} {ye}");
+    assert!((yi - ye).abs() <= 0.01 * ye, "{yi} {ye}");
 }
 
 /// Two blocks across a horizontal glued joint under 1 MPa: `implicit` carries the load through

@@ -33,7 +33,9 @@
 
 use rayon::prelude::*;
 
-use super::{Cycle, CycleParams, corner_forces, strain_increment, velocity_gradient, with_viscous};
+use super::{
+    Cycle, CycleParams, advance, corner_forces, strain_increment, velocity_gradient, with_viscous,
+};
 use crate::law::ZoneLaw;
 use crate::model::{Gather, Nodes, Zones};
 
@@ -65,7 +67,7 @@ impl Cycle {
         inv_patch: &[f64],
         p: &CycleParams,
     ) {
-        let (vel, dt, viscous) = (&nodes.vel, p.dt, p.viscous_ratio());
+        let (vel, dt, viscous, trial) = (&nodes.vel, p.dt, p.viscous_ratio(), p.trial);
         self.zone_strain
             .par_iter_mut()
             .zip(zones.nodes.par_iter())
@@ -102,7 +104,7 @@ impl Cycle {
                 let shift = 0.5 * (averaged - own);
                 let de = [de[0] + shift, de[1] + shift, de[2]];
                 let before = mean_stress(s);
-                law.update(s, state, plastic, &de);
+                advance(law.as_ref(), trial, s, state, plastic, &de);
                 *dp = mean_stress(s) - before - law.moduli().0 * averaged;
             });
         let zone_plastic = &self.zone_plastic_mean;

@@ -37,6 +37,9 @@ pub struct CycleParams {
     pub(crate) mass_damping: f64,
     /// Stiffness-proportional Rayleigh coefficient β_R, s (0 for none).
     pub(crate) stiffness_damping: f64,
+    /// Whether the zones take their law's `trial` (the implicit path: the state is the last
+    /// commit's and the increment the whole one since) instead of `update`.
+    pub(crate) trial: bool,
 }
 
 /// How the zone stage turns node velocities into stress and corner forces: one of three, fixed
@@ -88,6 +91,24 @@ pub(crate) fn with_viscous(s: &Stress, old: &Stress, ratio: f64) -> Stress {
         return *s;
     }
     std::array::from_fn(|k| s[k] + ratio * (s[k] - old[k]))
+}
+
+/// Advance a zone's `s` (Pa), `state` and `plastic` by `de` through its `law`: `trial` from a
+/// commit (the implicit path) or `update` (a cycle).
+#[inline]
+pub(crate) fn advance(
+    law: &dyn ZoneLaw,
+    trial: bool,
+    s: &mut Stress,
+    state: &mut u8,
+    plastic: &mut f64,
+    de: &StrainIncrement,
+) {
+    if trial {
+        law.trial(s, state, plastic, de);
+    } else {
+        law.update(s, state, plastic, de);
+    }
 }
 
 /// Seconds spent in each stage since the start of the run.
@@ -215,29 +236,52 @@ impl Cycle {
     /// force stages with a zero step (zero strain and displacement increments), so `node_force`
     /// gives the out-of-balance force of a state before its first cycle.
     pub fn prime(&mut self, model: &mut Model, p: &CycleParams) {
+        self.prime_but_zones(model, p);
         let still = CycleParams { dt: 0.0, ..*p };
         let Model {
             nodes,
             zones,
             gather,
-            blocks,
-            contacts,
-            supports,
             mixed,
             materials,
             ..
         } = model;
-        let (laws, joint_laws) = (&materials.zone, &materials.joint);
-        self.contact_forces(nodes, blocks, contacts, joint_laws, &still);
-        self.zone_forces(nodes, zones, laws, gather, mixed.as_deref(), &still);
+        self.zone_forces(
+            nodes,
+            zones,
+            &materials.zone,
+            gather,
+            mixed.as_deref(),
+            &still,
+        );
+    }
+
+    /// `prime` of the contact and support forces only; the zone forces stay as they are.
+    fn prime_but_zones(&mut self, model: &mut Model, p: &CycleParams) {
+        let still = CycleParams { dt: 0.0, ..*p };
+        let Model {
+            nodes,
+            blocks,
+            contacts,
+            supports,
+            materials,
+            ..
+        } = model;
+        self.contact_forces(nodes, blocks, contacts, &materials.joint, &still);
         self.structural_forces(supports, &nodes.disp, &still);
     }
 
     /// The out-of-balance force of the state as it is, N/m, into `nodes.force` (zero in a fixed
     /// component, as the motion stage leaves it): the force stages with a zero step (`prime`),
-    /// gathered per node. The implicit path's residual, measured as the explicit path measures it.
-    pub fn balance(&mut self, model: &mut Model, p: &CycleParams) {
-        self.prime(model, p);
+    /// gathered per node; the zone stage skipped when `zones_current` (the zone forces are those
+    /// of the state as it is: `displace` left them). The implicit path's residual, measured as the
+    /// explicit path measures it.
+    pub fn balance(&mut self, model: &mut Model, p: &CycleParams, zones_current: bool) {
+        if zones_current {
+            self.prime_but_zones(model, p);
+        } else {
+            self.prime(model, p);
+        }
         for n in 0..model.nodes.len() {
             let mut f = self.node_force(model, n);
             let fixed = model.nodes.fixed[n];
@@ -255,15 +299,23 @@ impl Cycle {
     }
 
     /// Move the nodes by `du` (m) in one step of the contact and zone stages: each contact's
-    /// joint law takes the relative displacement and each zone strains by sym(∇du), its law
-    /// updating its stress from there; then `du` is added to the displacements, and contacts are
-    /// detected again once any node may have moved half the contact tolerance. No damping acts.
-    /// The implicit path's update.
-    pub fn displace(&mut self, model: &mut Model, du: &[[f64; 2]], p: &CycleParams) {
+    /// joint law takes the relative displacement and each zone's law takes its strain from the
+    /// displacement since the commit `committed` (m, per node; the zones hold the committed state,
+    /// `implicit::commit`), sym(∇(u + du − u_c)), through `trial`; then `du` is added to the
+    /// displacements, and contacts are detected again once any node may have moved half the
+    /// contact tolerance. No damping acts. The implicit path's update.
+    pub fn displace(
+        &mut self,
+        model: &mut Model,
+        du: &[[f64; 2]],
+        committed: &[[f64; 2]],
+        p: &CycleParams,
+    ) {
         let unit = CycleParams {
             dt: 1.0,
             mass_damping: 0.0,
             stiffness_damping: 0.0,
+            trial: true,
             ..*p
         };
         model.nodes.vel.copy_from_slice(du);
@@ -279,6 +331,9 @@ impl Cycle {
             ..
         } = model;
         self.contact_forces(nodes, blocks, contacts, &materials.joint, &unit);
+        for (((v, u), d), c) in nodes.vel.iter_mut().zip(&nodes.disp).zip(du).zip(committed) {
+            *v = [u[0] + d[0] - c[0], u[1] + d[1] - c[1]];
+        }
         self.zone_forces(
             nodes,
             zones,
@@ -368,7 +423,7 @@ impl Cycle {
         p: &CycleParams,
     ) {
         let vel = &nodes.vel;
-        let (dt, viscous) = (p.dt, p.viscous_ratio());
+        let (dt, viscous, trial) = (p.dt, p.viscous_ratio(), p.trial);
         zones
             .stress
             .par_iter_mut()
@@ -384,7 +439,7 @@ impl Cycle {
                 let l = velocity_gradient(g, t.map(|n| vel[n as usize]));
                 let de = strain_increment(&l, dt);
                 let old = *s;
-                laws[mat.0 as usize].update(s, state, plastic, &de);
+                advance(laws[mat.0 as usize].as_ref(), trial, s, state, plastic, &de);
                 corner_forces(&with_viscous(s, &old, viscous), g, area, f);
             });
     }

@@ -14,8 +14,9 @@
 //! iterations; 191 iterations to 1e-5 accelerated); the tangent of slipping and open contacts
 //! diverged there (a wedge left without stiffness runs off).
 //!
-//! Bolts and liners bring their own unknowns and their elastic stiffness (`structural`); the
-//! bolts' grout slip and yield are evaluated from the state of the last commit (`commit`). The
+//! Bolts and liners bring their own unknowns and their elastic stiffness (`structural`). The
+//! zones' laws (through `ZoneLaw::trial`) and the bolts' grout slip and yield are evaluated from
+//! the state of the last commit and the whole displacement since (`commit`). The
 //! stage's out-of-balance force is released in `solve.load_steps` steps, a step that does not
 //! converge halved from the last commit (`steps`).
 //! Mixed zones (`zoning.mixed`) keep the plain triangles' matrix, too stiff volumetrically near
@@ -192,6 +193,11 @@ pub fn solve(
     observer: &mut dyn Observer,
 ) -> Solved {
     let (ratio, max_iterations) = (spec.ratio, spec.max_iterations);
+    // The zones take their laws' trial from the commit (`Cycle::displace`).
+    let params = &CycleParams {
+        trial: true,
+        ..*params
+    };
     let mut sound = true;
     let mut cost = Cost::default();
     let dofs = Dofs::of(&model.nodes, &model.bodies, &model.supports);
@@ -227,13 +233,15 @@ pub fn solve(
     let mut steps = LoadSteps::new(spec.load_steps, model, cycle, params);
     steps.apply(model);
     let mut committed = Committed::of(model);
+    // Whether the zone forces are those of the state as it is (`displace` left them).
+    let mut zones_current = false;
     let status = loop {
         let llt = match &mut factor {
             Ok(llt) => llt,
             Err(reason) => break Status::Failed(reason.clone()),
         };
         committed.trial_supports(&mut model.supports);
-        cycle.balance(model, params);
+        cycle.balance(model, params, zones_current);
         let m = match cycle.monitor(model) {
             Ok(m) => m,
             Err(reason) => {
@@ -279,6 +287,7 @@ pub fn solve(
                 break Status::CycleLimit;
             }
             committed.restore(model);
+            zones_current = false;
             steps.apply(model);
             factor = factorize(model, &dofs, &mut cost, observer);
             (in_step, last_ratio, movement) = (0, f64::INFINITY, Movement::new(model));
@@ -312,7 +321,9 @@ pub fn solve(
             } = model;
             cycle.body_displace(nodes, bodies, &materials.zone, &dq, &mut du);
         }
-        cycle.displace(model, &du, params);
+        committed.trial_zones(&mut model.zones);
+        cycle.displace(model, &du, committed.displacements(), params);
+        zones_current = true;
         dofs.supports.displace(&mut model.supports, &rhs);
         iteration += 1;
         in_step += 1;

@@ -1,5 +1,6 @@
 //! Zone constitutive laws behind one small trait; each law is one file.
 
+mod corner_return;
 mod elastic;
 mod mohr_coulomb;
 mod null;
@@ -20,6 +21,13 @@ pub trait ZoneLaw: Send + Sync + CopyZoneLaw {
     /// Advance `stress` (Pa), `state` (yield bit flags) and `plastic` (the accumulated plastic
     /// shear strain e^ps, dimensionless, for softening laws) by the strain increment `de`.
     fn update(&self, stress: &mut Stress, state: &mut u8, plastic: &mut f64, de: &StrainIncrement);
+    /// The implicit path's update: `stress`, `state` and `plastic` are the last committed state
+    /// and `de` the whole strain increment since (issue 17: "laws evaluate a trial stress from
+    /// their last committed state and a total increment"), however large it is. The default is
+    /// `update`, exact for a law whose return does not depend on the increment's size.
+    fn trial(&self, stress: &mut Stress, state: &mut u8, plastic: &mut f64, de: &StrainIncrement) {
+        self.update(stress, state, plastic, de);
+    }
     /// Bulk and shear moduli (Pa) that bound the law's tangent stiffness, for the time step.
     fn moduli(&self) -> (f64, f64);
     /// Mass density, kg/m³.

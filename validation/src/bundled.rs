@@ -43,12 +43,7 @@ pub fn run(
         .chain(sc.stages.iter_mut().filter_map(|st| st.solve.as_mut()));
     for s in solves {
         s.method = method;
-        if method == SolveMethod::Explicit {
-            s.ramp = release;
-            s.max_cycles += release;
-        } else {
-            s.load_steps = release.max(1);
-        }
+        crate::release_gradually(s, release);
     }
     sc.validate()?;
     let start = Instant::now();
@@ -84,6 +79,15 @@ pub const QUASI_STATIC_RAMP: u64 = 16_000;
 /// Load steps of an implicit run on the quasi-static path (`solve.load_steps`): the tunnel's
 /// median closure is 0.01 % from the explicit one's at 16 steps (645 zones yielded against 644).
 pub const QUASI_STATIC_STEPS: u64 = 16;
+
+/// The release of the quasi-static path for `method`: [`QUASI_STATIC_RAMP`] cycles explicitly,
+/// [`QUASI_STATIC_STEPS`] load steps implicitly (`crate::release_gradually`).
+pub fn quasi_static(method: SolveMethod) -> u64 {
+    match method {
+        SolveMethod::Explicit => QUASI_STATIC_RAMP,
+        _ => QUASI_STATIC_STEPS,
+    }
+}
 
 /// Issue 17's bar on the bundled tunnel models: the implicit median wall closure and yielded-zone
 /// count within this fraction of the explicit run's along the same path.

@@ -110,6 +110,18 @@ pub fn settle_by_method(
     Ok((sol.cycles, cost))
 }
 
+/// Release the out-of-balance force of the solve `spec` gradually, as its method can: over
+/// `release` cycles explicitly (`solve.ramp`, the cycle limit raised by as many; 0: at once), in `release` load
+/// steps implicitly (`solve.load_steps`; 0 or 1: at once).
+pub fn release_gradually(spec: &mut SolveSpec, release: u64) {
+    if spec.method == adit::scene::SolveMethod::Explicit {
+        spec.ramp = release;
+        spec.max_cycles += release;
+    } else {
+        spec.load_steps = release.max(1);
+    }
+}
+
 /// What a row's case name adds for the method that solved it: nothing for explicit (the names the
 /// report always had), `, implicit` otherwise.
 pub fn method_suffix(method: adit::scene::SolveMethod) -> String {

@@ -247,6 +247,20 @@ pub fn run_rock_by(
     Ok(measure(kirsch, factor, pi, rock, 0, method)?.0)
 }
 
+/// [`run_rock_by`] along the quasi-static path (the hole's out-of-balance force released slowly:
+/// `bundled::quasi_static`); the row's case says so.
+pub fn run_rock_slowly_by(
+    kirsch: &Scene,
+    factor: f64,
+    rock: &Rock,
+    method: SolveMethod,
+) -> anyhow::Result<CaseReport> {
+    let release = crate::bundled::quasi_static(method);
+    let mut r = measure(kirsch, factor, 0.0, rock, release, method)?.0;
+    r.case = r.case.replacen("Salençon", "Salençon slowly", 1);
+    Ok(r)
+}
+
 /// [`run_rock`] with the hole's out-of-balance forces released over `ramp` cycles
 /// (`solve.ramp`: the quasi-static path of a slow excavation).
 pub fn run_rock_ramped(
@@ -258,20 +272,20 @@ pub fn run_rock_ramped(
     Ok(measure(kirsch, factor, 0.0, rock, ramp, SolveMethod::Explicit)?.0)
 }
 
-/// [`run_rock`], with the wall displacement over the closed form's, u_h / u.
+/// [`run_rock`] by `method`, the hole's out-of-balance force released as `release` says
+/// (`crate::release_gradually`), with the wall displacement over the closed form's, u_h / u.
 fn measure(
     kirsch: &Scene,
     factor: f64,
     pi: f64,
     rock: &Rock,
-    ramp: u64,
+    release: u64,
     method: SolveMethod,
 ) -> anyhow::Result<(CaseReport, f64)> {
     let start = Instant::now();
     let (mut sc, exact) = scene(kirsch, factor, pi, rock);
-    sc.solve.ramp = ramp;
-    sc.solve.max_cycles += ramp;
     sc.solve.method = method;
+    crate::release_gradually(&mut sc.solve, release);
     let mut b = setup(&sc)?;
     let (cycles, implicit) = crate::settle_by_method(&mut b.model, &sc.solve, "Salençon case")?;
     let (m, rp) = (&b.model, exact.plastic_radius());
@@ -494,16 +508,18 @@ pub fn ground_reaction(
     factor: f64,
     fractions: &[f64],
 ) -> anyhow::Result<(Vec<GrcPoint>, CaseReport)> {
-    ground_reaction_by(kirsch, factor, fractions, SolveMethod::Explicit)
+    ground_reaction_by(kirsch, factor, fractions, SolveMethod::Explicit, 0)
 }
 
-/// [`ground_reaction`] with every stage solved by `method` (`solve.method`); the row's case
-/// names it.
+/// [`ground_reaction`] with every stage solved by `method` (`solve.method`), its out-of-balance
+/// force released as `release` says (`crate::release_gradually`; 0: at once); the row's case
+/// names the method, and says `slowly` when `release` > 0.
 pub fn ground_reaction_by(
     kirsch: &Scene,
     factor: f64,
     fractions: &[f64],
     method: SolveMethod,
+    release: u64,
 ) -> anyhow::Result<(Vec<GrcPoint>, CaseReport)> {
     let start = Instant::now();
     let (mut sc, exact) = scene(kirsch, factor, 0.0, &Rock::SHIPPED);
@@ -536,10 +552,11 @@ pub fn ground_reaction_by(
     let (mut curve, mut cycles, mut implicit) = (Vec::new(), 0, None::<Cost>);
     for st in &plan.stages {
         staging.apply(st, model, plan);
-        let spec = SolveSpec {
+        let mut spec = SolveSpec {
             method,
             ..st.solve.clone()
         };
+        crate::release_gradually(&mut spec, release);
         let what = format!("ground reaction, stage {}", st.name);
         let (stage_cycles, cost) = crate::settle_by_method(model, &spec, &what)?;
         implicit = match (implicit, cost) {
@@ -561,7 +578,8 @@ pub fn ground_reaction_by(
         .fold(0.0, f64::max);
     let report = CaseReport::new(
         format!(
-            "Salençon ground reaction curve, {} support pressures (×{factor}){}",
+            "Salençon ground reaction curve{}, {} support pressures (×{factor}){}",
+            if release > 0 { " slowly" } else { "" },
             fractions.len(),
             crate::method_suffix(method)
         ),
@@ -599,31 +617,32 @@ mod tests {
         assert!(s.wall_displacement() < -s.p0 * s.radius / (2.0 * s.shear));
     }
 
-    /// Coarse twin of the ground reaction curve: elastic down to the critical pressure, plastic below.
+    /// Coarse twin of the ground reaction curve: elastic down to the critical pressure, plastic
+    /// below. Then the same stages solved implicitly, against the explicit solve along the same
+    /// path: each stage's support lowered slowly (over 4 000 cycles). Released at once, each
+    /// explicit stage overshoots dynamically and closes the wall further (1.9 % from Salençon on
+    /// this coarse mesh against 5.05 % slowly); the implicit stages, whose zones return from the
+    /// stage's start, follow the slow path (measured 5.03 %).
     #[test]
     fn ground_reaction_curve_follows_salencon() {
-        let (curve, r) = ground_reaction(
-            &crate::shipped_kirsch().unwrap(),
-            2.0,
-            &[0.6, 0.3, 0.1, 0.0],
-        )
-        .unwrap();
+        let kirsch = crate::shipped_kirsch().unwrap();
+        let fractions = [0.6, 0.3, 0.1, 0.0];
+        let (curve, r) = ground_reaction(&kirsch, 2.0, &fractions).unwrap();
         for p in &curve {
             eprintln!("{p:?}");
         }
         assert!(r.errors["grc"] < 0.05, "{r:?}");
-        // The same stages solved implicitly: the same bound, a few iterations a stage.
-        let (_, i) = ground_reaction_by(
-            &crate::shipped_kirsch().unwrap(),
-            2.0,
-            &[0.6, 0.3, 0.1, 0.0],
-            SolveMethod::Implicit,
-        )
-        .unwrap();
-        assert!(i.errors["grc"] < 0.05, "{i:?}");
+        let by = |method, release| {
+            ground_reaction_by(&kirsch, 2.0, &fractions, method, release)
+                .unwrap()
+                .1
+        };
+        let slow = by(SolveMethod::Explicit, 4000);
+        let i = by(SolveMethod::Implicit, 0);
+        assert!(i.errors["grc"] < 0.06, "{i:?}");
         assert!(
-            (i.errors["grc"] - r.errors["grc"]).abs() < 0.01,
-            "{i:?} {r:?}"
+            (i.errors["grc"] - slow.errors["grc"]).abs() < 0.005,
+            "{i:?} {slow:?}"
         );
     }
 

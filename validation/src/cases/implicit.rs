@@ -79,6 +79,7 @@ impl Case for Implicit {
         };
         for rock in [Rock::SHIPPED, WEAK_ROCK, weak_mixed, DILATANT_ROCK] {
             both(&|method| salencon::run_rock_by(&cx.kirsch, 1.0, 0.0, &rock, method))?;
+            both(&|method| salencon::run_rock_slowly_by(&cx.kirsch, 1.0, &rock, method))?;
         }
         for thickness in [0.15, 0.05] {
             both(&|method| lined::run_by(&cx.kirsch, 1.0, thickness, method))?;
@@ -86,10 +87,19 @@ impl Case for Implicit {
         for fraction in [0.25, 0.6] {
             both(&|method| Ok(pullout::run_by(fraction, 0.1, method)?.0))?;
         }
-        both(&|method| {
-            let fractions = [0.8, 0.6, 0.5, 0.4, 0.3, 0.2, 0.1, 0.05, 0.0];
-            Ok(salencon::ground_reaction_by(&cx.kirsch, 1.0, &fractions, method)?.1)
-        })?;
+        let fractions = [0.8, 0.6, 0.5, 0.4, 0.3, 0.2, 0.1, 0.05, 0.0];
+        for slowly in [false, true] {
+            both(&|method| {
+                let release = if slowly {
+                    bundled::quasi_static(method)
+                } else {
+                    0
+                };
+                let grc =
+                    salencon::ground_reaction_by(&cx.kirsch, 1.0, &fractions, method, release);
+                Ok(grc?.1)
+            })?;
+        }
         for k in [1e11, 1e12] {
             both(&|method| Ok(glued::run_glued_by(&cx.kirsch, k, method)?.report()))?;
         }
@@ -146,17 +156,23 @@ impl Case for Implicit {
              Cholesky, each iteration solving K Δu = R for the out-of-balance force of the explicit \
              force stages and moving the model through the same laws, to the same unbalanced-force \
              ratio; yielding zones and slipping joints converge by the initial-stiffness method \
-             accelerated by Anderson mixing of the last five iterates. The zone and joint laws \
-             integrate along the iterations' path (each iteration's correction is a strain or slip \
-             increment from the state the last one left), so a plastic answer can differ from the \
-             explicit path's by the path: the last column shows by how much. The bolts' grout slip \
-             and yield are evaluated from the stage's start (trial and commit); the zones' \
-             Mohr–Coulomb law is not yet, and follows a stage's path by its load steps. Each case of the report below solved both ways: Kirsch's hole with the exact traction on its outer boundary at \
+             accelerated by Anderson mixing of the last five iterates. The zones' laws and the \
+             bolts' grout slip and yield are evaluated from the load step's start and the whole \
+             increment since (trial and commit: a zone's Mohr–Coulomb stress returns to its yield \
+             surface, at its edges and corners too, from the last commit), so a step's answer \
+             does not depend on the iterations that reach it; the joints integrate their slip \
+             along the iterations' path. A plastic answer depends on the loading path, explicitly \
+             too: released at once, the explicit solve overshoots dynamically and yields further. \
+             So the plastic cases are solved along two paths, at once and slowly (the quasi-static \
+             path: explicit over {ramp} cycles a stage, `solve.ramp`; implicit in {steps} load \
+             steps, `solve.load_steps`); the last column of the second table shows by how much \
+             the answers differ. Each case of the report below solved both ways: Kirsch's hole with the exact traction on its outer boundary at \
              four zonings (×2 coarser to ×0.4 finer than shipped), Lamé's cylinder (ν = 0.45 in plain triangles; ν = 0.45 and 0.499 in mixed zones, \
              `zoning.mixed`, whose matrix is the plain triangles' while the residual is the mixed \
              zone stage's), \
              the self-weight column (h = 0.5 m), Salençon's hole at the shipped rock, the weak \
-             rock of issue 13 in plain and in mixed zones, and a dilatant rock (c = 2 MPa, φ = 35°, ψ = 10°, p0 = 20 MPa), the \
+             rock of issue 13 in plain and in mixed zones, and a dilatant rock (c = 2 MPa, φ = 35°, \
+             ψ = 10°, p0 = 20 MPa), each at once and slowly, the \
              lined hole of Einstein–Schwartz (liners: beam elements and their wall links in the \
              matrix) and the grouted bolt's pull-out, elastic and with the grout slipping (bolts: \
              segments and grout springs in the matrix, the slip converging by the iterations), and \
@@ -171,11 +187,14 @@ impl Case for Implicit {
              the case names, differ by design: released, a loose rigid or simple wedge keeps \
              drifting explicitly at the speed it had, as in UDEC, while the static solve leaves it \
              where it lost its clamping, as the deformable wedges stop); further, Salençon's \
-             ground reaction curve (staged support pressures 100 % to 0 %), the Kirsch model cut \
+             ground reaction curve (staged support pressures 100 % to 0 %, each stage at once and \
+             slowly), the Kirsch model cut \
              by glued joints (kn = 1e11 and 1e12 Pa/m) and by the same joints with Coulomb \
              friction 30° (slipping near the hole). \
              Cycles are the explicit cycles or the implicit iterations; the seconds include meshing \
-             and setting up.\n"
+             and setting up.\n",
+            ramp = bundled::QUASI_STATIC_RAMP,
+            steps = bundled::QUASI_STATIC_STEPS,
         );
         let rows: Vec<CaseReport> = pairs
             .iter()
@@ -227,11 +246,10 @@ impl Case for Implicit {
         if let Some((e, i, se, si)) = &tunnel_paths {
             let _ = writeln!(
                 md,
-                "\nA plastic answer depends on the path, explicitly too. Each bundled model is \
-                 solved along two: its stages' loads released at once (explicit: the dynamic \
-                 overshoot of a sudden excavation, damped out), and slowly, the quasi-static path \
-                 (explicit: over {} cycles per stage, `solve.ramp`; implicit: in {} load steps, \
-                 `solve.load_steps`). The tunnel's median wall closure: explicit {:.2} mm with {} \
+                "\nEach bundled model is solved along the same two paths: its stages' loads \
+                 released at once (explicit: the dynamic overshoot of a sudden excavation, damped \
+                 out), and slowly (explicit: over {} cycles per stage; implicit: in {} load \
+                 steps). The tunnel's median wall closure: explicit {:.2} mm with {} \
                  zones yielded at once ({} cycles, {:.2} s), {:.2} mm with {} zones slowly ({} \
                  cycles, {:.2} s); implicit {:.2} mm with {} zones at once ({} iterations, {:.2} s), \
                  {:.2} mm with {} zones slowly ({} iterations, {:.2} s). Issue 17's bar of 1 % \
