@@ -44,6 +44,9 @@ impl Cycle {
         joint_laws: &[Box<dyn JointLaw>],
         p: &CycleParams,
     ) {
+        // The contacts may have been put back to a commit's (`implicit::commit`) since the last
+        // detection.
+        self.contact_force.resize(3 * contacts.len(), [0.0; 2]);
         let (pos, disp, vel) = (&nodes.pos, &nodes.disp, &nodes.vel);
         let x = |n: u32| {
             let (p, u) = (pos[n as usize], disp[n as usize]);
