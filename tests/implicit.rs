@@ -146,8 +146,9 @@ fn a_step_that_does_not_converge_is_cut() {
 
 /// Two blocks across a horizontal glued joint under 1 MPa: `implicit` carries the load through
 /// the contacts as the explicit path does, in deformable, rigid and simple blocks; `auto` takes
-/// the implicit path; the large-strain update is refused by `implicit`, naming the field and the
-/// reason.
+/// the implicit path; the large-strain update and the continuously yielding joint are refused by
+/// `implicit`, naming the field and the reason, and `auto` cycles the latter explicitly, saying
+/// why.
 #[test]
 fn implicit_contacts_and_what_it_refuses() {
     let text = |method: &str, mode: &str, law: &str| {
@@ -236,6 +237,31 @@ fn implicit_contacts_and_what_it_refuses() {
         msg.starts_with("solve.method: implicit cannot solve this model: the large-strain"),
         "{msg}"
     );
+    // The continuously yielding joint is refused by `implicit`, and `auto` cycles it explicitly.
+    let yielding = |method: &str| {
+        let t = text(method, "deformable", "continuously_yielding").replace(
+            r#""law": "continuously_yielding""#,
+            r#""law": "continuously_yielding", "friction": 30, "roughness": 1e-3"#,
+        );
+        Scene::from_json(&t, "two_blocks").unwrap()
+    };
+    let msg = adit::run_scene(&yielding("implicit"), &out, &mut Quiet)
+        .err()
+        .unwrap()
+        .to_string();
+    assert!(
+        msg.starts_with(
+            "solve.method: implicit cannot solve this model: the continuously yielding joint law"
+        ),
+        "{msg}"
+    );
+    let a = run(&yielding("auto"), "adit-test-implicit-auto-yielding");
+    assert!(
+        a.summary.methods[0].starts_with("explicit (the continuously yielding joint law"),
+        "{:?}",
+        a.summary.methods
+    );
+    assert_eq!(a.summary.status, "converged", "{:?}", a.summary.reason);
 }
 
 /// `implicit` asks for static equilibrium: a dynamic solve with it is refused naming the field.
@@ -505,4 +531,69 @@ fn a_slowly_converging_model_is_not_called_a_mechanism() {
         r.summary.status,
         r.summary.reason
     );
+}
+
+/// Displacement control: a platen driven down on an elastic column gives the column's stiffness
+/// (σyy = M ε over the column, M = E(1 − ν)/((1 + ν)(1 − 2ν)) with the sides on rollers); a drive
+/// along a free component is refused naming the node, before any factorization.
+#[test]
+fn a_driven_platen_strains_the_column_it_drives() {
+    let text = r#"{
+        "name": "column",
+        "materials": { "rock": { "density": 2500, "young": 10e9, "poisson": 0.25 } },
+        "region": { "polygon": [[0, 0], [1, 0], [1, 2], [0, 2]], "material": "rock",
+                    "edge_names": ["bottom", "right", "top", "left"] },
+        "zoning": { "edge_at_excavation": 0.25, "edge_far": 0.25 },
+        "boundary": [ { "part": "bottom", "fix": "y" }, { "part": "left", "fix": "x" },
+                      { "part": "right", "fix": "x" }, { "part": "top", "fix": "y" } ],
+        "solve": { "method": "implicit", "ratio": 1e-9 }
+    }"#;
+    let sc = Scene::from_json(text, "column").unwrap();
+    let mut b = adit::setup::setup(&sc).unwrap();
+    let mut solver = adit::solve::Solver::new(&mut b.model, &sc.solve, 0);
+    let top = b.plan.boundary.part_nodes["top"].clone();
+    let strain = 1e-4;
+    let drive: Vec<adit::implicit::Drive> =
+        top.iter().map(|&n| (n, [0.0, -2.0 * strain])).collect();
+    let solved = adit::implicit::solve_driven(
+        &mut b.model,
+        &mut solver.cycle,
+        &solver.params,
+        &sc.solve,
+        &drive,
+        &mut Quiet,
+    );
+    assert_eq!(
+        solved.solution.status,
+        adit::solve::Status::Converged,
+        "{:?}",
+        solved.solution.status
+    );
+    let (e, nu) = (10e9, 0.25);
+    let m = e * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu));
+    for s in &b.model.zones.stress {
+        assert!((s[1] / (-m * strain) - 1.0).abs() < 1e-6, "{s:?}");
+    }
+    // Along x the top corner nodes are fixed (the sides' rollers), the others are not.
+    let free = top
+        .iter()
+        .copied()
+        .find(|&n| b.model.nodes.fixed[n as usize] & adit::model::FIX_X == 0)
+        .unwrap();
+    let refused = adit::implicit::solve_driven(
+        &mut b.model,
+        &mut solver.cycle,
+        &solver.params,
+        &sc.solve,
+        &[(free, [1e-4, 0.0])],
+        &mut Quiet,
+    );
+    let adit::solve::Status::Failed(reason) = refused.solution.status else {
+        panic!("{:?}", refused.solution.status);
+    };
+    assert!(
+        reason.contains(&format!("node {free} is driven along x but free along it")),
+        "{reason}"
+    );
+    assert_eq!(refused.cost.factorizations, 0);
 }

@@ -29,13 +29,17 @@
 //!
 //! Rigid and simple blocks bring their generalised displacements as unknowns (`bodies`).
 //!
+//! Displacement control: `solve_driven` moves given fixed nodes by given displacements with the
+//! first load step (`drive`), as a platen or a shear box moves a specimen.
+//!
 //! What it does not yet do (`implicit` is refused, `auto` cycles explicitly): the large-strain
-//! zone update.
+//! zone update, and the continuously yielding joint (`JointLaw::implicit_refusal`).
 
 mod anderson;
 pub mod assemble;
 mod bodies;
 mod commit;
+mod drive;
 mod factor;
 mod moving;
 mod steps;
@@ -45,12 +49,14 @@ mod support;
 use std::time::Instant;
 
 use crate::cycle::{Cycle, CycleParams, ZoneScheme};
+use crate::joint::JointLaw;
 use crate::model::Model;
 use crate::scene::{SolveMethod, SolveMode, SolveSpec};
 use crate::solve::{HistoryRow, Observer, Solution, Status};
 use anderson::Anderson;
 use assemble::{Dofs, stiffness};
 use commit::Committed;
+pub use drive::Drive;
 use factor::{Factor, FactorError};
 use moving::Movement;
 use steps::LoadSteps;
@@ -65,12 +71,13 @@ use steps::LoadSteps;
 /// 556 iterations and a cut to +1.7 % of the explicit closure (66 iterations here).
 const RESTART_RISE: f64 = 2.0;
 
-/// Why the implicit path cannot solve `model` as it is, or `None` if it can.
-pub fn unsupported(scheme: ZoneScheme) -> Option<&'static str> {
+/// Why the implicit path cannot solve a model of zone `scheme` and joint laws `joints`, or
+/// `None` if it can.
+pub fn unsupported(scheme: ZoneScheme, joints: &[Box<dyn JointLaw>]) -> Option<&'static str> {
     if scheme == ZoneScheme::LargeStrain {
         Some("the large-strain zone update (`solve.large_strain`) is not assembled")
     } else {
-        None
+        joints.iter().find_map(|law| law.implicit_refusal())
     }
 }
 
@@ -132,15 +139,16 @@ pub fn method(
     asked: SolveMethod,
     mode: SolveMode,
     scheme: ZoneScheme,
+    joints: &[Box<dyn JointLaw>],
 ) -> Result<Method, &'static str> {
     match (asked, mode) {
         (SolveMethod::Explicit, _) => Ok(Method::Explicit),
         (SolveMethod::Auto, SolveMode::Dynamic) => Ok(Method::Explicit),
-        (SolveMethod::Auto, SolveMode::Static) => Ok(match unsupported(scheme) {
+        (SolveMethod::Auto, SolveMode::Static) => Ok(match unsupported(scheme, joints) {
             Some(reason) => Method::Fallback(reason),
             None => Method::Implicit,
         }),
-        (SolveMethod::Implicit, _) => match unsupported(scheme) {
+        (SolveMethod::Implicit, _) => match unsupported(scheme, joints) {
             Some(reason) => Err(reason),
             None => Ok(Method::Implicit),
         },
@@ -202,7 +210,35 @@ pub fn solve(
     spec: &SolveSpec,
     observer: &mut dyn Observer,
 ) -> Solved {
+    solve_driven(model, cycle, params, spec, &[], observer)
+}
+
+/// [`solve`] under displacement control: each of `drive`'s nodes moved by its displacement (m)
+/// along its fixed components at the start, with the first load step (`drive`; a step halved goes
+/// back to before the move and makes it again). A drive that cannot act (a free component driven,
+/// a body's node) fails the solve naming the node, before any factorization.
+pub fn solve_driven(
+    model: &mut Model,
+    cycle: &mut Cycle,
+    params: &CycleParams,
+    spec: &SolveSpec,
+    drive: &[Drive],
+    observer: &mut dyn Observer,
+) -> Solved {
     let (ratio, max_iterations) = (spec.ratio, spec.max_iterations);
+    if let Some(reason) = drive::refused(model, drive) {
+        let solution = Solution {
+            status: Status::Failed(reason),
+            cycles: 0,
+            history: Vec::new(),
+            final_ratio: f64::NAN,
+        };
+        return Solved {
+            solution,
+            cost: Cost::default(),
+            sound: true,
+        };
+    }
     // The zones take their laws' trial from the commit (`Cycle::displace`).
     let params = &CycleParams {
         trial: true,
@@ -245,7 +281,10 @@ pub fn solve(
     steps.apply(model);
     let mut committed = Committed::of(model);
     // Whether the zone forces are those of the state as it is (`displace` left them).
-    let mut zones_current = false;
+    let mut zones_current = !drive.is_empty();
+    if zones_current {
+        drive::apply(model, cycle, params, &committed, drive, &mut du);
+    }
     let status = loop {
         let llt = match &mut factor {
             Ok(llt) => llt,
@@ -299,8 +338,12 @@ pub fn solve(
                 break Status::CycleLimit;
             }
             committed.restore(model);
-            zones_current = false;
             steps.apply(model);
+            // Back before the drive while no step has committed it: it is made again.
+            zones_current = steps.is_first() && !drive.is_empty();
+            if zones_current {
+                drive::apply(model, cycle, params, &committed, drive, &mut du);
+            }
             factor = factorize(model, &dofs, &mut cost, observer);
             (in_step, least_ratio, movement) = (0, f64::INFINITY, Movement::new(model));
             anderson.reset();

@@ -49,6 +49,11 @@ impl LoadSteps {
         }
     }
 
+    /// Whether no step has been committed yet (the step being solved starts the stage).
+    pub fn is_first(&self) -> bool {
+        self.done == 0.0
+    }
+
     /// Whether the step being solved ends the stage.
     pub fn is_last(&self) -> bool {
         self.done + self.size >= 1.0 - 1e-9

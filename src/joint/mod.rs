@@ -44,6 +44,13 @@ pub trait JointLaw: Send + Sync + CopyJointLaw {
     fn update(&self, state: &mut JointState, dn: f64, ds: f64);
     /// Normal and shear stiffness (Pa/m), for the time step.
     fn stiffness(&self) -> (f64, f64);
+    /// Why the implicit path cannot integrate this law, or `None` (the default). The implicit
+    /// path steps the joints through its iterations' corrections, which go back and forth on
+    /// their way to equilibrium: a law whose response depends on the history of its increments
+    /// beyond where they end (reversals, not only slip) would take them for the joint's history.
+    fn implicit_refusal(&self) -> Option<&'static str> {
+        None
+    }
 }
 
 /// A boxed copy of a joint law: a stage plan keeps the law it gives a joint material and the

@@ -94,6 +94,17 @@ impl JointLaw for ContinuouslyYielding {
     fn stiffness(&self) -> (f64, f64) {
         (self.normal_stiffness, self.shear_stiffness)
     }
+
+    /// Each shear reversal restarts the law's hardening (r = τ/τm), and the implicit iterations'
+    /// corrections reverse many times on their way: driven by them, the direct shear test's curve
+    /// ended 49 % of τm off the law's closed form (0.01 % explicitly).
+    fn implicit_refusal(&self) -> Option<&'static str> {
+        Some(
+            "the continuously yielding joint law restarts its hardening at each reversal of the \
+             shear increment, and the implicit iterations' corrections reverse on their way to \
+             equilibrium",
+        )
+    }
 }
 
 #[cfg(test)]

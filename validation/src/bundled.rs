@@ -145,8 +145,8 @@ mod tests {
     /// Issue 17's bar on the bundled tunnel models is 1 % of the explicit wall closure and
     /// yielded-zone count, on the quasi-static path (the plastic answer depends on the path:
     /// released at once, the explicit tunnel overshoots dynamically to 7.41 mm and 679 zones,
-    /// +1.9 % and +5.4 %). Measured: the tunnel +0.01 % and +0.16 % (645 of 644 zones), the
-    /// jointed tunnel +0.22 % and 0 of 0.
+    /// +1.9 % and +5.4 %). Measured: the tunnel −0.24 % and −0.16 % (643 of 644 zones), the
+    /// jointed tunnel +0.04 % and 0 of 0.
     #[test]
     fn the_implicit_solve_gives_the_tunnel_models_explicit_answer() {
         let root = crate::repository_root();

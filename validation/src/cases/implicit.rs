@@ -9,7 +9,9 @@ use crate::peer;
 use crate::plot::{Series, speed_and_convergence};
 use crate::report::CaseReport;
 use crate::salencon::{self, Rock, WEAK_ROCK};
-use crate::{bundled, glued, gravity, incompressible, lined, modes, pullout};
+use crate::{
+    bundled, direct_shear, glued, gravity, incompressible, lined, modes, pullout, softening,
+};
 use adit::scene::{BlockMode, SolveMethod};
 
 pub struct Implicit;
@@ -100,6 +102,8 @@ impl Case for Implicit {
                 Ok(grc?.1)
             })?;
         }
+        both(&|method| Ok(softening::run_by(0.05, 0.004, 2e-7, method)?.report()))?;
+        both(&|method| direct_shear::run_by(0.0625, method))?;
         for k in [1e11, 1e12] {
             both(&|method| Ok(glued::run_glued_by(&cx.kirsch, k, method)?.report()))?;
         }
@@ -188,7 +192,13 @@ impl Case for Implicit {
              drifting explicitly at the speed it had, as in UDEC, while the static solve leaves it \
              where it lost its clamping, as the deformable wedges stop); further, Salençon's \
              ground reaction curve (staged support pressures 100 % to 0 %, each stage at once and \
-             slowly), the Kirsch model cut \
+             slowly), the strain-softening specimen of issue 5 (zones of 0.05 m; its platen \
+             driven by 4e-5 m between samples, explicitly over 200 cycles, implicitly as one \
+             static solve under displacement control, `implicit::solve_driven`; its error is the \
+             peak's, the branch after it localizing along a path of its own), the direct shear of \
+             a Coulomb joint (zones of 0.0625 m; the box driven by 1e-5 m between samples; the \
+             continuously yielding joint is refused by the implicit path, whose iterations' \
+             corrections reverse on their way and restart that law's hardening), the Kirsch model cut \
              by glued joints (kn = 1e11 and 1e12 Pa/m) and by the same joints with Coulomb \
              friction 30° (slipping near the hole). \
              Cycles are the explicit cycles or the implicit iterations; the seconds include meshing \
