@@ -176,7 +176,10 @@ pub fn run_by(
             cost = cost.map(|a| a.plus(c));
             anyhow::ensure!(
                 solution.status == Status::Converged,
-                "softening specimen (zones of {edge} m, implicit) did not converge: {:?}",
+                "softening specimen (zones of {edge} m, implicit) did not converge at axial \
+                 strain {:.3e} (peak {:.2} MPa so far): {:?}",
+                -b.model.nodes.disp[top[0] as usize][1] / height,
+                peak / 1e6,
                 solution.status
             );
             solution
