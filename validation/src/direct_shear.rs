@@ -8,10 +8,10 @@
 use std::time::Instant;
 
 use adit::Scene;
-use adit::implicit::{Cost, Drive, Solved};
+use adit::implicit::{Cost, Drive};
 use adit::scene::{SolveMethod, SolveSpec};
 use adit::setup::setup;
-use adit::solve::{Quiet, Status};
+use adit::solve::Status;
 
 use crate::report::CaseReport;
 
@@ -110,33 +110,13 @@ fn shear(
     let mut curve: Vec<Sample> = Vec::new();
     let mut cycles = settled.cycles;
     while mean(&b.model, 0) - x0 < 3e-3 {
-        let sol = if explicit {
-            solver.solve(&mut b.model, &mut Quiet)
-        } else {
-            let Solved {
-                solution, cost: c, ..
-            } = adit::implicit::solve_driven(
-                &mut b.model,
-                &mut solver.cycle,
-                &solver.params,
-                &spec,
-                &drive,
-                &mut Quiet,
-            );
-            cost = cost.map(|a| a.plus(c));
-            anyhow::ensure!(
-                solution.status == Status::Converged,
-                "direct shear ({}) did not converge: {:?}",
-                method.name(),
-                solution.status
-            );
-            solution
-        };
-        anyhow::ensure!(
-            !matches!(sol.status, Status::Failed(_)),
-            "direct shear failed: {:?}",
-            sol.status
-        );
+        let sol = crate::drive_sample(&mut b.model, &mut solver, &spec, &drive, &mut cost)
+            .map_err(|status| {
+                anyhow::anyhow!(
+                    "direct shear ({}) did not converge: {status:?}",
+                    method.name()
+                )
+            })?;
         cycles += sol.cycles;
         let c = &b.model.contacts;
         // Both sides' contacts together cover the 1 m joint once: Σ τ L is the shear force.

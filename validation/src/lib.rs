@@ -94,6 +94,41 @@ pub fn solve_by_method(
     (solver, solution, cost)
 }
 
+/// One sample of a displacement-controlled test solved by `spec.method`: explicitly `solver`
+/// cycles on (the driven nodes' velocities move them), implicitly one static solve with the nodes
+/// moved by `drive` (`implicit::solve_driven`), its cost added to `cost`. Err: the status, when
+/// the explicit cycles failed or the implicit solve did not converge.
+pub fn drive_sample(
+    model: &mut Model,
+    solver: &mut Solver,
+    spec: &SolveSpec,
+    drive: &[adit::implicit::Drive],
+    cost: &mut Option<adit::implicit::Cost>,
+) -> Result<adit::solve::Solution, Status> {
+    if spec.method == adit::scene::SolveMethod::Explicit {
+        let sol = solver.solve(model, &mut Quiet);
+        return match sol.status {
+            Status::Failed(_) => Err(sol.status),
+            _ => Ok(sol),
+        };
+    }
+    let adit::implicit::Solved {
+        solution, cost: c, ..
+    } = adit::implicit::solve_driven(
+        model,
+        &mut solver.cycle,
+        &solver.params,
+        spec,
+        drive,
+        &mut Quiet,
+    );
+    *cost = Some(cost.map_or(c, |a| a.plus(c)));
+    match solution.status {
+        Status::Converged => Ok(solution),
+        _ => Err(solution.status),
+    }
+}
+
 /// [`solve_by_method`], failing with `what` named unless it converged; returns the cycles (or
 /// iterations) and, when the implicit solve ran, its cost.
 pub fn settle_by_method(

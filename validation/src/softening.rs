@@ -12,11 +12,11 @@
 use std::time::Instant;
 
 use adit::Scene;
-use adit::implicit::{Cost, Drive, Solved};
+use adit::implicit::{Cost, Drive};
 use adit::model::FIX_Y;
 use adit::scene::{SolveMethod, SolveSpec};
 use adit::setup::setup;
-use adit::solve::{Quiet, Status};
+use adit::solve::Status;
 use serde::Serialize;
 
 use crate::report::{CaseReport, StepInfo};
@@ -160,33 +160,16 @@ pub fn run_by(
     let mut curve = Vec::new();
     let (mut peak, mut peak_strain) = (0.0f64, 0.0);
     loop {
-        let sol = if explicit {
-            solver.solve(&mut b.model, &mut Quiet)
-        } else {
-            let Solved {
-                solution, cost: c, ..
-            } = adit::implicit::solve_driven(
-                &mut b.model,
-                &mut solver.cycle,
-                &solver.params,
-                &spec,
-                &drive,
-                &mut Quiet,
-            );
-            cost = cost.map(|a| a.plus(c));
-            anyhow::ensure!(
-                solution.status == Status::Converged,
-                "softening specimen (zones of {edge} m, implicit) did not converge at axial \
-                 strain {:.3e} (peak {:.2} MPa so far): {:?}",
-                -b.model.nodes.disp[top[0] as usize][1] / height,
-                peak / 1e6,
-                solution.status
-            );
-            solution
-        };
-        if let Status::Failed(reason) = &sol.status {
-            anyhow::bail!("softening specimen (zones of {edge} m) failed: {reason}");
-        }
+        let sol = crate::drive_sample(&mut b.model, &mut solver, &spec, &drive, &mut cost)
+            .map_err(|status| {
+                anyhow::anyhow!(
+                    "softening specimen (zones of {edge} m, {}) did not converge at axial strain \
+                     {:.3e} (peak {:.2} MPa so far): {status:?}",
+                    method.name(),
+                    -b.model.nodes.disp[top[0] as usize][1] / height,
+                    peak / 1e6
+                )
+            })?;
         cycles += sol.cycles;
         let m = &b.model;
         // The mean σyy over the specimen is the mean platen stress (∫σ dA = ∮ x ⊗ t ds).
