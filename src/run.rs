@@ -149,6 +149,9 @@ fn build_solve_write(
         stage_method(plan, i, model)?;
     }
     let (mut methods, mut implicit_cost) = (Vec::new(), None::<implicit::Cost>);
+    // The last factorization, whose symbolic analysis a later stage reuses while the stiffness
+    // keeps its pattern.
+    let mut analysis = implicit::Analysis::default();
     for (i, stage) in plan.stages.iter().enumerate() {
         staging.apply(stage, model, plan);
         let mut solver = Solver::new(model, &stage.solve, scene.output.every);
@@ -169,7 +172,15 @@ fn build_solve_write(
                     solution,
                     cost,
                     sound,
-                } = implicit::solve(model, &mut solver.cycle, &solver.params, spec, &mut writing);
+                } = implicit::solve_driven(
+                    model,
+                    &mut solver.cycle,
+                    &solver.params,
+                    spec,
+                    &[],
+                    &mut analysis,
+                    &mut writing,
+                );
                 seconds.implicit += cost.seconds();
                 implicit_cost = Some(implicit_cost.map_or(cost, |c| c.plus(cost)));
                 match hand_over(spec.method, &solution, sound) {

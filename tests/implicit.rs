@@ -561,6 +561,7 @@ fn a_driven_platen_strains_the_column_it_drives() {
         &solver.params,
         &sc.solve,
         &drive,
+        &mut adit::implicit::Analysis::default(),
         &mut Quiet,
     );
     assert_eq!(
@@ -586,6 +587,7 @@ fn a_driven_platen_strains_the_column_it_drives() {
         &solver.params,
         &sc.solve,
         &[(free, [1e-4, 0.0])],
+        &mut adit::implicit::Analysis::default(),
         &mut Quiet,
     );
     let adit::solve::Status::Failed(reason) = refused.solution.status else {

@@ -21,20 +21,39 @@ pub struct Factor {
     values: Vec<f64>,
     /// Scratch of one solve with one right-hand side.
     scratch: MemBuffer,
+    /// The factorized matrix's pattern (its lower triangle's column pointers and row indices),
+    /// which a later matrix must have to reuse `symbolic`.
+    col_ptr: Vec<usize>,
+    row_idx: Vec<usize>,
 }
 
 impl Factor {
     /// Factorize `k` (its lower triangle): the symbolic analysis (a fill-reducing ordering and
     /// the supernodes), then the numeric LLᵀ; an error in words when `k` is not positive definite.
-    pub fn new(k: SparseColMatRef<'_, usize, f64>) -> Result<Factor, FactorError> {
+    /// The analysis of `last` (an earlier factorization) is reused when `k` has its pattern;
+    /// the second value says whether it was.
+    pub fn new(
+        k: SparseColMatRef<'_, usize, f64>,
+        last: Option<Factor>,
+    ) -> Result<(Factor, bool), FactorError> {
         let par = faer::get_global_parallelism();
-        let symbolic = factorize_symbolic_cholesky(
-            k.symbolic(),
-            Side::Lower,
-            Default::default(),
-            Default::default(),
-        )
-        .map_err(|e| FactorError::Numeric(format!("{e:?}")))?;
+        let pattern = k.symbolic();
+        let kept = last.filter(|f| {
+            f.col_ptr == pattern.col_ptr()
+                && pattern.col_nnz().is_none()
+                && f.row_idx == pattern.row_idx()
+        });
+        let reused = kept.is_some();
+        let symbolic = match kept {
+            Some(f) => f.symbolic,
+            None => factorize_symbolic_cholesky(
+                pattern,
+                Side::Lower,
+                Default::default(),
+                Default::default(),
+            )
+            .map_err(|e| FactorError::Numeric(format!("{e:?}")))?,
+        };
         let scratch_req = symbolic.factorize_numeric_llt_scratch::<f64>(par, Default::default());
         let bytes = symbolic.len_val() * std::mem::size_of::<f64>() + scratch_req.size_bytes();
         fits(bytes, available_memory())?;
@@ -56,11 +75,16 @@ impl Factor {
         factorized?;
         let scratch = MemBuffer::try_new(symbolic.solve_in_place_scratch::<f64>(1, par))
             .map_err(|e| FactorError::Memory(format!("implicit: solve scratch: {e:?}")))?;
-        Ok(Factor {
-            symbolic,
-            values,
-            scratch,
-        })
+        Ok((
+            Factor {
+                symbolic,
+                values,
+                scratch,
+                col_ptr: pattern.col_ptr().to_vec(),
+                row_idx: pattern.row_idx().to_vec(),
+            },
+            reused,
+        ))
     }
 
     /// Non-zeros of L (what the factor holds, 8 bytes each with its row indices beside).
@@ -206,7 +230,7 @@ mod tests {
             .unwrap();
         pool.install(|| {
             let k = grid(150);
-            let mut f = Factor::new(k.as_ref()).unwrap();
+            let (mut f, _) = Factor::new(k.as_ref(), None).unwrap();
             let workers: Vec<u64> = rayon::broadcast(|_| in_use() & UPPER);
             assert!(workers.iter().all(|&u| u == 0), "{workers:?}");
             let mut x = vec![1.0; 150 * 150];
@@ -214,5 +238,34 @@ mod tests {
             assert_eq!(in_use() & UPPER, 0);
             assert!(x.iter().all(|v| v.is_finite() && *v > 0.0));
         });
+    }
+
+    /// The symbolic analysis of an earlier factorization is reused for a matrix of its pattern
+    /// (other values: the solve is the new matrix's) and not for another pattern.
+    #[test]
+    fn an_analysis_is_reused_for_the_same_pattern_only() {
+        let (n, b) = (30, vec![1.0; 900]);
+        let solve = |f: &mut Factor| {
+            let mut x = b.clone();
+            f.solve_in_place(&mut x);
+            x
+        };
+        let (mut first, reused) = Factor::new(grid(n).as_ref(), None).unwrap();
+        assert!(!reused);
+        let x1 = solve(&mut first);
+        // The same pattern, every value doubled: reused, and the solution halves.
+        let mut k2 = grid(n);
+        k2.val_mut().iter_mut().for_each(|v| *v *= 2.0);
+        let (mut second, reused) = Factor::new(k2.as_ref(), Some(first)).unwrap();
+        assert!(reused);
+        let x2 = solve(&mut second);
+        assert!(
+            x1.iter()
+                .zip(&x2)
+                .all(|(a, b)| (a - 2.0 * b).abs() < 1e-12 * a.abs())
+        );
+        // Another pattern (a larger grid): analysed anew.
+        let (_, reused) = Factor::new(grid(n + 1).as_ref(), Some(second)).unwrap();
+        assert!(!reused);
     }
 }

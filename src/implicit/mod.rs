@@ -91,6 +91,10 @@ pub struct Cost {
     /// Non-zeros of the Cholesky factor L (8 bytes of value each, with their row indices).
     pub factor_nonzeros: usize,
     pub factorizations: u64,
+    /// Symbolic analyses (fill-reducing ordering and supernodes): a factorization whose matrix
+    /// has the last one's pattern reuses its analysis, within a solve and across the stages of a
+    /// run (`Analysis`).
+    pub analyses: u64,
     pub iterations: u64,
     /// Load steps halved because they did not converge (`steps`).
     pub cuts: u64,
@@ -113,6 +117,7 @@ impl Cost {
             matrix_nonzeros: self.matrix_nonzeros.max(o.matrix_nonzeros),
             factor_nonzeros: self.factor_nonzeros.max(o.factor_nonzeros),
             factorizations: self.factorizations + o.factorizations,
+            analyses: self.analyses + o.analyses,
             iterations: self.iterations + o.iterations,
             cuts: self.cuts + o.cuts,
             assemble_s: self.assemble_s + o.assemble_s,
@@ -163,6 +168,7 @@ fn factorize(
     dofs: &Dofs,
     cost: &mut Cost,
     observer: &mut dyn Observer,
+    last: Option<Factor>,
 ) -> Result<Factor, String> {
     let start = Instant::now();
     let k = stiffness(model, dofs)
@@ -170,7 +176,10 @@ fn factorize(
     cost.assemble_s += start.elapsed().as_secs_f64();
     cost.matrix_nonzeros = cost.matrix_nonzeros.max(k.compute_nnz());
     let t = Instant::now();
-    let factor = Factor::new(k.as_ref());
+    let factor = Factor::new(k.as_ref(), last).map(|(factor, reused)| {
+        cost.analyses += u64::from(!reused);
+        factor
+    });
     cost.factorize_s += t.elapsed().as_secs_f64();
     cost.factorizations += 1;
     if let Ok(f) = &factor {
@@ -185,6 +194,14 @@ fn factorize(
              to move (a mechanism) or has no stiffness"
         ),
     })
+}
+
+/// What an implicit solve leaves for the next one on the same model: its last factorization,
+/// whose symbolic analysis the next reuses while the stiffness keeps its pattern (the stages of
+/// `adit run`, the samples of a displacement-controlled test).
+#[derive(Default)]
+pub struct Analysis {
+    factor: Option<Factor>,
 }
 
 /// How an implicit solve ended.
@@ -210,19 +227,30 @@ pub fn solve(
     spec: &SolveSpec,
     observer: &mut dyn Observer,
 ) -> Solved {
-    solve_driven(model, cycle, params, spec, &[], observer)
+    solve_driven(
+        model,
+        cycle,
+        params,
+        spec,
+        &[],
+        &mut Analysis::default(),
+        observer,
+    )
 }
 
 /// [`solve`] under displacement control: each of `drive`'s nodes moved by its displacement (m)
 /// along its fixed components at the start, with the first load step (`drive`; a step halved goes
 /// back to before the move and makes it again). A drive that cannot act (a free component driven,
-/// a body's node) fails the solve naming the node, before any factorization.
+/// a body's node) fails the solve naming the node, before any factorization. The symbolic
+/// analysis of `analysis`'s factorization, an earlier solve's, is reused while the stiffness has
+/// its pattern, and the solve leaves its own last factorization there.
 pub fn solve_driven(
     model: &mut Model,
     cycle: &mut Cycle,
     params: &CycleParams,
     spec: &SolveSpec,
     drive: &[Drive],
+    analysis: &mut Analysis,
     observer: &mut dyn Observer,
 ) -> Solved {
     let (ratio, max_iterations) = (spec.ratio, spec.max_iterations);
@@ -251,7 +279,7 @@ pub fn solve_driven(
     let loose = support::unsupported_blocks(model);
     // A block nothing holds is named before any factorization: the stage fails as a mechanism.
     let mut factor = if loose.is_empty() {
-        factorize(model, &dofs, &mut cost, observer)
+        factorize(model, &dofs, &mut cost, observer, analysis.factor.take())
     } else {
         let names: Vec<String> = loose.iter().take(10).map(|b| b.to_string()).collect();
         Err(format!(
@@ -344,7 +372,7 @@ pub fn solve_driven(
             if zones_current {
                 drive::apply(model, cycle, params, &committed, drive, &mut du);
             }
-            factor = factorize(model, &dofs, &mut cost, observer);
+            factor = factorize(model, &dofs, &mut cost, observer, factor.ok());
             (in_step, least_ratio, movement) = (0, f64::INFINITY, Movement::new(model));
             anderson.reset();
             continue;
@@ -384,11 +412,12 @@ pub fn solve_driven(
         in_step += 1;
         if cycle.detections() != detections {
             detections = cycle.detections();
-            factor = factorize(model, &dofs, &mut cost, observer);
+            factor = factorize(model, &dofs, &mut cost, observer, factor.ok());
             anderson.reset();
             least_ratio = f64::INFINITY;
         }
     };
+    analysis.factor = factor.ok();
     cost.iterations = iteration;
     cost.cuts = u64::from(steps.cuts());
     let refactoring = cost.assemble_s + cost.factorize_s - before;

@@ -97,6 +97,7 @@ fn shear(
         b.model.nodes.fixed[n] |= adit::model::FIX_X;
         b.model.nodes.vel[n][0] = if explicit { rate } else { 0.0 };
     }
+    let mut analysis = adit::implicit::Analysis::default();
     let drive: Vec<Drive> = top
         .iter()
         .map(|&n| (n as u32, [rate * chunk as f64, 0.0]))
@@ -110,13 +111,20 @@ fn shear(
     let mut curve: Vec<Sample> = Vec::new();
     let mut cycles = settled.cycles;
     while mean(&b.model, 0) - x0 < 3e-3 {
-        let sol = crate::drive_sample(&mut b.model, &mut solver, &spec, &drive, &mut cost)
-            .map_err(|status| {
-                anyhow::anyhow!(
-                    "direct shear ({}) did not converge: {status:?}",
-                    method.name()
-                )
-            })?;
+        let sol = crate::drive_sample(
+            &mut b.model,
+            &mut solver,
+            &spec,
+            &drive,
+            &mut analysis,
+            &mut cost,
+        )
+        .map_err(|status| {
+            anyhow::anyhow!(
+                "direct shear ({}) did not converge: {status:?}",
+                method.name()
+            )
+        })?;
         cycles += sol.cycles;
         let c = &b.model.contacts;
         // Both sides' contacts together cover the 1 m joint once: Σ τ L is the shear force.

@@ -96,13 +96,15 @@ pub fn solve_by_method(
 
 /// One sample of a displacement-controlled test solved by `spec.method`: explicitly `solver`
 /// cycles on (the driven nodes' velocities move them), implicitly one static solve with the nodes
-/// moved by `drive` (`implicit::solve_driven`), its cost added to `cost`. Err: the status, when
-/// the explicit cycles failed or the implicit solve did not converge.
+/// moved by `drive` (`implicit::solve_driven`, reusing the symbolic analysis in `analysis`), its
+/// cost added to `cost`. Err: the status, when the explicit cycles failed or the implicit solve
+/// did not converge.
 pub fn drive_sample(
     model: &mut Model,
     solver: &mut Solver,
     spec: &SolveSpec,
     drive: &[adit::implicit::Drive],
+    analysis: &mut adit::implicit::Analysis,
     cost: &mut Option<adit::implicit::Cost>,
 ) -> Result<adit::solve::Solution, Status> {
     if spec.method == adit::scene::SolveMethod::Explicit {
@@ -120,6 +122,7 @@ pub fn drive_sample(
         &solver.params,
         spec,
         drive,
+        analysis,
         &mut Quiet,
     );
     *cost = Some(cost.map_or(c, |a| a.plus(c)));
@@ -193,3 +196,4 @@ pub fn uniform_stress_error(stresses: &[adit::model::Stress], target: [f64; 3], 
         })
         .fold(0.0, f64::max)
 }
+

@@ -149,6 +149,7 @@ pub fn run_by(
         b.model.nodes.fixed[n as usize] |= FIX_Y;
         b.model.nodes.vel[n as usize][1] = if explicit { -rate } else { 0.0 };
     }
+    let mut analysis = adit::implicit::Analysis::default();
     let drive: Vec<Drive> = top
         .iter()
         .map(|&n| (n, [0.0, -rate * chunk as f64]))
@@ -160,16 +161,23 @@ pub fn run_by(
     let mut curve = Vec::new();
     let (mut peak, mut peak_strain) = (0.0f64, 0.0);
     loop {
-        let sol = crate::drive_sample(&mut b.model, &mut solver, &spec, &drive, &mut cost)
-            .map_err(|status| {
-                anyhow::anyhow!(
-                    "softening specimen (zones of {edge} m, {}) did not converge at axial strain \
+        let sol = crate::drive_sample(
+            &mut b.model,
+            &mut solver,
+            &spec,
+            &drive,
+            &mut analysis,
+            &mut cost,
+        )
+        .map_err(|status| {
+            anyhow::anyhow!(
+                "softening specimen (zones of {edge} m, {}) did not converge at axial strain \
                      {:.3e} (peak {:.2} MPa so far): {status:?}",
-                    method.name(),
-                    -b.model.nodes.disp[top[0] as usize][1] / height,
-                    peak / 1e6
-                )
-            })?;
+                method.name(),
+                -b.model.nodes.disp[top[0] as usize][1] / height,
+                peak / 1e6
+            )
+        })?;
         cycles += sol.cycles;
         let m = &b.model;
         // The mean σyy over the specimen is the mean platen stress (∫σ dA = ∮ x ⊗ t ds).
