@@ -308,8 +308,9 @@ pub fn solve_driven(
     let mut steps = LoadSteps::new(spec.load_steps, model, cycle, params);
     steps.apply(model);
     let mut committed = Committed::of(model);
-    // Whether the zone forces are those of the state as it is (`displace` left them).
-    let mut zones_current = !drive.is_empty();
+    // Whether the zone forces are those of the state as it is (`displace` left them). A solve
+    // that cannot start (no factor) leaves the driven nodes where they are.
+    let mut zones_current = !drive.is_empty() && factor.is_ok();
     if zones_current {
         drive::apply(model, cycle, params, &committed, drive, &mut du);
     }
