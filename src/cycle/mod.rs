@@ -237,7 +237,11 @@ impl Cycle {
     /// gives the out-of-balance force of a state before its first cycle.
     pub fn prime(&mut self, model: &mut Model, p: &CycleParams) {
         self.prime_but_zones(model, p);
-        let still = CycleParams { dt: 0.0, ..*p };
+        self.model_zone_forces(model, &CycleParams { dt: 0.0, ..*p });
+    }
+
+    /// The zone stage (`zone_forces`) on `model`'s own zones, nodes and laws.
+    fn model_zone_forces(&mut self, model: &mut Model, p: &CycleParams) {
         let Model {
             nodes,
             zones,
@@ -246,14 +250,7 @@ impl Cycle {
             materials,
             ..
         } = model;
-        self.zone_forces(
-            nodes,
-            zones,
-            &materials.zone,
-            gather,
-            mixed.as_deref(),
-            &still,
-        );
+        self.zone_forces(nodes, zones, &materials.zone, gather, mixed.as_deref(), p);
     }
 
     /// `prime` of the contact and support forces only; the zone forces stay as they are.
@@ -321,12 +318,8 @@ impl Cycle {
         model.nodes.vel.copy_from_slice(du);
         let Model {
             nodes,
-            zones,
-            gather,
             blocks,
             contacts,
-            contact_tolerance,
-            mixed,
             materials,
             ..
         } = model;
@@ -334,14 +327,15 @@ impl Cycle {
         for (((v, u), d), c) in nodes.vel.iter_mut().zip(&nodes.disp).zip(du).zip(committed) {
             *v = [u[0] + d[0] - c[0], u[1] + d[1] - c[1]];
         }
-        self.zone_forces(
+        self.model_zone_forces(model, &unit);
+        let Model {
             nodes,
-            zones,
-            &materials.zone,
-            gather,
-            mixed.as_deref(),
-            &unit,
-        );
+            blocks,
+            contacts,
+            contact_tolerance,
+            materials,
+            ..
+        } = model;
         let mut largest = 0.0f64;
         for (u, d) in nodes.disp.iter_mut().zip(du) {
             u[0] += d[0];

@@ -137,6 +137,60 @@ impl MohrCoulomb {
             None => single,
         }
     }
+
+    /// Elastic trial (plane strain), then the return in principal stresses (with the corner return
+    /// when `corners`); the in-plane principal directions are kept: σ = c' I + (r'/r)(σ − c I) in
+    /// the plane, with c, r the centre and radius of the in-plane Mohr circle before and c', r'
+    /// after.
+    fn advance(
+        &self,
+        s: &mut Stress,
+        state: &mut u8,
+        plastic: &mut f64,
+        de: &StrainIncrement,
+        corners: bool,
+    ) {
+        self.elastic.update(s, state, plastic, de);
+        let (c, d, t) = (0.5 * (s[0] + s[1]), 0.5 * (s[0] - s[1]), s[3]);
+        let r = (d * d + t * t).sqrt();
+        // Principal values with their origin: 0 in-plane minor, 1 in-plane major, 2 out-of-plane.
+        let mut v = [(c - r, 0u8), (c + r, 1), (s[2], 2)];
+        v.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let mut p = [v[0].0, v[1].0, v[2].0];
+        let (c, phi) = if self.softening.is_empty() {
+            (self.cohesion, self.friction)
+        } else {
+            self.strength(*plastic)
+        };
+        let (now, eps) = self.correct(&mut p, c, phi, corners);
+        *plastic += eps;
+        *state = (*state & (SHEAR_PAST | TENSION_PAST))
+            | now
+            | if now & SHEAR_NOW != 0 { SHEAR_PAST } else { 0 }
+            | if now & TENSION_NOW != 0 {
+                TENSION_PAST
+            } else {
+                0
+            };
+        if now == 0 {
+            return;
+        }
+        let mut by_origin = [0.0; 3];
+        for (k, &(_, origin)) in v.iter().enumerate() {
+            by_origin[origin as usize] = p[k];
+        }
+        let (minor, major) = (by_origin[0], by_origin[1]);
+        let c_new = 0.5 * (minor + major);
+        let scale = if r > 0.0 {
+            0.5 * (major - minor) / r
+        } else {
+            0.0
+        };
+        s[0] = c_new + d * scale;
+        s[1] = c_new - d * scale;
+        s[3] = t * scale;
+        s[2] = by_origin[2];
+    }
 }
 
 /// FLAC's single-plane return of the ascending principal stresses `p` (Pa): shear or tension by
@@ -196,62 +250,6 @@ impl ZoneLaw for MohrCoulomb {
 
     fn density(&self) -> f64 {
         self.elastic.density
-    }
-}
-
-impl MohrCoulomb {
-    /// Elastic trial (plane strain), then the return in principal stresses (with the corner return
-    /// when `corners`); the in-plane principal directions are kept: σ = c' I + (r'/r)(σ − c I) in
-    /// the plane, with c, r the centre and radius of the in-plane Mohr circle before and c', r'
-    /// after.
-    fn advance(
-        &self,
-        s: &mut Stress,
-        state: &mut u8,
-        plastic: &mut f64,
-        de: &StrainIncrement,
-        corners: bool,
-    ) {
-        self.elastic.update(s, state, plastic, de);
-        let (c, d, t) = (0.5 * (s[0] + s[1]), 0.5 * (s[0] - s[1]), s[3]);
-        let r = (d * d + t * t).sqrt();
-        // Principal values with their origin: 0 in-plane minor, 1 in-plane major, 2 out-of-plane.
-        let mut v = [(c - r, 0u8), (c + r, 1), (s[2], 2)];
-        v.sort_by(|a, b| a.0.total_cmp(&b.0));
-        let mut p = [v[0].0, v[1].0, v[2].0];
-        let (c, phi) = if self.softening.is_empty() {
-            (self.cohesion, self.friction)
-        } else {
-            self.strength(*plastic)
-        };
-        let (now, eps) = self.correct(&mut p, c, phi, corners);
-        *plastic += eps;
-        *state = (*state & (SHEAR_PAST | TENSION_PAST))
-            | now
-            | if now & SHEAR_NOW != 0 { SHEAR_PAST } else { 0 }
-            | if now & TENSION_NOW != 0 {
-                TENSION_PAST
-            } else {
-                0
-            };
-        if now == 0 {
-            return;
-        }
-        let mut by_origin = [0.0; 3];
-        for (k, &(_, origin)) in v.iter().enumerate() {
-            by_origin[origin as usize] = p[k];
-        }
-        let (minor, major) = (by_origin[0], by_origin[1]);
-        let c_new = 0.5 * (minor + major);
-        let scale = if r > 0.0 {
-            0.5 * (major - minor) / r
-        } else {
-            0.0
-        };
-        s[0] = c_new + d * scale;
-        s[1] = c_new - d * scale;
-        s[3] = t * scale;
-        s[2] = by_origin[2];
     }
 }
 

@@ -196,4 +196,3 @@ pub fn uniform_stress_error(stresses: &[adit::model::Stress], target: [f64; 3], 
         })
         .fold(0.0, f64::max)
 }
-
