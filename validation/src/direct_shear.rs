@@ -8,7 +8,7 @@
 use std::time::Instant;
 
 use adit::Scene;
-use adit::implicit::{Cost, Drive};
+use adit::implicit::Cost;
 use adit::scene::{SolveMethod, SolveSpec};
 use adit::setup::setup;
 use adit::solve::Status;
@@ -89,21 +89,16 @@ fn shear(
         .block_of_node(b.plan.boundary.part_nodes["top"][0]);
     let nodes = b.model.blocks.node_start[top_block] as usize
         ..b.model.blocks.node_start[top_block + 1] as usize;
-    let top: Vec<usize> = nodes.collect();
+    let top: Vec<u32> = nodes.map(|n| n as u32).collect();
     let rate = 2e-8; // m per cycle (Δt = 1 in the mass-scaled static mode)
     let chunk = 500u64;
-    let explicit = method == SolveMethod::Explicit;
-    for &n in &top {
-        b.model.nodes.fixed[n] |= adit::model::FIX_X;
-        b.model.nodes.vel[n][0] = if explicit { rate } else { 0.0 };
-    }
+    let drive = crate::drive_nodes(&mut b.model, &top, 0, rate, chunk, method);
     let mut analysis = adit::implicit::Analysis::default();
-    let drive: Vec<Drive> = top
-        .iter()
-        .map(|&n| (n as u32, [rate * chunk as f64, 0.0]))
-        .collect();
     let mean = |m: &adit::model::Model, d: usize| {
-        top.iter().map(|&n| m.nodes.disp[n][d]).sum::<f64>() / top.len() as f64
+        top.iter()
+            .map(|&n| m.nodes.disp[n as usize][d])
+            .sum::<f64>()
+            / top.len() as f64
     };
     let (x0, y0) = (mean(&b.model, 0), mean(&b.model, 1));
     solver.spec.max_cycles = chunk;

@@ -94,6 +94,29 @@ pub fn solve_by_method(
     (solver, solution, cost)
 }
 
+/// Fix `nodes` along `axis` (0: x, 1: y) and drive them at `velocity` (m a cycle, signed; Δt = 1
+/// in the mass-scaled static mode) in a displacement-controlled test solved by `method`, sampled
+/// every `chunk` cycles: explicitly as their velocity, implicitly as the returned drive of
+/// `velocity` × `chunk` a sample (`drive_sample`).
+pub fn drive_nodes(
+    model: &mut Model,
+    nodes: &[u32],
+    axis: usize,
+    velocity: f64,
+    chunk: u64,
+    method: adit::scene::SolveMethod,
+) -> Vec<adit::implicit::Drive> {
+    let explicit = method == adit::scene::SolveMethod::Explicit;
+    let flag = [adit::model::FIX_X, adit::model::FIX_Y][axis];
+    let mut step = [0.0; 2];
+    step[axis] = velocity * chunk as f64;
+    for &n in nodes {
+        model.nodes.fixed[n as usize] |= flag;
+        model.nodes.vel[n as usize][axis] = if explicit { velocity } else { 0.0 };
+    }
+    nodes.iter().map(|&n| (n, step)).collect()
+}
+
 /// One sample of a displacement-controlled test solved by `spec.method`: explicitly `solver`
 /// cycles on (the driven nodes' velocities move them), implicitly one static solve with the nodes
 /// moved by `drive` (`implicit::solve_driven`, reusing the symbolic analysis in `analysis`), its

@@ -12,8 +12,7 @@
 use std::time::Instant;
 
 use adit::Scene;
-use adit::implicit::{Cost, Drive};
-use adit::model::FIX_Y;
+use adit::implicit::Cost;
 use adit::scene::{SolveMethod, SolveSpec};
 use adit::setup::setup;
 use adit::solve::Status;
@@ -143,17 +142,9 @@ pub fn run_by(
     );
     let mut cycles = settled.cycles;
     let top = b.plan.boundary.part_nodes["top"].clone();
-    let explicit = method == SolveMethod::Explicit;
     let chunk = 200u64;
-    for &n in &top {
-        b.model.nodes.fixed[n as usize] |= FIX_Y;
-        b.model.nodes.vel[n as usize][1] = if explicit { -rate } else { 0.0 };
-    }
+    let drive = crate::drive_nodes(&mut b.model, &top, 1, -rate, chunk, method);
     let mut analysis = adit::implicit::Analysis::default();
-    let drive: Vec<Drive> = top
-        .iter()
-        .map(|&n| (n, [0.0, -rate * chunk as f64]))
-        .collect();
     let height = 2.0;
     solver.spec.max_cycles = chunk;
     solver.spec.ratio = 0.0;
