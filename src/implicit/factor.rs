@@ -5,7 +5,15 @@
 use faer::dyn_stack::{MemBuffer, MemStack};
 use faer::sparse::SparseColMatRef;
 use faer::sparse::linalg::cholesky::{LltRef, SymbolicCholesky, factorize_symbolic_cholesky};
-use faer::{Conj, Side};
+use faer::{Conj, Par, Side};
+
+/// The factorizations and solves run on the calling thread. Measured on this project's 2-core
+/// machines, faer's supernodal factorization on the two rayon threads took twice as long as on
+/// one (Kirsch's hole: 8 676 unknowns 13.7–16.6 ms against 5.0–6.1 ms a numeric factorization;
+/// 23 374 unknowns 30–57 against 17–19 ms; 51 716 unknowns 109–137 against 60–61 ms; the
+/// solves alike or a little faster), and on one thread its rounding cannot depend on the number
+/// of threads.
+const PAR: Par = Par::Seq;
 
 /// Why a factorization failed: not enough memory for it (the message says how much), or the
 /// numeric factorization broke down (a zero or negative pivot).
@@ -36,7 +44,7 @@ impl Factor {
         k: SparseColMatRef<'_, usize, f64>,
         last: Option<Factor>,
     ) -> Result<(Factor, bool), FactorError> {
-        let par = faer::get_global_parallelism();
+        let par = PAR;
         let pattern = k.symbolic();
         let kept = last.filter(|f| {
             f.col_ptr == pattern.col_ptr()
@@ -71,7 +79,7 @@ impl Factor {
                 Default::default(),
             )
             .map_err(|e| FactorError::Numeric(format!("{e:?}")));
-        clear_upper_vector_state(Threads::All);
+        clear_upper_vector_state();
         factorized?;
         let scratch = MemBuffer::try_new(symbolic.solve_in_place_scratch::<f64>(1, par))
             .map_err(|e| FactorError::Memory(format!("implicit: solve scratch: {e:?}")))?;
@@ -94,51 +102,34 @@ impl Factor {
 
     /// Solve K x = b in place (`rhs`: b in, x out).
     pub fn solve_in_place(&mut self, rhs: &mut [f64]) {
-        let par = faer::get_global_parallelism();
+        let par = PAR;
         LltRef::new(&self.symbolic, &self.values).solve_in_place_with_conj(
             Conj::No,
             faer::ColMut::from_slice_mut(rhs).as_mat_mut(),
             par,
             MemStack::new(&mut self.scratch),
         );
-        clear_upper_vector_state(Threads::This);
+        clear_upper_vector_state();
     }
 }
 
-/// The threads whose vector state to clear.
-#[derive(Clone, Copy)]
-enum Threads {
-    /// This thread: where a solve with one right-hand side runs (the test below finds a solve
-    /// leaving them clean; cleared all the same, at one instruction a solve).
-    This,
-    /// Every rayon worker and this thread: where the numeric factorization runs in parallel.
-    All,
-}
-
-/// Clear the upper halves of the vector registers on `threads`. faer's kernels (chosen at run
-/// time, AVX-512 on this project's machines) leave those halves in use on the rayon workers
-/// after a numeric factorization with dense supernodes (the test below); the SSE code
-/// compiled for the baseline x86-64 (the zone and joint laws, libm's `sin` and `tan`) then pays
-/// the AVX–SSE transition on every instruction: measured, explicit cycling of
-/// `models/tunnel.json` after an implicit Mohr–Coulomb solve in the same process took 6.5 s
-/// instead of 1.35 s, and the implicit iterations' own force stages paid it too (the weak rock's
-/// Salençon hole: 0.61 s, 0.21 s cleared). `vzeroupper` is the remedy of Intel's optimization
-/// manual ("Mixing AVX code with SSE code").
-fn clear_upper_vector_state(threads: Threads) {
+/// Clear the upper halves of this thread's vector registers. faer's kernels (chosen at run
+/// time, AVX-512 on this project's machines) leave those halves in use after a numeric
+/// factorization with dense supernodes (the test below); the SSE code compiled for the baseline
+/// x86-64 (the zone and joint laws, libm's `sin` and `tan`) then pays the AVX–SSE transition on
+/// every instruction: measured, explicit cycling of `models/tunnel.json` after an implicit
+/// Mohr–Coulomb solve in the same process took 6.5 s instead of 1.35 s, and the implicit
+/// iterations' own force stages paid it too (the weak rock's Salençon hole: 0.61 s, 0.21 s
+/// cleared). `vzeroupper` is the remedy of Intel's optimization manual ("Mixing AVX code with
+/// SSE code"). faer runs on this thread only (`PAR`); a solve leaves it clean in the test below,
+/// and is cleared all the same, at one instruction a solve.
+fn clear_upper_vector_state() {
     #[cfg(target_arch = "x86_64")]
     if std::arch::is_x86_feature_detected!("avx") {
-        fn clear() {
-            // SAFETY: `vzeroupper` only zeroes the upper halves of the vector registers, which
-            // no live value on this thread holds across this call; the CPU has AVX (checked).
-            unsafe { std::arch::x86_64::_mm256_zeroupper() }
-        }
-        if let Threads::All = threads {
-            rayon::broadcast(|_| clear());
-        }
-        clear();
+        // SAFETY: `vzeroupper` only zeroes the upper halves of the vector registers, which no
+        // live value on this thread holds across this call; the CPU has AVX (checked).
+        unsafe { std::arch::x86_64::_mm256_zeroupper() }
     }
-    #[cfg(not(target_arch = "x86_64"))]
-    let _ = threads;
 }
 
 /// An error naming both sizes when a factorization needing `bytes` would not fit in the `free`
@@ -203,8 +194,8 @@ mod tests {
         faer::sparse::SparseColMat::try_new_from_triplets(n * n, n * n, &t).unwrap()
     }
 
-    /// After a factorization (on every rayon worker) and a solve (on this thread), no upper half
-    /// of a vector register is left in use (XGETBV with ECX = 1, XINUSE: bit 2 the upper halves
+    /// After a factorization and after a solve, no upper half of a vector register is left in
+    /// use on this thread nor on a rayon worker (XGETBV with ECX = 1, XINUSE: bit 2 the upper halves
     /// of YMM0–15, bit 6 of ZMM0–15), so the SSE code that follows pays no AVX–SSE transition.
     /// Skipped where the CPU cannot report it.
     #[cfg(target_arch = "x86_64")]
@@ -231,6 +222,7 @@ mod tests {
         pool.install(|| {
             let k = grid(150);
             let (mut f, _) = Factor::new(k.as_ref(), None).unwrap();
+            assert_eq!(in_use() & UPPER, 0);
             let workers: Vec<u64> = rayon::broadcast(|_| in_use() & UPPER);
             assert!(workers.iter().all(|&u| u == 0), "{workers:?}");
             let mut x = vec![1.0; 150 * 150];
