@@ -36,6 +36,11 @@ impl Cycle {
     /// F = −L(σn n + τ t) acts on the node while −(1 − ξ)F and −ξF act on the edge's nodes, so
     /// momentum is conserved exactly. With stiffness-proportional Rayleigh damping σn and τ take
     /// β_R times their rate over the step on top (`CycleParams::viscous_ratio`).
+    ///
+    /// With a `commit` (the implicit path's trial) each contact starts from its committed state
+    /// and its increments add the relative displacement since that commit, u − u_c, to the
+    /// step's: the joint law takes the whole increment from the commit, so the state does not
+    /// depend on the iterations that reached it.
     pub fn contact_forces(
         &mut self,
         nodes: &Nodes,
@@ -43,7 +48,15 @@ impl Cycle {
         contacts: &mut Contacts,
         joint_laws: &[Box<dyn JointLaw>],
         p: &CycleParams,
+        commit: Option<JointCommit<'_>>,
     ) {
+        if let Some(c) = &commit {
+            assert_eq!(
+                c.state.len(),
+                contacts.len(),
+                "a joint commit of other contacts than the model's (not renewed at a detection)"
+            );
+        }
         // The contacts may have been put back to a commit's (`implicit::commit`) since the last
         // detection.
         self.contact_force.resize(3 * contacts.len(), [0.0; 2]);
@@ -63,36 +76,64 @@ impl Cycle {
             .zip(contacts.length.par_iter())
             .zip(contacts.material.par_iter())
             .zip(contacts.corner.par_iter())
+            .enumerate()
             .with_min_len(256)
-            .for_each(|(((((((state, f), &i), &e), &xi), &len), &mat), &corner)| {
-                let [j, k] = blocks.edges[e as usize];
-                let n = contact_normal(blocks, &x, i, e, corner);
-                let t = [-n[1], n[0]];
-                let (vi, vj, vk) = (vel[i as usize], vel[j as usize], vel[k as usize]);
-                let vr = [
-                    vi[0] - (1.0 - xi) * vj[0] - xi * vk[0],
-                    vi[1] - (1.0 - xi) * vj[1] - xi * vk[1],
-                ];
-                let dn = (vr[0] * n[0] + vr[1] * n[1]) * dt;
-                let ds = (vr[0] * t[0] + vr[1] * t[1]) * dt;
-                let old = (state.normal, state.shear);
-                joint_laws[mat as usize].update(state, dn, ds);
-                let (mut sn, mut ss) = (state.normal, state.shear);
-                // Stiffness-proportional damping: β_R times the rate of the law's stresses, on a
-                // contact that carries load after the step (an opened one pulls nothing back).
-                if viscous > 0.0 && (sn != 0.0 || ss != 0.0) {
-                    sn += viscous * (sn - old.0);
-                    ss += viscous * (ss - old.1);
-                }
-                let force = [
-                    -len * (sn * n[0] + ss * t[0]),
-                    -len * (sn * n[1] + ss * t[1]),
-                ];
-                f[0] = force;
-                f[1] = [-(1.0 - xi) * force[0], -(1.0 - xi) * force[1]];
-                f[2] = [-xi * force[0], -xi * force[1]];
-            });
+            .for_each(
+                |(c, (((((((state, f), &i), &e), &xi), &len), &mat), &corner))| {
+                    let [j, k] = blocks.edges[e as usize];
+                    let n = contact_normal(blocks, &x, i, e, corner);
+                    let t = [-n[1], n[0]];
+                    let relative = |v: &dyn Fn(u32) -> [f64; 2]| {
+                        let (vi, vj, vk) = (v(i), v(j), v(k));
+                        [
+                            vi[0] - (1.0 - xi) * vj[0] - xi * vk[0],
+                            vi[1] - (1.0 - xi) * vj[1] - xi * vk[1],
+                        ]
+                    };
+                    let vr = relative(&|n| vel[n as usize]);
+                    let mut dn = (vr[0] * n[0] + vr[1] * n[1]) * dt;
+                    let mut ds = (vr[0] * t[0] + vr[1] * t[1]) * dt;
+                    if let Some(from) = &commit {
+                        *state = from.state[c];
+                        let since = relative(&|n| {
+                            let (u, u0) = (disp[n as usize], from.disp[n as usize]);
+                            [u[0] - u0[0], u[1] - u0[1]]
+                        });
+                        dn += since[0] * n[0] + since[1] * n[1];
+                        ds += since[0] * t[0] + since[1] * t[1];
+                    }
+                    let old = (state.normal, state.shear);
+                    let law = &joint_laws[mat as usize];
+                    if commit.is_some() {
+                        law.trial(state, dn, ds);
+                    } else {
+                        law.update(state, dn, ds);
+                    }
+                    let (mut sn, mut ss) = (state.normal, state.shear);
+                    // Stiffness-proportional damping: β_R times the rate of the law's stresses, on a
+                    // contact that carries load after the step (an opened one pulls nothing back).
+                    if viscous > 0.0 && (sn != 0.0 || ss != 0.0) {
+                        sn += viscous * (sn - old.0);
+                        ss += viscous * (ss - old.1);
+                    }
+                    let force = [
+                        -len * (sn * n[0] + ss * t[0]),
+                        -len * (sn * n[1] + ss * t[1]),
+                    ];
+                    f[0] = force;
+                    f[1] = [-(1.0 - xi) * force[0], -(1.0 - xi) * force[1]];
+                    f[2] = [-xi * force[0], -xi * force[1]];
+                },
+            );
     }
+}
+
+/// What the contacts' joint laws take their trial from (the implicit path, `contact_forces`):
+/// each contact's state at the commit and the node displacements then, m.
+#[derive(Debug, Clone, Copy)]
+pub struct JointCommit<'a> {
+    pub state: &'a [JointState],
+    pub disp: &'a [[f64; 2]],
 }
 
 /// The unit normal of contact (node `i`, edge `e`) at positions `x`: the edge's outward normal

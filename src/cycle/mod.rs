@@ -4,6 +4,7 @@
 
 mod bodies;
 mod contacts;
+pub use contacts::JointCommit;
 pub(crate) use contacts::contact_normal;
 mod large_strain;
 mod mixed;
@@ -40,6 +41,15 @@ pub struct CycleParams {
     /// Whether the zones take their law's `trial` (the implicit path: the state is the last
     /// commit's and the increment the whole one since) instead of `update`.
     pub(crate) trial: bool,
+}
+
+/// What the implicit path's trial starts from (`implicit::commit`, `Cycle::displace`): the
+/// node displacements at the zones' commit (m; the zones hold their committed state), and the
+/// joints' commit.
+#[derive(Debug, Clone, Copy)]
+pub struct Trial<'a> {
+    pub disp: &'a [[f64; 2]],
+    pub joints: JointCommit<'a>,
 }
 
 /// How the zone stage turns node velocities into stress and corner forces: one of three, fixed
@@ -214,7 +224,7 @@ impl Cycle {
         let t0 = Instant::now();
         self.detect_when_moved(nodes, blocks, contacts, materials, *contact_tolerance);
         let t1 = Instant::now();
-        self.contact_forces(nodes, blocks, contacts, joint_laws, p);
+        self.contact_forces(nodes, blocks, contacts, joint_laws, p, None);
         let t2 = Instant::now();
         self.zone_forces(nodes, zones, laws, gather, mixed.as_deref(), p);
         let t3 = Instant::now();
@@ -236,7 +246,7 @@ impl Cycle {
     /// force stages with a zero step (zero strain and displacement increments), so `node_force`
     /// gives the out-of-balance force of a state before its first cycle.
     pub fn prime(&mut self, model: &mut Model, p: &CycleParams) {
-        self.prime_but_zones(model, p);
+        self.prime_but_zones(model, p, None);
         self.model_zone_forces(model, &CycleParams { dt: 0.0, ..*p });
     }
 
@@ -253,8 +263,9 @@ impl Cycle {
         self.zone_forces(nodes, zones, &materials.zone, gather, mixed.as_deref(), p);
     }
 
-    /// `prime` of the contact and support forces only; the zone forces stay as they are.
-    fn prime_but_zones(&mut self, model: &mut Model, p: &CycleParams) {
+    /// `prime` of the contact and support forces only; the zone forces stay as they are. The
+    /// joints take their trial from `joints` where given (`contact_forces`).
+    fn prime_but_zones(&mut self, model: &mut Model, p: &CycleParams, joints: Option<JointCommit>) {
         let still = CycleParams { dt: 0.0, ..*p };
         let Model {
             nodes,
@@ -264,20 +275,25 @@ impl Cycle {
             materials,
             ..
         } = model;
-        self.contact_forces(nodes, blocks, contacts, &materials.joint, &still);
+        self.contact_forces(nodes, blocks, contacts, &materials.joint, &still, joints);
         self.structural_forces(supports, &nodes.disp, &still);
     }
 
     /// The out-of-balance force of the state as it is, N/m, into `nodes.force` (zero in a fixed
     /// component, as the motion stage leaves it): the force stages with a zero step (`prime`),
     /// gathered per node; the zone stage skipped when `zones_current` (the zone forces are those
-    /// of the state as it is: `displace` left them). The implicit path's residual, measured as the
-    /// explicit path measures it.
-    pub fn balance(&mut self, model: &mut Model, p: &CycleParams, zones_current: bool) {
-        if zones_current {
-            self.prime_but_zones(model, p);
-        } else {
-            self.prime(model, p);
+    /// of the state as it is: `displace` left them); the joints' trial from `joints` where given.
+    /// The implicit path's residual, measured as the explicit path measures it.
+    pub fn balance(
+        &mut self,
+        model: &mut Model,
+        p: &CycleParams,
+        zones_current: bool,
+        joints: Option<JointCommit>,
+    ) {
+        self.prime_but_zones(model, p, joints);
+        if !zones_current {
+            self.model_zone_forces(model, &CycleParams { dt: 0.0, ..*p });
         }
         for n in 0..model.nodes.len() {
             let mut f = self.node_force(model, n);
@@ -295,19 +311,13 @@ impl Cycle {
         }
     }
 
-    /// Move the nodes by `du` (m) in one step of the contact and zone stages: each contact's
-    /// joint law takes the relative displacement and each zone's law takes its strain from the
-    /// displacement since the commit `committed` (m, per node; the zones hold the committed state,
-    /// `implicit::commit`), sym(∇(u + du − u_c)), through `trial`; then `du` is added to the
-    /// displacements, and contacts are detected again once any node may have moved half the
-    /// contact tolerance. No damping acts. The implicit path's update.
-    pub fn displace(
-        &mut self,
-        model: &mut Model,
-        du: &[[f64; 2]],
-        committed: &[[f64; 2]],
-        p: &CycleParams,
-    ) {
+    /// Move the nodes by `du` (m) in one step of the contact and zone stages, both from the
+    /// commit `from` (`implicit::commit`): each contact's joint law takes the relative
+    /// displacement since its commit, and each zone's law its strain since the zones' commit
+    /// (the zones hold the committed state), sym(∇(u + du − u_c)), through `trial`; then `du` is
+    /// added to the displacements, and contacts are detected again once any node may have moved
+    /// half the contact tolerance. No damping acts. The implicit path's update.
+    pub fn displace(&mut self, model: &mut Model, du: &[[f64; 2]], from: Trial, p: &CycleParams) {
         let unit = CycleParams {
             dt: 1.0,
             mass_damping: 0.0,
@@ -323,8 +333,15 @@ impl Cycle {
             materials,
             ..
         } = model;
-        self.contact_forces(nodes, blocks, contacts, &materials.joint, &unit);
-        for (((v, u), d), c) in nodes.vel.iter_mut().zip(&nodes.disp).zip(du).zip(committed) {
+        self.contact_forces(
+            nodes,
+            blocks,
+            contacts,
+            &materials.joint,
+            &unit,
+            Some(from.joints),
+        );
+        for (((v, u), d), c) in nodes.vel.iter_mut().zip(&nodes.disp).zip(du).zip(from.disp) {
             *v = [u[0] + d[0] - c[0], u[1] + d[1] - c[1]];
         }
         self.model_zone_forces(model, &unit);

@@ -6,9 +6,10 @@
 //! x_{k+1} = G(x_k) − ΔG γ with γ = argmin ‖f_k − ΔF γ‖₂ (normal equations, m ≤ `DEPTH`).
 //! Where zones yield or joints slip, the initial stiffness K₀ is too stiff and plain iterations
 //! shrink the error by a constant factor each; the history supplies the missing softness (a
-//! multisecant update of K₀⁻¹). The laws integrate along the iterations' path, so R depends on
-//! the path as well as on x: the solve restarts the history whenever the out-of-balance force
-//! grows, and at each new factorization.
+//! multisecant update of K₀⁻¹). A simple block's law integrates along the iterations' path and
+//! contacts detected anew commit their joints where they are, so R can depend on the path as
+//! well as on x: the solve restarts the history when the out-of-balance force grows past
+//! `RESTART_RISE` times the least since the last restart, and at each new factorization.
 
 use nalgebra::{DMatrix, DVector};
 

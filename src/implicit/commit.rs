@@ -14,10 +14,13 @@
 //!   Without it an accelerated iteration that overshoots leaves slip behind (the pull-out at 60 %
 //!   of its capacity ended 1.3 % off the shear-lag solution instead of 0.006 %).
 //!
-//! The joints still integrate along the iterations' path: stepped from a fixed commit they flip
-//! between stick and slip from one iteration to the next where the jointed tunnel's wedges are
-//! about to move (its ratio then alternated between 2.5e-5 and 2.9e-5 for 200 iterations).
+//! - **Joints.** Each contact's joint law takes its trial from its committed state and the
+//!   whole relative displacement since (`Cycle::contact_forces`). Contacts detected anew within
+//!   a step are another list: the joints then commit where they are (`follow_detection`), so
+//!   their answer depends on the iterations only through where detection happened.
 
+use crate::cycle::{JointCommit, Trial};
+use crate::joint::JointState;
 use crate::law::Stress;
 use crate::model::bodies::Bodies;
 use crate::model::{Contacts, Model, Zones};
@@ -39,12 +42,21 @@ pub struct Committed {
     supports: Supports,
     contacts: Contacts,
     bodies: Bodies,
+    /// The joints' commit: each contact's state and the node displacements (m) then; the
+    /// commit's own until contacts are detected anew within the step.
+    joint_state: Vec<JointState>,
+    joint_disp: Vec<[f64; 2]>,
+    /// The detections counted (`Cycle::detections`) when the joints last committed.
+    detections: u64,
 }
 
 impl Committed {
-    /// Commit the model's present state.
-    pub fn of(model: &Model) -> Committed {
+    /// Commit the model's present state, after `detections` detections.
+    pub fn of(model: &Model, detections: u64) -> Committed {
         Committed {
+            joint_state: model.contacts.state.clone(),
+            joint_disp: model.nodes.disp.clone(),
+            detections,
             disp: model.nodes.disp.clone(),
             stress: model.zones.stress.clone(),
             state: model.zones.state.clone(),
@@ -55,18 +67,44 @@ impl Committed {
         }
     }
 
-    /// Put the whole model back to the commit (a step that failed, before it is cut).
-    pub fn restore(&self, model: &mut Model) {
+    /// Put the whole model back to the commit (a step that failed, before it is cut), the
+    /// joints' commit with it.
+    pub fn restore(&mut self, model: &mut Model) {
         model.nodes.disp.copy_from_slice(&self.disp);
         self.trial_zones(&mut model.zones);
         model.supports.clone_from(&self.supports);
         model.contacts.clone_from(&self.contacts);
         model.bodies.clone_from(&self.bodies);
+        self.joint_state.clone_from(&self.contacts.state);
+        self.joint_disp.copy_from_slice(&self.disp);
     }
 
-    /// Node displacements at the commit, m.
-    pub fn displacements(&self) -> &[[f64; 2]] {
-        &self.disp
+    /// After contacts were detected anew (`detections` counted, more than at the joints'
+    /// commit), the joints commit where they are: their states, which the detection carried
+    /// over to the contacts that persist (new ones start as `Cycle::detect` makes them), and
+    /// the displacements now.
+    pub fn follow_detection(&mut self, model: &Model, detections: u64) {
+        if detections != self.detections {
+            self.joint_state.clone_from(&model.contacts.state);
+            self.joint_disp.copy_from_slice(&model.nodes.disp);
+            self.detections = detections;
+        }
+    }
+
+    /// What the joints take their trial from.
+    pub fn joints(&self) -> JointCommit<'_> {
+        JointCommit {
+            state: &self.joint_state,
+            disp: &self.joint_disp,
+        }
+    }
+
+    /// What the zones' and the joints' trials start from (`Cycle::displace`).
+    pub fn trial(&self) -> Trial<'_> {
+        Trial {
+            disp: &self.disp,
+            joints: self.joints(),
+        }
     }
 
     /// Put the zones' stresses, yield flags and plastic strains back to the commit, from which

@@ -54,5 +54,5 @@ pub fn apply(
         du[n as usize] = d;
     }
     committed.trial_zones(&mut model.zones);
-    cycle.displace(model, du, committed.displacements(), params);
+    cycle.displace(model, du, committed.trial(), params);
 }

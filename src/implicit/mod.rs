@@ -11,12 +11,13 @@
 //! joint: in the matrix it neither slips nor opens, while the residual carries the joint law's own
 //! forces), and the matrix is factorized again when contacts are detected anew. Slip alone
 //! converges linearly and slowly (`models/jointed_tunnel.json`: ratio 2.2e-3 after 200 plain
-//! iterations; 191 iterations to 1e-5 accelerated); the tangent of slipping and open contacts
+//! iterations; 118 iterations to 1e-5 accelerated, the joints' trial from the commit); the tangent of slipping and open contacts
 //! diverged there (a wedge left without stiffness runs off).
 //!
 //! Bolts and liners bring their own unknowns and their elastic stiffness (`structural`). The
-//! zones' laws (through `ZoneLaw::trial`) and the bolts' grout slip and yield are evaluated from
-//! the state of the last commit and the whole displacement since (`commit`). The
+//! zones' and the joints' laws (through `ZoneLaw::trial` and `JointLaw::trial`) and the bolts'
+//! grout slip and yield are evaluated from the state of the last commit and the whole
+//! displacement since (`commit`). The
 //! stage's out-of-balance force is released in `solve.load_steps` steps, a step that does not
 //! converge halved from the last commit (`steps`).
 //! Mixed zones (`zoning.mixed`) keep the plain triangles' matrix, too stiff volumetrically near
@@ -307,7 +308,7 @@ pub fn solve_driven(
     let mut least_ratio = f64::INFINITY;
     let mut steps = LoadSteps::new(spec.load_steps, model, cycle, params);
     steps.apply(model);
-    let mut committed = Committed::of(model);
+    let mut committed = Committed::of(model, cycle.detections());
     // Whether the zone forces are those of the state as it is (`displace` left them). A solve
     // that cannot start (no factor) leaves the driven nodes where they are.
     let mut zones_current = !drive.is_empty() && factor.is_ok();
@@ -320,7 +321,8 @@ pub fn solve_driven(
             Err(reason) => break Status::Failed(reason.clone()),
         };
         committed.trial_supports(&mut model.supports);
-        cycle.balance(model, params, zones_current);
+        committed.follow_detection(model, cycle.detections());
+        cycle.balance(model, params, zones_current, Some(committed.joints()));
         let m = match cycle.monitor(model) {
             Ok(m) => m,
             Err(reason) => {
@@ -342,7 +344,7 @@ pub fn solve_driven(
             }
             steps.advance();
             steps.apply(model);
-            committed = Committed::of(model);
+            committed = Committed::of(model, cycle.detections());
             (in_step, least_ratio, movement) = (0, f64::INFINITY, Movement::new(model));
             anderson.reset();
             continue;
@@ -406,7 +408,7 @@ pub fn solve_driven(
             cycle.body_displace(nodes, bodies, &materials.zone, &dq, &mut du);
         }
         committed.trial_zones(&mut model.zones);
-        cycle.displace(model, &du, committed.displacements(), params);
+        cycle.displace(model, &du, committed.trial(), params);
         zones_current = true;
         dofs.supports.displace(&mut model.supports, &rhs);
         iteration += 1;

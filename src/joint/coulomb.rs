@@ -36,6 +36,31 @@ impl JointLaw for CoulombSlip {
     /// fails (σn = τ = 0); shear: if |τ| > c − σn tan φ (σn ≤ 0), τ returns to the limit with its sign,
     /// the joint slips and fails, and dilation grows by |Δus| tan ψ. Failed joints have c = T = 0.
     fn update(&self, s: &mut JointState, dn: f64, ds: f64) {
+        self.advance(s, dn, ds, Dilation::WholeIncrement);
+    }
+
+    /// `update`, but the dilation grows by the plastic slip alone, (|τ_trial| − limit)/ks: from
+    /// the commit, the whole increment of a step that begins to slip is partly elastic, and
+    /// counting it all (as `update` does, exact in the limit of small increments) lifted the
+    /// direct shear box further the longer the step.
+    fn trial(&self, s: &mut JointState, dn: f64, ds: f64) {
+        self.advance(s, dn, ds, Dilation::PlasticSlip);
+    }
+
+    fn stiffness(&self) -> (f64, f64) {
+        (self.normal_stiffness, self.shear_stiffness)
+    }
+}
+
+/// What slip the dilation grows by.
+#[derive(Clone, Copy, PartialEq)]
+enum Dilation {
+    WholeIncrement,
+    PlasticSlip,
+}
+
+impl CoulombSlip {
+    fn advance(&self, s: &mut JointState, dn: f64, ds: f64, dilation: Dilation) {
         let failed = s.flags & FAILED != 0;
         let (c, t) = if failed {
             (0.0, 0.0)
@@ -57,18 +82,18 @@ impl JointLaw for CoulombSlip {
         s.shear += self.shear_stiffness * ds;
         let limit = c - s.normal * self.tan_friction;
         if s.shear.abs() > limit {
+            let slip = match dilation {
+                Dilation::WholeIncrement => ds.abs(),
+                Dilation::PlasticSlip => (s.shear.abs() - limit) / self.shear_stiffness,
+            };
             s.shear = limit * s.shear.signum();
             s.flags |= SLIPPING | FAILED;
             if self.tan_dilation != 0.0 {
-                s.dilation += ds.abs() * self.tan_dilation;
+                s.dilation += slip * self.tan_dilation;
                 s.normal =
                     s.initial_normal + self.normal_stiffness * (s.normal_displacement - s.dilation);
             }
         }
-    }
-
-    fn stiffness(&self) -> (f64, f64) {
-        (self.normal_stiffness, self.shear_stiffness)
     }
 }
 

@@ -42,6 +42,13 @@ pub struct JointState {
 pub trait JointLaw: Send + Sync + CopyJointLaw {
     /// Advance `state` by the increments of opening `dn` (m, positive opening) and shear `ds` (m).
     fn update(&self, state: &mut JointState, dn: f64, ds: f64);
+    /// The implicit path's update: `state` is the contact's last committed state and `dn`, `ds`
+    /// (m) the whole relative displacement since (issue 17: "laws evaluate a trial stress or
+    /// force from their last committed state and a total increment"), however large. The
+    /// default is `update`, exact for a law whose return does not depend on the increment's size.
+    fn trial(&self, state: &mut JointState, dn: f64, ds: f64) {
+        self.update(state, dn, ds)
+    }
     /// Normal and shear stiffness (Pa/m), for the time step.
     fn stiffness(&self) -> (f64, f64);
     /// Why the implicit path cannot integrate this law, or `None` (the default). The implicit

@@ -240,11 +240,14 @@ mod tests {
         // On this coarse mesh the block rises about 5 % less than tan ψ per unit slip: the end
         // contacts, which lose and gain partners, dilate less. The report's finer mesh is within 2 %.
         assert!(r.errors["dilation_rate"] < 0.08, "{r:?}");
-        // Under displacement control, each sample a static solve: the same curve (measured: each
-        // error within 1e-4 of the explicit one's).
+        // Under displacement control, each sample a static solve: the same curve, each error
+        // within 0.5 percentage points of the explicit one's or below it (issue 17's bar). The
+        // joints' trial from each sample's commit takes the slip at its end (measured: peak
+        // 0.52 % against 1.34 %, residual 0.009 % against 0.38 %, dilation rate 0.014 % against
+        // 0.010 %, stiffness alike).
         let i = run_by(0.125, SolveMethod::Implicit).unwrap();
         for (e, ve) in &r.errors {
-            assert!((i.errors[e] - ve).abs() < 0.005, "{e}: {i:?} {r:?}");
+            assert!(i.errors[e] < ve + 0.005, "{e}: {i:?} {r:?}");
         }
     }
 

@@ -50,7 +50,7 @@ pub fn solve(kirsch: &Scene, factor: f64, dir: &Path) -> anyhow::Result<PeerResu
     load_outer_exactly(&mut built, |x, y| exact.stress(x, y));
     let model = &mut built.model;
     let mut solver = Solver::new(model, &s.solve, 0);
-    solver.cycle.balance(model, &solver.params, false);
+    solver.cycle.balance(model, &solver.params, false, None);
     let a = exact.radius;
     let z = &model.zones;
     let measured: Vec<usize> = (0..z.len())
