@@ -9,6 +9,7 @@
 pub mod contact;
 pub mod cycle;
 mod damping;
+pub mod far_field;
 pub mod implicit;
 pub mod interrupt;
 pub mod joint;

@@ -123,7 +123,7 @@ impl Factor {
 /// cleared). `vzeroupper` is the remedy of Intel's optimization manual ("Mixing AVX code with
 /// SSE code"). faer runs on this thread only (`PAR`); a solve leaves it clean in the test below,
 /// and is cleared all the same, at one instruction a solve.
-fn clear_upper_vector_state() {
+pub(crate) fn clear_upper_vector_state() {
     #[cfg(target_arch = "x86_64")]
     if std::arch::is_x86_feature_detected!("avx") {
         // SAFETY: `vzeroupper` only zeroes the upper halves of the vector registers, which no

@@ -1,0 +1,203 @@
+//! An elastic far field by boundary elements (issue 18; the seed book's chapter 7 and Lorig &
+//! Brady's HYDEBE, 1984): the infinite plane-strain medium outside a closed polygon (the
+//! interface, whose inside is the near field of zones and blocks) condensed into a stiffness on
+//! the polygon's nodes.
+//!
+//! Direct boundary element method (Brebbia & Dominguez 1992, ch. 5) with Kelvin's fundamental
+//! solution (`kelvin`) on straight discontinuous linear elements, one per polygon edge
+//! (`elements`): at each collocation point ξ,
+//! c_ij u_j(ξ) + ∫_Γ T_ij u_j dΓ = ∫_Γ U_ij t_j dΓ, over the interface alone, the displacement and
+//! the traction vanishing at infinity (the far field carries no net force). Collocated at every
+//! element's two points, H u_c = G t_c, so the tractions the far field's surface carries are
+//! t_c = G⁻¹ H u_c (faer's dense LU). The polygon's nodes move the collocation points linearly
+//! (u_c = Q u, exact for the near field's straight edges), and the tractions, linear along each
+//! element, load the nodes through the edges' linear shape functions (f = P t_c, ∫ N_a φ_k ds).
+//! So K = P G⁻¹ H Q (N/m per m of node displacement): the far field pushes node a by −(K u)_a,
+//! u the displacements of the interface's nodes since the far field was attached.
+//!
+//! K is not symmetric (collocation); its symmetric part is what the implicit path can factorize.
+
+mod elements;
+mod kelvin;
+
+use faer::Mat;
+use faer::linalg::solvers::Solve;
+
+use elements::{COLLOCATION, Element};
+pub use kelvin::Medium;
+
+/// The far field condensed on the interface's nodes: K, row-major 2n × 2n over the components
+/// (x, y) of the n nodes in the polygon's order (N/m per m).
+#[derive(Debug, Clone)]
+pub struct InterfaceStiffness {
+    pub nodes: usize,
+    pub k: Vec<f64>,
+}
+
+impl InterfaceStiffness {
+    /// K's entry for component `d` of node `a` against component `e` of node `b`.
+    pub fn at(&self, a: usize, d: usize, b: usize, e: usize) -> f64 {
+        self.k[(2 * a + d) * 2 * self.nodes + 2 * b + e]
+    }
+
+    /// The force (N/m) the far field exerts on each node for the displacements `u` (m): −K u.
+    pub fn forces(&self, u: &[[f64; 2]], out: &mut [[f64; 2]]) {
+        let n2 = 2 * self.nodes;
+        for (r, f) in out.iter_mut().enumerate() {
+            for (d, fd) in f.iter_mut().enumerate() {
+                let row = &self.k[(2 * r + d) * n2..(2 * r + d + 1) * n2];
+                *fd = -(row.iter().zip(u.iter().flatten()))
+                    .map(|(k, v)| k * v)
+                    .sum::<f64>();
+            }
+        }
+    }
+}
+
+/// The far field's stiffness on the closed polygon `points` (m; either orientation, the far
+/// field outside) for the elastic `medium`; an error naming the reason for a polygon that has
+/// fewer than 3 points, a zero-length edge or no area, or for constants out of range.
+pub fn interface_stiffness(
+    points: &[[f64; 2]],
+    medium: Medium,
+) -> Result<InterfaceStiffness, String> {
+    check(points, &medium)?;
+    let n = points.len();
+    let area2: f64 = (0..n)
+        .map(|i| {
+            let (p, q) = (points[i], points[(i + 1) % n]);
+            p[0] * q[1] - q[0] * p[1]
+        })
+        .sum();
+    // The far field's outward normal points into the polygon: left of a counter-clockwise edge.
+    let side = area2.signum();
+    let elements: Vec<Element> = (0..n)
+        .map(|e| {
+            let (a, b) = (points[e], points[(e + 1) % n]);
+            let len = (b[0] - a[0]).hypot(b[1] - a[1]);
+            let t = [(b[0] - a[0]) / len, (b[1] - a[1]) / len];
+            Element {
+                a,
+                b,
+                n: [-side * t[1], side * t[0]],
+            }
+        })
+        .collect();
+    // Unknowns: component i of collocation point (element e, point k) at 2 (2e + k) + i.
+    let size = 4 * n;
+    let (mut h, mut g) = (Mat::<f64>::zeros(size, size), Mat::<f64>::zeros(size, size));
+    for (e, el) in elements.iter().enumerate() {
+        for (c, &eta) in COLLOCATION.iter().enumerate() {
+            let xi = el.at(eta);
+            let row = 2 * (2 * e + c);
+            for (f, other) in elements.iter().enumerate() {
+                let (hi, gi) = if f == e {
+                    other.own(&medium, c)
+                } else {
+                    other.regular(&medium, xi)
+                };
+                for k in 0..2 {
+                    let col = 2 * (2 * f + k);
+                    for i in 0..2 {
+                        for j in 0..2 {
+                            h[(row + i, col + j)] += hi[k][i][j];
+                            g[(row + i, col + j)] += gi[k][i][j];
+                        }
+                    }
+                }
+            }
+            // The free term of a smooth point: δ_ij / 2.
+            for i in 0..2 {
+                h[(row + i, row + i)] += 0.5;
+            }
+        }
+    }
+    // t_c = G⁻¹ H u_c, on this thread (as the implicit factorizations, `implicit::factor`).
+    let lu = g.partial_piv_lu();
+    lu.solve_in_place(h.as_mut());
+    crate::implicit::clear_upper_vector_state();
+    // K = P (G⁻¹ H) Q.
+    // The collocation point at η moves with the element's end nodes as (1 − η)/2, (1 + η)/2.
+    let q = |e: usize, c: usize| -> [(usize, f64); 2] {
+        let eta = COLLOCATION[c];
+        [(e, 0.5 * (1.0 - eta)), ((e + 1) % n, 0.5 * (1.0 + eta))]
+    };
+    // ∫ N_a φ_k ds over element e: N at its start and end against φ₁, φ₂ (L·[5, 1; 1, 5]/12).
+    let p = |e: usize, k: usize| -> [(usize, f64); 2] {
+        let len = elements[e].length();
+        let (own, other) = (5.0 * len / 12.0, len / 12.0);
+        if k == 0 {
+            [(e, own), ((e + 1) % n, other)]
+        } else {
+            [(e, other), ((e + 1) % n, own)]
+        }
+    };
+    // X Q first (size × 2n), then P (X Q) (2n × 2n).
+    let mut xq = vec![0.0; size * 2 * n];
+    for row in 0..size {
+        for f in 0..n {
+            for c in 0..2 {
+                for (node, w) in q(f, c) {
+                    for j in 0..2 {
+                        xq[row * 2 * n + 2 * node + j] += h[(row, 2 * (2 * f + c) + j)] * w;
+                    }
+                }
+            }
+        }
+    }
+    let mut k = vec![0.0; 4 * n * n];
+    for e in 0..n {
+        for c in 0..2 {
+            for (node, w) in p(e, c) {
+                for i in 0..2 {
+                    let from = (2 * (2 * e + c) + i) * 2 * n;
+                    let to = (2 * node + i) * 2 * n;
+                    for col in 0..2 * n {
+                        k[to + col] += w * xq[from + col];
+                    }
+                }
+            }
+        }
+    }
+    Ok(InterfaceStiffness { nodes: n, k })
+}
+
+/// The reasons `interface_stiffness` refuses its input.
+fn check(points: &[[f64; 2]], m: &Medium) -> Result<(), String> {
+    if !(m.shear > 0.0 && m.shear.is_finite()) {
+        return Err(format!(
+            "far field: shear modulus {} Pa is not positive",
+            m.shear
+        ));
+    }
+    if !(m.poisson > -1.0 && m.poisson < 0.5) {
+        return Err(format!(
+            "far field: Poisson's ratio {} is outside (−1, 0.5)",
+            m.poisson
+        ));
+    }
+    if points.len() < 3 {
+        return Err(format!(
+            "far field: the interface has {} points, fewer than 3",
+            points.len()
+        ));
+    }
+    let n = points.len();
+    let span = (points.iter().flatten()).fold(0.0f64, |m, v| m.max(v.abs()));
+    for i in 0..n {
+        let (a, b) = (points[i], points[(i + 1) % n]);
+        if !(a[0].is_finite() && a[1].is_finite()) {
+            return Err(format!("far field: interface point {i} is not finite"));
+        }
+        if (b[0] - a[0]).hypot(b[1] - a[1]) <= 1e-12 * span {
+            return Err(format!(
+                "far field: interface points {i} and {} coincide",
+                (i + 1) % n
+            ));
+        }
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests;
