@@ -6,10 +6,13 @@
 //! Direct boundary element method (Brebbia & Dominguez 1992, ch. 5) with Kelvin's fundamental
 //! solution (`kelvin`) on straight discontinuous linear elements, one per polygon edge
 //! (`elements`): at each collocation point ξ,
-//! c_ij u_j(ξ) + ∫_Γ T_ij u_j dΓ = ∫_Γ U_ij t_j dΓ, over the interface alone, the displacement and
-//! the traction vanishing at infinity (the far field carries no net force). Collocated at every
-//! element's two points, H u_c = G t_c, so the tractions the far field's surface carries are
-//! t_c = G⁻¹ H u_c (faer's dense LU). The polygon's nodes move the collocation points linearly
+//! c_ij u_j(ξ) + ∫_Γ T_ij u_j dΓ = ∫_Γ U_ij t_j dΓ + C_i, over the interface alone, with C the
+//! displacement at infinity and the tractions carrying no net force, ∫_Γ t dΓ = 0 (the exterior
+//! problem's two conditions at infinity). Collocated at every element's two points,
+//! H u_c = G t_c + C and ∫ t = 0, solved for t_c = X u_c (faer's dense LU). The free C makes a
+//! translation of the interface cost no force, as it costs the infinite medium none, and frees
+//! the solution from the length unit of Kelvin's ln r (without it G is singular for an interface
+//! of one size, the degenerate scale, a circle of about a metre here). The polygon's nodes move the collocation points linearly
 //! (u_c = Q u, exact for the near field's straight edges), and the tractions, linear along each
 //! element, load the nodes through the edges' linear shape functions (f = P t_c, ∫ N_a φ_k ds).
 //! So K = P G⁻¹ H Q (N/m per m of node displacement): the far field pushes node a by −(K u)_a,
@@ -55,25 +58,40 @@ impl InterfaceStiffness {
 }
 
 /// The far field's stiffness on the closed polygon `points` (m; either orientation, the far
-/// field outside) for the elastic `medium`; an error naming the reason for a polygon that has
-/// fewer than 3 points, a zero-length edge or no area, or for constants out of range.
+/// field outside), one element per edge: `interface_stiffness_on` with the edges from each point
+/// to the next.
 pub fn interface_stiffness(
     points: &[[f64; 2]],
     medium: Medium,
 ) -> Result<InterfaceStiffness, String> {
-    check(points, &medium)?;
     let n = points.len();
-    let area2: f64 = (0..n)
-        .map(|i| {
-            let (p, q) = (points[i], points[(i + 1) % n]);
+    let edges: Vec<[usize; 2]> = (0..n).map(|i| [i, (i + 1) % n]).collect();
+    interface_stiffness_on(points, &edges, medium)
+}
+
+/// The far field's stiffness on the nodes `points` (m) for the elements `edges` (point indices,
+/// from start to end along a closed curve, either orientation, the far field outside): two
+/// nodes at one place (the two sides of a joint that reaches the interface) stay two nodes,
+/// each loaded by its own elements. An error naming the reason for fewer than 3 elements, an
+/// element of zero length or of a point that is not given, or constants out of range.
+pub fn interface_stiffness_on(
+    points: &[[f64; 2]],
+    edges: &[[usize; 2]],
+    medium: Medium,
+) -> Result<InterfaceStiffness, String> {
+    check(points, edges, &medium)?;
+    let n = points.len();
+    let area2: f64 = (edges.iter())
+        .map(|&[a, b]| {
+            let (p, q) = (points[a], points[b]);
             p[0] * q[1] - q[0] * p[1]
         })
         .sum();
-    // The far field's outward normal points into the polygon: left of a counter-clockwise edge.
+    // The far field's outward normal points into the curve: left of a counter-clockwise edge.
     let side = area2.signum();
-    let elements: Vec<Element> = (0..n)
-        .map(|e| {
-            let (a, b) = (points[e], points[(e + 1) % n]);
+    let elements: Vec<Element> = (edges.iter())
+        .map(|&[a, b]| {
+            let (a, b) = (points[a], points[b]);
             let len = (b[0] - a[0]).hypot(b[1] - a[1]);
             let t = [(b[0] - a[0]) / len, (b[1] - a[1]) / len];
             Element {
@@ -84,7 +102,7 @@ pub fn interface_stiffness(
         })
         .collect();
     // Unknowns: component i of collocation point (element e, point k) at 2 (2e + k) + i.
-    let size = 4 * n;
+    let size = 4 * elements.len();
     let (mut h, mut g) = (Mat::<f64>::zeros(size, size), Mat::<f64>::zeros(size, size));
     for (e, el) in elements.iter().enumerate() {
         for (c, &eta) in COLLOCATION.iter().enumerate() {
@@ -112,30 +130,50 @@ pub fn interface_stiffness(
             }
         }
     }
-    // t_c = G⁻¹ H u_c, on this thread (as the implicit factorizations, `implicit::factor`).
-    let lu = g.partial_piv_lu();
-    lu.solve_in_place(h.as_mut());
+    // [G 1; L 0] [t_c; C] = [H u_c; 0], L_(i, (f,k,i)) = ∫ φ_k ds = L_f / 2, on this thread (as
+    // the implicit factorizations, `implicit::factor`).
+    let mut a = Mat::<f64>::zeros(size + 2, size + 2);
+    let mut rhs = Mat::<f64>::zeros(size + 2, size);
+    for r in 0..size {
+        for c in 0..size {
+            a[(r, c)] = g[(r, c)];
+            rhs[(r, c)] = h[(r, c)];
+        }
+        a[(r, size + r % 2)] = 1.0;
+    }
+    for (f, el) in elements.iter().enumerate() {
+        for k in 0..2 {
+            for i in 0..2 {
+                a[(size + i, 2 * (2 * f + k) + i)] = 0.5 * el.length();
+            }
+        }
+    }
+    drop((g, h));
+    a.partial_piv_lu().solve_in_place(rhs.as_mut());
     crate::implicit::clear_upper_vector_state();
-    // K = P (G⁻¹ H) Q.
+    let h = rhs;
+    // K = P X Q.
     // The collocation point at η moves with the element's end nodes as (1 − η)/2, (1 + η)/2.
     let q = |e: usize, c: usize| -> [(usize, f64); 2] {
         let eta = COLLOCATION[c];
-        [(e, 0.5 * (1.0 - eta)), ((e + 1) % n, 0.5 * (1.0 + eta))]
+        let [a, b] = edges[e];
+        [(a, 0.5 * (1.0 - eta)), (b, 0.5 * (1.0 + eta))]
     };
     // ∫ N_a φ_k ds over element e: N at its start and end against φ₁, φ₂ (L·[5, 1; 1, 5]/12).
     let p = |e: usize, k: usize| -> [(usize, f64); 2] {
         let len = elements[e].length();
         let (own, other) = (5.0 * len / 12.0, len / 12.0);
+        let [a, b] = edges[e];
         if k == 0 {
-            [(e, own), ((e + 1) % n, other)]
+            [(a, own), (b, other)]
         } else {
-            [(e, other), ((e + 1) % n, own)]
+            [(a, other), (b, own)]
         }
     };
-    // X Q first (size × 2n), then P (X Q) (2n × 2n).
+    // X Q first (size × 2n; X the first `size` rows of the solution), then P (X Q) (2n × 2n).
     let mut xq = vec![0.0; size * 2 * n];
     for row in 0..size {
-        for f in 0..n {
+        for f in 0..elements.len() {
             for c in 0..2 {
                 for (node, w) in q(f, c) {
                     for j in 0..2 {
@@ -146,7 +184,7 @@ pub fn interface_stiffness(
         }
     }
     let mut k = vec![0.0; 4 * n * n];
-    for e in 0..n {
+    for e in 0..elements.len() {
         for c in 0..2 {
             for (node, w) in p(e, c) {
                 for i in 0..2 {
@@ -162,8 +200,8 @@ pub fn interface_stiffness(
     Ok(InterfaceStiffness { nodes: n, k })
 }
 
-/// The reasons `interface_stiffness` refuses its input.
-fn check(points: &[[f64; 2]], m: &Medium) -> Result<(), String> {
+/// The reasons `interface_stiffness_on` refuses its input.
+fn check(points: &[[f64; 2]], edges: &[[usize; 2]], m: &Medium) -> Result<(), String> {
     if !(m.shear > 0.0 && m.shear.is_finite()) {
         return Err(format!(
             "far field: shear modulus {} Pa is not positive",
@@ -176,23 +214,29 @@ fn check(points: &[[f64; 2]], m: &Medium) -> Result<(), String> {
             m.poisson
         ));
     }
-    if points.len() < 3 {
+    if edges.len() < 3 {
         return Err(format!(
-            "far field: the interface has {} points, fewer than 3",
-            points.len()
+            "far field: the interface has {} elements, fewer than 3",
+            edges.len()
         ));
     }
-    let n = points.len();
+    if let Some(i) = points
+        .iter()
+        .position(|p| !(p[0].is_finite() && p[1].is_finite()))
+    {
+        return Err(format!("far field: interface point {i} is not finite"));
+    }
     let span = (points.iter().flatten()).fold(0.0f64, |m, v| m.max(v.abs()));
-    for i in 0..n {
-        let (a, b) = (points[i], points[(i + 1) % n]);
-        if !(a[0].is_finite() && a[1].is_finite()) {
-            return Err(format!("far field: interface point {i} is not finite"));
-        }
-        if (b[0] - a[0]).hypot(b[1] - a[1]) <= 1e-12 * span {
+    for (e, &[a, b]) in edges.iter().enumerate() {
+        let (Some(p), Some(q)) = (points.get(a), points.get(b)) else {
             return Err(format!(
-                "far field: interface points {i} and {} coincide",
-                (i + 1) % n
+                "far field: element {e} joins points {a} and {b}, of {} given",
+                points.len()
+            ));
+        };
+        if (q[0] - p[0]).hypot(q[1] - p[1]) <= 1e-12 * span {
+            return Err(format!(
+                "far field: element {e}'s ends, points {a} and {b}, coincide"
             ));
         }
     }

@@ -148,3 +148,54 @@ fn a_bad_interface_is_refused() {
         assert!(e.contains(reason), "{e}");
     }
 }
+
+/// A translation of the interface costs no force (the infinite medium moves with it), and K
+/// does not depend on the length unit: a circle scaled by 10⁻² or 10³ (through the degenerate
+/// scale of Kelvin's ln r, about a metre) has the same K.
+#[test]
+fn translation_is_free_and_the_size_does_not_matter() {
+    let reference = interface_stiffness(&circle(48, 1.0, [0.0, 0.0]), medium(0.3)).unwrap();
+    let size = reference.k.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    for scale in [0.01, 0.6, 1.0, 1.2, 1000.0] {
+        let k = interface_stiffness(&circle(48, scale, [0.0, 0.0]), medium(0.3)).unwrap();
+        let worst = (k.k.iter().zip(&reference.k))
+            .map(|(a, b)| (a - b).abs())
+            .fold(0.0, f64::max);
+        assert!(worst < 1e-8 * size, "scale {scale}: {worst} of {size}");
+        let mut f = vec![[0.0; 2]; k.nodes];
+        k.forces(&vec![[1e-3, -2e-3]; k.nodes], &mut f);
+        let most = f.iter().map(|f| f[0].hypot(f[1])).fold(0.0, f64::max);
+        assert!(most < 1e-9 * size * 1e-3, "scale {scale}: {most}");
+    }
+}
+
+/// Two nodes at one place (the sides of a joint reaching the interface) each take the force of
+/// their own elements: moved together they carry what the one node of the undivided interface
+/// carries, and the others are as if it were one.
+#[test]
+fn two_nodes_at_one_place_share_their_node_s_force() {
+    let points = circle(40, 2.0, [0.0, 0.0]);
+    let whole = interface_stiffness(&points, medium(0.25)).unwrap();
+    let mut split_points = points.clone();
+    split_points.push(points[0]);
+    let mut edges: Vec<[usize; 2]> = (0..39).map(|i| [i, i + 1]).collect();
+    edges.push([39, 40]);
+    let split = interface_stiffness_on(&split_points, &edges, medium(0.25)).unwrap();
+    let u: Vec<[f64; 2]> = (0..40)
+        .map(|i| [1e-3 * (i as f64).sin(), 2e-4 * i as f64])
+        .collect();
+    let mut u_split = u.clone();
+    u_split.push(u[0]);
+    let (mut f, mut fs) = (vec![[0.0; 2]; 40], vec![[0.0; 2]; 41]);
+    whole.forces(&u, &mut f);
+    split.forces(&u_split, &mut fs);
+    let scale = f.iter().map(|f| f[0].hypot(f[1])).fold(0.0, f64::max);
+    let joined = [fs[0][0] + fs[40][0], fs[0][1] + fs[40][1]];
+    assert!((joined[0] - f[0][0]).hypot(joined[1] - f[0][1]) < 1e-9 * scale);
+    for i in 1..40 {
+        assert!(
+            (fs[i][0] - f[i][0]).hypot(fs[i][1] - f[i][1]) < 1e-9 * scale,
+            "{i}"
+        );
+    }
+}
