@@ -22,6 +22,7 @@ pub mod setup;
 pub mod solve;
 pub mod stage;
 pub mod support;
+mod vector_state;
 
 pub use run::{RunResult, run_scene};
 pub use scene::Scene;

@@ -270,7 +270,13 @@ impl Ramp {
 /// with real masses.
 pub fn derive_masses(model: &mut Model, spec: &SolveSpec) -> (f64, StepLimit) {
     let alpha = spec.damping_coefficient();
-    let zones_only = zone_stiffness(model);
+    let mut zones_only = zone_stiffness(model);
+    // The far field's row sums stiffen its interface's nodes (counted with the zones').
+    if let Some(f) = &model.far_field {
+        for (&n, k) in f.nodes.iter().zip(f.row_sums()) {
+            zones_only[n as usize] += k;
+        }
+    }
     let mut stiffness = zones_only.clone();
     add_contact_stiffness(model, &mut stiffness);
     let with_contacts = stiffness.clone();

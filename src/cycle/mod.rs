@@ -4,6 +4,7 @@
 
 mod bodies;
 mod contacts;
+mod far_field;
 pub use contacts::JointCommit;
 pub(crate) use contacts::contact_normal;
 mod large_strain;
@@ -50,6 +51,16 @@ pub struct CycleParams {
 pub struct Trial<'a> {
     pub disp: &'a [[f64; 2]],
     pub joints: JointCommit<'a>,
+}
+
+/// The gathers of the motion stage's force sources, each node's slots in the zone, contact,
+/// support and far-field force buffers.
+#[derive(Clone, Copy)]
+pub struct Gathers<'a> {
+    pub zones: &'a Gather,
+    pub contacts: &'a Gather,
+    pub supports: &'a Gather,
+    pub far_field: &'a Gather,
 }
 
 /// How the zone stage turns node velocities into stress and corner forces: one of three, fixed
@@ -149,6 +160,10 @@ pub struct Cycle {
     /// Force of the supports on the rock nodes, N/m, one per support slot
     /// (`Supports::slot_nodes`).
     support_force: Vec<[f64; 2]>,
+    /// Force of the far field on each interface node, N/m (`FarField::nodes`), and the
+    /// interface's displacement scratch.
+    far_force: Vec<[f64; 2]>,
+    far_moved: Vec<[f64; 2]>,
     /// Upper bound on how far any node has moved since the last detection, m.
     moved: f64,
     /// 1 / (shortest zone edge at each node), 1/m (0 for nodes without zones).
@@ -190,6 +205,8 @@ impl Cycle {
             zone_force: vec![[0.0; 2]; 3 * model.zones.len()],
             contact_force: vec![[0.0; 2]; 3 * model.contacts.len()],
             support_force: vec![[0.0; 2]; model.supports.slot_count()],
+            far_force: vec![[0.0; 2]; model.far_field.as_ref().map_or(0, |f| f.nodes.len())],
+            far_moved: vec![[0.0; 2]; model.far_field.as_ref().map_or(0, |f| f.nodes.len())],
             inv_size: inverse_zone_size(model),
             zone_strain: vec![[0.0; 3]; model.mixed.as_ref().map_or(0, |_| model.zones.len())],
             node_volumetric: vec![0.0; model.mixed.as_ref().map_or(0, |_| model.nodes.len())],
@@ -217,6 +234,8 @@ impl Cycle {
             supports,
             mixed,
             support_gather,
+            far_field,
+            far_gather,
             materials,
             ..
         } = model;
@@ -229,9 +248,16 @@ impl Cycle {
         self.zone_forces(nodes, zones, laws, gather, mixed.as_deref(), p);
         let t3 = Instant::now();
         self.structural_forces(supports, &nodes.disp, p);
+        self.far_field_forces(far_field.as_ref(), &nodes.disp);
         let t4 = Instant::now();
+        let gathers = Gathers {
+            zones: gather,
+            contacts: &contacts.gather,
+            supports: support_gather,
+            far_field: far_gather,
+        };
         let speed = self
-            .motion(nodes, gather, &contacts.gather, support_gather, p)
+            .motion(nodes, &gathers, p)
             .max(self.body_motion(nodes, bodies, laws, p));
         self.moved += speed * p.dt;
         let t5 = Instant::now();
@@ -272,11 +298,13 @@ impl Cycle {
             blocks,
             contacts,
             supports,
+            far_field,
             materials,
             ..
         } = model;
         self.contact_forces(nodes, blocks, contacts, &materials.joint, &still, joints);
         self.structural_forces(supports, &nodes.disp, &still);
+        self.far_field_forces(far_field.as_ref(), &nodes.disp);
     }
 
     /// The out-of-balance force of the state as it is, N/m, into `nodes.force` (zero in a fixed
@@ -464,6 +492,7 @@ impl Cycle {
             (&model.gather, &self.zone_force),
             (&model.contacts.gather, &self.contact_force),
             (&model.support_gather, &self.support_force),
+            (&model.far_gather, &self.far_force),
         ];
         for (gather, forces) in sources {
             for &s in gather.of(n) {
@@ -483,15 +512,15 @@ impl Cycle {
     /// the scene or a test prescribes one), as FLAC's FIX. Returns the largest node speed, m/s,
     /// and records in `jump` the largest step relative to the node's zone size (an explicit
     /// scheme past its stability limit grows such steps by a large factor every cycle).
-    pub fn motion(
-        &mut self,
-        nodes: &mut Nodes,
-        gather: &Gather,
-        contact_gather: &Gather,
-        support_gather: &Gather,
-        p: &CycleParams,
-    ) -> f64 {
+    pub fn motion(&mut self, nodes: &mut Nodes, gathers: &Gathers, p: &CycleParams) -> f64 {
         let (zf, cf, sf) = (&self.zone_force, &self.contact_force, &self.support_force);
+        let ff = &self.far_force;
+        let Gathers {
+            zones: gather,
+            contacts: contact_gather,
+            supports: support_gather,
+            far_field: far_gather,
+        } = *gathers;
         let inv_size = &self.inv_size;
         let (alpha, dt) = (p.damping, p.dt);
         let (keep, gain) = mass_damping_factors(p);
@@ -519,6 +548,11 @@ impl Cycle {
                 }
                 for &s in support_gather.of(n) {
                     let c = sf[s as usize];
+                    f[0] += c[0];
+                    f[1] += c[1];
+                }
+                for &s in far_gather.of(n) {
+                    let c = ff[s as usize];
                     f[0] += c[0];
                     f[1] += c[1];
                 }

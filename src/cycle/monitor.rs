@@ -60,6 +60,10 @@ impl Cycle {
                         let c = self.support_force[s as usize];
                         gross += (c[0] * c[0] + c[1] * c[1]).sqrt();
                     }
+                    for &s in model.far_gather.of(i) {
+                        let c = self.far_force[s as usize];
+                        gross += (c[0] * c[0] + c[1] * c[1]).sqrt();
+                    }
                     let v = nodes.vel[i];
                     ke += 0.5 * nodes.mass[i] * (v[0] * v[0] + v[1] * v[1]);
                 }

@@ -20,12 +20,14 @@
 //!
 //! K is not symmetric (collocation); its symmetric part is what the implicit path can factorize.
 
+mod attached;
 mod elements;
 mod kelvin;
 
 use faer::Mat;
 use faer::linalg::solvers::Solve;
 
+pub use attached::FarField;
 use elements::{COLLOCATION, Element};
 pub use kelvin::Medium;
 
@@ -130,8 +132,8 @@ pub fn interface_stiffness_on(
             }
         }
     }
-    // [G 1; L 0] [t_c; C] = [H u_c; 0], L_(i, (f,k,i)) = ∫ φ_k ds = L_f / 2, on this thread (as
-    // the implicit factorizations, `implicit::factor`).
+    // [G 1; L 0] [t_c; C] = [H u_c; 0], L_(i, (f,k,i)) = ∫ φ_k ds = L_f / 2; faer's dense LU
+    // runs on the global pool, whose vector registers are cleared after it (`vector_state`).
     let mut a = Mat::<f64>::zeros(size + 2, size + 2);
     let mut rhs = Mat::<f64>::zeros(size + 2, size);
     for r in 0..size {
@@ -150,7 +152,7 @@ pub fn interface_stiffness_on(
     }
     drop((g, h));
     a.partial_piv_lu().solve_in_place(rhs.as_mut());
-    crate::implicit::clear_upper_vector_state();
+    crate::vector_state::clear_upper_vector_state_everywhere();
     let h = rhs;
     // K = P X Q.
     // The collocation point at η moves with the element's end nodes as (1 − η)/2, (1 + η)/2.

@@ -7,6 +7,7 @@ use rayon::prelude::*;
 use super::bodies::BodyDofs;
 use super::structural::{SupportDofs, support_stiffness};
 use crate::cycle::contact_normal;
+use crate::far_field::FarField;
 use crate::joint::JointLaw;
 use crate::law::{ZoneLaw, plane_strain_moduli};
 use crate::model::blocks::Blocks;
@@ -269,6 +270,9 @@ pub fn stiffness(
     if !model.supports.is_empty() {
         triplets.extend(support_stiffness(&model.supports, &terms, &dofs.supports));
     }
+    if let Some(far) = &model.far_field {
+        triplets.extend(far_field_stiffness(far, &terms));
+    }
     SparseColMat::try_new_from_triplets(dofs.count, dofs.count, &triplets)
 }
 
@@ -306,6 +310,42 @@ pub fn contact_stiffness(
                 |r, q| len * w[r / 2] * w[q / 2] * frame(r % 2, q % 2),
                 &mut out,
             );
+            out
+        })
+        .collect()
+}
+
+/// The far field's stiffness over the unknowns (lower triangle): the symmetric part of K,
+/// (K + Kᵀ)/2, the collocation's K being not quite symmetric (`far_field`; its asymmetry is the
+/// residual's, which the iterations converge on).
+pub fn far_field_stiffness(
+    far: &FarField,
+    terms: &(dyn Fn(u32, usize) -> Terms + Sync),
+) -> Vec<Triplet<usize, usize, f64>> {
+    let n = far.nodes.len();
+    let comps: Vec<Terms> = (0..2 * n).map(|r| terms(far.nodes[r / 2], r % 2)).collect();
+    let k = &far.stiffness;
+    (0..2 * n)
+        .into_par_iter()
+        .flat_map_iter(|r| {
+            let mut out = Vec::new();
+            for c in 0..=r {
+                let v = 0.5 * (k.at(r / 2, r % 2, c / 2, c % 2) + k.at(c / 2, c % 2, r / 2, r % 2));
+                for (a, ca) in comps[r].pairs() {
+                    for (b, cb) in comps[c].pairs() {
+                        // The component pair (r, r) adds each product of its terms once, at
+                        // its place in the lower triangle; a pair (r, c), c < r, stands for
+                        // (c, r) too, whose product lands on the same lower entry, and twice
+                        // on a diagonal one (a = b).
+                        if c == r && a < b {
+                            continue;
+                        }
+                        let (hi, lo) = if a >= b { (a, b) } else { (b, a) };
+                        let weight = if c == r || a != b { 1.0 } else { 2.0 };
+                        out.push(Triplet::new(hi as usize, lo as usize, weight * ca * cb * v));
+                    }
+                }
+            }
             out
         })
         .collect()

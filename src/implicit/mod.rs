@@ -58,7 +58,6 @@ use anderson::Anderson;
 use assemble::{Dofs, stiffness};
 use commit::Committed;
 pub use drive::Drive;
-pub(crate) use factor::clear_upper_vector_state;
 use factor::{Factor, FactorError};
 use moving::Movement;
 use steps::LoadSteps;

@@ -89,6 +89,10 @@ pub struct Model {
     pub mixed: Option<Vec<f64>>,
     /// For each node, the slots of the support-force buffer acting on it.
     pub(crate) support_gather: Gather,
+    /// The elastic far field outside the region's outer boundary (`region.far_field`), if any.
+    pub far_field: Option<crate::far_field::FarField>,
+    /// For each node, the slots of the far field's force buffer acting on it (none without one).
+    pub(crate) far_gather: Gather,
     /// Zone and joint laws, and which joint material each joint feature and hole wall takes.
     pub materials: Materials,
 }

@@ -193,6 +193,32 @@ pub struct Region {
     pub(crate) edge_names: Option<Vec<String>>,
     /// Name of the material that fills the region.
     pub material: String,
+    /// An elastic far field outside the polygon (issue 18): the infinite medium beyond the
+    /// region, by boundary elements on its outer boundary, which then carries the in-situ
+    /// stress's traction plus the far field's response to the boundary's displacement.
+    #[serde(default)]
+    pub far_field: Option<FarFieldSpec>,
+}
+
+/// `region.far_field`: the infinite elastic medium outside the region.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FarFieldSpec {
+    /// How it is modelled: `boundary_elements` (the only kind).
+    pub kind: FarFieldKind,
+    /// Young's modulus of the far-field rock, Pa (default: the region material's).
+    #[serde(default)]
+    pub young: Option<f64>,
+    /// Poisson's ratio of the far-field rock (default: the region material's).
+    #[serde(default)]
+    pub poisson: Option<f64>,
+}
+
+/// The kinds of far field.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum FarFieldKind {
+    BoundaryElements,
 }
 
 /// A hole in the region, present from the start of the run.

@@ -317,6 +317,7 @@ impl Scene {
                 format!("no material named '{}' in materials", self.region.material),
             ));
         }
+        self.validate_far_field()?;
         if let Some(names) = &self.region.edge_names
             && names.len() != self.region.polygon.len()
         {
@@ -617,6 +618,69 @@ impl Scene {
         ] {
             if v.is_some_and(|v| !v.is_finite()) {
                 return Err(invalid(format!("{p}.{f}"), "must be finite"));
+            }
+        }
+        Ok(())
+    }
+}
+
+impl Scene {
+    /// `region.far_field`: its constants in range; a static model (the far field is a
+    /// stiffness, radiating no waves); no load of the boundary conditions on the region's outer
+    /// boundary, which the far field loads itself (fixities stay allowed: a point fixed holds
+    /// the near field in place for the implicit solve, a translation costing the far field nothing).
+    fn validate_far_field(&self) -> Result<(), SceneError> {
+        let Some(f) = &self.region.far_field else {
+            return Ok(());
+        };
+        if let Some(e) = f.young {
+            positive("region.far_field.young", e)?;
+        }
+        if let Some(nu) = f.poisson
+            && !(nu > -1.0 && nu < 0.5)
+        {
+            return Err(invalid(
+                "region.far_field.poisson",
+                format!("must lie in (−1, 0.5), got {}", Num(nu)),
+            ));
+        }
+        let solves = std::iter::once(("solve.mode", &self.solve)).chain(
+            (self.stages.iter())
+                .filter_map(|s| s.solve.as_ref())
+                .map(|s| ("stages[].solve.mode", s)),
+        );
+        for (path, s) in solves {
+            if s.mode == super::SolveMode::Dynamic {
+                return Err(invalid(
+                    path,
+                    "dynamic: the far field (region.far_field) is a static stiffness that \
+                     radiates no waves, so they would reflect from it",
+                ));
+            }
+        }
+        let outer: Vec<String> = std::iter::once("outer".to_string())
+            .chain(self.edge_names())
+            .collect();
+        let lists = std::iter::once(("boundary".to_string(), &self.boundary)).chain(
+            (self.stages.iter().enumerate()).filter_map(|(i, s)| {
+                s.boundary
+                    .as_ref()
+                    .map(|b| (format!("stages[{i}].boundary"), b))
+            }),
+        );
+        for (path, list) in lists {
+            for (j, bc) in list.iter().enumerate() {
+                let on_outer = bc.part.as_ref().is_some_and(|p| outer.contains(p));
+                if on_outer && bc.load_kinds() > 0 {
+                    return Err(invalid(
+                        format!("{path}[{j}]"),
+                        format!(
+                            "loads part '{}' of the region's outer boundary, which the far field \
+                             (region.far_field) loads with the in-situ stress and its own response",
+                            bc.part.as_deref().unwrap_or_default()
+                        ),
+                    ));
+                }
             }
         }
         Ok(())

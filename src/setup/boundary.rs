@@ -140,16 +140,26 @@ pub fn add_tractions<'a>(
     edges: impl Iterator<Item = &'a BoundaryEdge>,
     traction: impl Fn([f64; 2], [f64; 2]) -> [f64; 2],
 ) {
+    traction_loads(&nodes.pos, &mut nodes.applied, edges, traction);
+}
+
+/// `add_tractions` into `loads` (N/m per node) for nodes at `pos` (m).
+pub fn traction_loads<'a>(
+    pos: &[[f64; 2]],
+    loads: &mut [[f64; 2]],
+    edges: impl Iterator<Item = &'a BoundaryEdge>,
+    traction: impl Fn([f64; 2], [f64; 2]) -> [f64; 2],
+) {
     for e in edges {
         let [a, b] = e.nodes.map(|n| n as usize);
-        let (pa, pb) = (nodes.pos[a], nodes.pos[b]);
+        let (pa, pb) = (pos[a], pos[b]);
         let (dx, dy) = (pb[0] - pa[0], pb[1] - pa[1]);
         let len = (dx * dx + dy * dy).sqrt();
         let n = [dy / len, -dx / len];
         let (ta, tb) = (traction(pa, n), traction(pb, n));
         for d in 0..2 {
-            nodes.applied[a][d] += (2.0 * ta[d] + tb[d]) * len / 6.0;
-            nodes.applied[b][d] += (ta[d] + 2.0 * tb[d]) * len / 6.0;
+            loads[a][d] += (2.0 * ta[d] + tb[d]) * len / 6.0;
+            loads[b][d] += (ta[d] + 2.0 * tb[d]) * len / 6.0;
         }
     }
 }

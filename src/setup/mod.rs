@@ -7,6 +7,7 @@ mod bodies;
 pub use bodies::add_body_weight;
 mod boundary;
 mod catalogue;
+mod far_field;
 mod geometry;
 mod plan;
 mod repair;
@@ -284,6 +285,8 @@ pub fn setup_meshed(scene: &Scene, meshed: Meshed) -> anyhow::Result<Setup> {
         contact_tolerance,
         supports: Default::default(),
         support_gather: Gather::default(),
+        far_field: None,
+        far_gather: Gather::default(),
         mixed,
         materials: Materials {
             zone: zone_laws.laws,
@@ -298,6 +301,11 @@ pub fn setup_meshed(scene: &Scene, meshed: Meshed) -> anyhow::Result<Setup> {
     let fill = meshed.fill;
     model.supports = supports::supports(scene, &model, &fill, &boundary)?;
     model.support_gather = Gather::from_slots(model.nodes.len(), &model.supports.slot_nodes());
+    model.far_field = far_field::far_field(scene, &model, &boundary, &in_situ)?;
+    model.far_gather = match &model.far_field {
+        Some(f) => Gather::from_slots(model.nodes.len(), &f.nodes),
+        None => Gather::from_slots(model.nodes.len(), &[]),
+    };
     let m = &model.materials;
     let plan = Plan::of(
         scene,

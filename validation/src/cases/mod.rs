@@ -5,6 +5,7 @@ mod column;
 mod corners;
 mod detection;
 mod direct_shear;
+mod far_field;
 mod glued;
 mod grains;
 mod gravity;
@@ -35,6 +36,7 @@ pub fn all() -> Vec<Box<dyn Case>> {
     vec![
         Box::new(kirsch::Kirsch),
         Box::new(implicit::Implicit),
+        Box::new(far_field::FarField),
         Box::new(patch::Patch),
         Box::new(gravity::Gravity),
         Box::new(salencon::Salencon),
