@@ -150,7 +150,10 @@ mod tests {
             let whole = run_rock_by(&kirsch, 1.0, 0.0, &Rock::SHIPPED, method).unwrap();
             eprintln!("{far:?}\n{whole:?}");
             for e in ["plastic_radius", "wall_displacement"] {
-                assert!((far.errors[e] - whole.errors[e]).abs() < 0.01, "{e}: {far:?} {whole:?}");
+                assert!(
+                    (far.errors[e] - whole.errors[e]).abs() < 0.01,
+                    "{e}: {far:?} {whole:?}"
+                );
             }
         }
     }

@@ -6,9 +6,9 @@ use std::fmt::Write as _;
 
 use crate::case::{Case, Context, Section, print_row, table};
 use crate::far_field::{Outside, assembly_cost, box_scene, run_box};
-use crate::salencon;
 use crate::kirsch_case::{OuterLoad, run};
 use crate::report::CaseReport;
+use crate::salencon;
 use adit::scene::SolveMethod;
 
 pub struct FarField;
@@ -108,7 +108,11 @@ impl Case for FarField {
              far field outside (elastic, the rock's E and ν): plastic radius and wall \
              displacement within {:.2} % of the closed form (issue 18's bar: 3 %), **{}**.\n",
             100.0 * salencon_worst,
-            if salencon_worst <= 0.03 { "met" } else { "NOT met" }
+            if salencon_worst <= 0.03 {
+                "met"
+            } else {
+                "NOT met"
+            }
         );
         let _ = writeln!(
             md,
