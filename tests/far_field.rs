@@ -65,23 +65,26 @@ fn what_a_far_field_cannot_do_is_refused() {
         r#""material": "rock" },"#,
         r#""material": "rock", "far_field": { "kind": "boundary_elements" } },"#,
     );
+    // The far field's scene without the outer boundary's in-situ traction, `from` made `to`.
+    let without_load = |from: &str, to: &str| {
+        base.replace(r#"{ "part": "outer", "in_situ_traction": true },"#, "")
+            .replace(from, to)
+    };
     let cases = [
         (base.clone(), "boundary[0]", "far field"),
         (
-            base.replace(r#"{ "part": "outer", "in_situ_traction": true },"#, "")
-                .replace(
-                    r#""solve": { "ratio": 1e-6 }"#,
-                    r#""solve": { "mode": "dynamic" }"#,
-                ),
+            without_load(
+                r#""solve": { "ratio": 1e-6 }"#,
+                r#""solve": { "mode": "dynamic" }"#,
+            ),
             "solve.mode",
             "radiates no waves",
         ),
         (
-            base.replace(r#"{ "part": "outer", "in_situ_traction": true },"#, "")
-                .replace(
-                    r#""kind": "boundary_elements" }"#,
-                    r#""kind": "boundary_elements", "poisson": 0.5 }"#,
-                ),
+            without_load(
+                r#""kind": "boundary_elements" }"#,
+                r#""kind": "boundary_elements", "poisson": 0.5 }"#,
+            ),
             "region.far_field.poisson",
             "(−1, 0.5)",
         ),
