@@ -7,7 +7,7 @@ use crate::cycle::{Cycle, ZoneScheme};
 use crate::implicit::{self, Method};
 use crate::model::Model;
 use crate::model::bodies::BodyMode;
-use crate::output::{OutputWriter, StageSummary, Summary, measured};
+use crate::output::{FarFieldSummary, OutputWriter, StageSummary, Summary, measured};
 use crate::scene::Scene;
 use crate::scene::SolveMethod;
 use crate::setup::{Plan, Setup, setup};
@@ -312,6 +312,7 @@ fn build_solve_write(
         },
         methods,
         implicit: implicit_cost,
+        far_field: built.model.far_field.as_ref().map(FarFieldSummary::of),
     };
     writer.write_summary(&summary)?;
     Ok(RunResult {

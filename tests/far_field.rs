@@ -44,6 +44,12 @@ fn a_tunnel_in_a_small_box_closes_as_in_the_infinite_medium() {
         let _ = std::fs::remove_dir_all(&out);
         let r = adit::run_scene(&sc, &out, &mut Quiet).unwrap();
         assert_eq!(r.summary.status, "converged", "{method}");
+        let far = r.summary.far_field.expect("the far field in the summary");
+        let n = r.built.model.far_field.as_ref().unwrap().nodes.len();
+        assert!(far.interface_nodes == n && n > 8, "{far:?}");
+        assert_eq!(far.stiffness_bytes, 8 * 4 * n * n);
+        let json = std::fs::read_to_string(out.join("summary.json")).unwrap();
+        assert!(json.contains("\"interface_nodes\""), "{json}");
         let closure: Vec<f64> = (r.summary.stages.iter())
             .map(|s| s.closure.get("tunnel").copied().unwrap_or(0.0))
             .collect();

@@ -268,6 +268,30 @@ pub struct Summary {
     /// What the implicit solves cost, summed over the stages (absent when none ran).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub implicit: Option<crate::implicit::Cost>,
+    /// The far field's interface and what condensing it cost (absent without one).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub far_field: Option<FarFieldSummary>,
+}
+
+/// `summary.json`'s `far_field`.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct FarFieldSummary {
+    /// Nodes on the interface (the region's outer boundary).
+    pub interface_nodes: usize,
+    /// Seconds condensing the far field's stiffness took (once, at setup).
+    pub condense_seconds: f64,
+    /// Bytes of its stiffness K, (2n)² values (the condensing took (4e + 2)² twice for e elements).
+    pub stiffness_bytes: usize,
+}
+
+impl FarFieldSummary {
+    pub fn of(f: &crate::far_field::FarField) -> FarFieldSummary {
+        FarFieldSummary {
+            interface_nodes: f.nodes.len(),
+            condense_seconds: f.assemble_s,
+            stiffness_bytes: f.stiffness.k.len() * std::mem::size_of::<f64>(),
+        }
+    }
 }
 
 /// The header of `history.csv`.
