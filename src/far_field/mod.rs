@@ -81,19 +81,34 @@ pub fn interface_stiffness_on(
     edges: &[[usize; 2]],
     medium: Medium,
 ) -> Result<InterfaceStiffness, String> {
-    check(points, edges, &medium)?;
+    let chains: Vec<Vec<usize>> = edges.iter().map(|e| e.to_vec()).collect();
+    interface_stiffness_chains(points, &chains, medium)
+}
+
+/// `interface_stiffness_on` with elements longer than the edges between nodes: each element is
+/// the straight chain of nodes `chains[e]` (point indices from its start to its end, in order
+/// along it), whose nodes all move it (its collocation points take their displacement from the
+/// two nodes about them) and all carry its traction (through their hat functions along the
+/// chain). An error besides for a chain of fewer than 2 points, not straight, or out of order.
+pub fn interface_stiffness_chains(
+    points: &[[f64; 2]],
+    chains: &[Vec<usize>],
+    medium: Medium,
+) -> Result<InterfaceStiffness, String> {
+    check(points, chains, &medium)?;
     let n = points.len();
-    let area2: f64 = (edges.iter())
-        .map(|&[a, b]| {
-            let (p, q) = (points[a], points[b]);
+    let ends = |c: &Vec<usize>| (points[c[0]], points[c[c.len() - 1]]);
+    let area2: f64 = (chains.iter())
+        .map(|c| {
+            let (p, q) = ends(c);
             p[0] * q[1] - q[0] * p[1]
         })
         .sum();
     // The far field's outward normal points into the curve: left of a counter-clockwise edge.
     let side = area2.signum();
-    let elements: Vec<Element> = (edges.iter())
-        .map(|&[a, b]| {
-            let (a, b) = (points[a], points[b]);
+    let elements: Vec<Element> = (chains.iter())
+        .map(|c| {
+            let (a, b) = ends(c);
             let len = (b[0] - a[0]).hypot(b[1] - a[1]);
             let t = [(b[0] - a[0]) / len, (b[1] - a[1]) / len];
             Element {
@@ -102,6 +117,9 @@ pub fn interface_stiffness_on(
                 n: [-side * t[1], side * t[0]],
             }
         })
+        .collect();
+    let places: Vec<Vec<f64>> = (chains.iter().zip(&elements))
+        .map(|(c, el)| fractions(points, c, el))
         .collect();
     // Unknowns: component i of collocation point (element e, point k) at 2 (2e + k) + i.
     let size = 4 * elements.len();
@@ -155,22 +173,40 @@ pub fn interface_stiffness_on(
     crate::vector_state::clear_upper_vector_state_everywhere();
     let h = rhs;
     // K = P X Q.
-    // The collocation point at η moves with the element's end nodes as (1 − η)/2, (1 + η)/2.
+    // The collocation point at η (the fraction w = (1 + η)/2 along the element) moves with the
+    // two chain nodes about it, linearly.
     let q = |e: usize, c: usize| -> [(usize, f64); 2] {
-        let eta = COLLOCATION[c];
-        let [a, b] = edges[e];
-        [(a, 0.5 * (1.0 - eta)), (b, 0.5 * (1.0 + eta))]
+        let (f, chain) = (&places[e], &chains[e]);
+        let w = 0.5 * (1.0 + COLLOCATION[c]);
+        let i = (0..f.len() - 1)
+            .find(|&i| w <= f[i + 1])
+            .unwrap_or(f.len() - 2);
+        let t = (w - f[i]) / (f[i + 1] - f[i]);
+        [(chain[i], 1.0 - t), (chain[i + 1], t)]
     };
-    // ∫ N_a φ_k ds over element e: N at its start and end against φ₁, φ₂ (L·[5, 1; 1, 5]/12).
-    let p = |e: usize, k: usize| -> [(usize, f64); 2] {
-        let len = elements[e].length();
-        let (own, other) = (5.0 * len / 12.0, len / 12.0);
-        let [a, b] = edges[e];
-        if k == 0 {
-            [(a, own), (b, other)]
-        } else {
-            [(a, other), (b, own)]
-        }
+    // ∫ N_a φ_k ds over element e for each chain node a: its hat function against φ₁ = 3/2 − 2w,
+    // φ₂ = 2w − 1/2 (L·[5, 1; 1, 5]/12 for a chain of its two ends), by Simpson's rule on each
+    // piece of the hat (exact: the product is quadratic).
+    let p = |e: usize, k: usize| -> Vec<(usize, f64)> {
+        let (f, chain, len) = (&places[e], &chains[e], elements[e].length());
+        let phi = |w: f64| if k == 0 { 1.5 - 2.0 * w } else { 2.0 * w - 0.5 };
+        let simpson = |lo: f64, hi: f64, g: &dyn Fn(f64) -> f64| {
+            (hi - lo) / 6.0 * (g(lo) + 4.0 * g(0.5 * (lo + hi)) + g(hi))
+        };
+        (0..chain.len())
+            .map(|i| {
+                let mut sum = 0.0;
+                if i > 0 {
+                    let (lo, hi) = (f[i - 1], f[i]);
+                    sum += simpson(lo, hi, &|w| (w - lo) / (hi - lo) * phi(w));
+                }
+                if i + 1 < chain.len() {
+                    let (lo, hi) = (f[i], f[i + 1]);
+                    sum += simpson(lo, hi, &|w| (hi - w) / (hi - lo) * phi(w));
+                }
+                (chain[i], len * sum)
+            })
+            .collect()
     };
     // X Q first (size × 2n; X the first `size` rows of the solution), then P (X Q) (2n × 2n).
     let mut xq = vec![0.0; size * 2 * n];
@@ -202,8 +238,22 @@ pub fn interface_stiffness_on(
     Ok(InterfaceStiffness { nodes: n, k })
 }
 
-/// The reasons `interface_stiffness_on` refuses its input.
-fn check(points: &[[f64; 2]], edges: &[[usize; 2]], m: &Medium) -> Result<(), String> {
+/// Where each node of `chain` sits along `element` (fractions of its length, 0 at its start and
+/// 1 at its end).
+fn fractions(points: &[[f64; 2]], chain: &[usize], element: &Element) -> Vec<f64> {
+    let (a, b) = (element.a, element.b);
+    let d = [b[0] - a[0], b[1] - a[1]];
+    let l2 = d[0] * d[0] + d[1] * d[1];
+    (chain.iter())
+        .map(|&i| {
+            let p = points[i];
+            ((p[0] - a[0]) * d[0] + (p[1] - a[1]) * d[1]) / l2
+        })
+        .collect()
+}
+
+/// The reasons `interface_stiffness_chains` refuses its input.
+fn check(points: &[[f64; 2]], chains: &[Vec<usize>], m: &Medium) -> Result<(), String> {
     if !(m.shear > 0.0 && m.shear.is_finite()) {
         return Err(format!(
             "far field: shear modulus {} Pa is not positive",
@@ -216,10 +266,10 @@ fn check(points: &[[f64; 2]], edges: &[[usize; 2]], m: &Medium) -> Result<(), St
             m.poisson
         ));
     }
-    if edges.len() < 3 {
+    if chains.len() < 3 {
         return Err(format!(
             "far field: the interface has {} elements, fewer than 3",
-            edges.len()
+            chains.len()
         ));
     }
     if let Some(i) = points
@@ -229,17 +279,40 @@ fn check(points: &[[f64; 2]], edges: &[[usize; 2]], m: &Medium) -> Result<(), St
         return Err(format!("far field: interface point {i} is not finite"));
     }
     let span = (points.iter().flatten()).fold(0.0f64, |m, v| m.max(v.abs()));
-    for (e, &[a, b]) in edges.iter().enumerate() {
-        let (Some(p), Some(q)) = (points.get(a), points.get(b)) else {
+    for (e, chain) in chains.iter().enumerate() {
+        if chain.len() < 2 {
+            return Err(format!("far field: element {e} has {} points", chain.len()));
+        }
+        if let Some(&i) = chain.iter().find(|&&i| i >= points.len()) {
             return Err(format!(
-                "far field: element {e} joins points {a} and {b}, of {} given",
+                "far field: element {e} joins point {i}, of {} given",
                 points.len()
             ));
-        };
-        if (q[0] - p[0]).hypot(q[1] - p[1]) <= 1e-12 * span {
+        }
+        let (a, b) = (chain[0], chain[chain.len() - 1]);
+        let (p, q) = (points[a], points[b]);
+        let len = (q[0] - p[0]).hypot(q[1] - p[1]);
+        if len <= 1e-12 * span {
             return Err(format!(
                 "far field: element {e}'s ends, points {a} and {b}, coincide"
             ));
+        }
+        let t = [(q[0] - p[0]) / len, (q[1] - p[1]) / len];
+        let mut last = f64::NEG_INFINITY;
+        for &i in chain {
+            let r = [points[i][0] - p[0], points[i][1] - p[1]];
+            let (along, off) = (r[0] * t[0] + r[1] * t[1], r[0] * t[1] - r[1] * t[0]);
+            if off.abs() > 1e-6 * len {
+                return Err(format!(
+                    "far field: element {e} is not straight (point {i} lies {off:.3e} m off it)"
+                ));
+            }
+            if along <= last {
+                return Err(format!(
+                    "far field: element {e}'s points are not in order along it (point {i})"
+                ));
+            }
+            last = along;
         }
     }
     Ok(())

@@ -199,3 +199,58 @@ fn two_nodes_at_one_place_share_their_node_s_force() {
         );
     }
 }
+
+/// Elements longer than the edges between nodes: on a box whose sides carry nodes every 0.25 m,
+/// elements of 1 m (chains of five nodes) store the work the same elements do on the box with
+/// nodes at their ends only, for any displacement linear along each element; a bent chain is
+/// refused.
+#[test]
+fn elements_over_several_nodes_store_the_work_of_their_ends() {
+    let (side, per) = (4usize, 4usize);
+    // The box's corner-to-corner path, counter-clockwise, at `step` points per metre.
+    let path = |step: usize| -> Vec<[f64; 2]> {
+        let mut p = Vec::new();
+        for s in 0..4 {
+            for k in 0..side * step {
+                let t = k as f64 / step as f64;
+                p.push(match s {
+                    0 => [t, 0.0],
+                    1 => [side as f64, t],
+                    2 => [side as f64 - t, side as f64],
+                    _ => [0.0, side as f64 - t],
+                });
+            }
+        }
+        p
+    };
+    let (coarse, fine) = (path(1), path(per));
+    let n = coarse.len();
+    let chains: Vec<Vec<usize>> = (0..n)
+        .map(|e| (0..=per).map(|k| (e * per + k) % fine.len()).collect())
+        .collect();
+    let k_fine = interface_stiffness_chains(&fine, &chains, medium(0.3)).unwrap();
+    let k_coarse = interface_stiffness(&coarse, medium(0.3)).unwrap();
+    let u: Vec<[f64; 2]> = (0..n)
+        .map(|i| [1e-3 * (i as f64 * 0.7).sin(), 1e-3 * (i as f64 * 1.3).cos()])
+        .collect();
+    let u_fine: Vec<[f64; 2]> = (0..fine.len())
+        .map(|j| {
+            let (e, t) = (j / per, (j % per) as f64 / per as f64);
+            let (a, b) = (u[e], u[(e + 1) % n]);
+            [(1.0 - t) * a[0] + t * b[0], (1.0 - t) * a[1] + t * b[1]]
+        })
+        .collect();
+    let work = |k: &InterfaceStiffness, u: &[[f64; 2]]| {
+        let mut f = vec![[0.0; 2]; u.len()];
+        k.forces(u, &mut f);
+        -(f.iter().zip(u))
+            .map(|(f, u)| f[0] * u[0] + f[1] * u[1])
+            .sum::<f64>()
+    };
+    let (wf, wc) = (work(&k_fine, &u_fine), work(&k_coarse, &u));
+    assert!((wf - wc).abs() < 1e-9 * wc.abs(), "{wf} {wc}");
+    let mut bent = fine.clone();
+    bent[2][1] += 0.01;
+    let e = interface_stiffness_chains(&bent, &chains, medium(0.3)).unwrap_err();
+    assert!(e.contains("element 0 is not straight"), "{e}");
+}

@@ -212,6 +212,11 @@ pub struct FarFieldSpec {
     /// Poisson's ratio of the far-field rock (default: the region material's).
     #[serde(default)]
     pub poisson: Option<f64>,
+    /// Length of the boundary elements, m (default: one per boundary edge of the zones): each
+    /// straight run of the outer boundary between corners and joints is split into elements of
+    /// about this length, at its zones' edges, never shorter than one edge.
+    #[serde(default)]
+    pub element_size: Option<f64>,
 }
 
 /// The kinds of far field.

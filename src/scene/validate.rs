@@ -636,6 +636,9 @@ impl Scene {
         if let Some(e) = f.young {
             positive("region.far_field.young", e)?;
         }
+        if let Some(h) = f.element_size {
+            positive("region.far_field.element_size", h)?;
+        }
         if let Some(nu) = f.poisson
             && !(nu > -1.0 && nu < 0.5)
         {

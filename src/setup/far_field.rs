@@ -5,11 +5,11 @@
 use std::collections::BTreeMap;
 use std::time::Instant;
 
-use adit_meshing::EdgeKind;
+use adit_meshing::{BoundaryEdge, EdgeKind};
 
 use super::boundary::traction_loads;
 use super::plan::{Boundary, InSituField};
-use crate::far_field::{FarField, Medium, interface_stiffness_on};
+use crate::far_field::{FarField, Medium, interface_stiffness_chains};
 use crate::model::{Model, traction};
 use crate::scene::Scene;
 
@@ -38,32 +38,44 @@ pub fn far_field(
         shear: young / (2.0 * (1.0 + poisson)),
         poisson,
     };
-    let outer: Vec<[u32; 2]> = (boundary.edges.iter())
+    let outer: Vec<&BoundaryEdge> = (boundary.edges.iter())
         .filter(|e| matches!(e.kind, EdgeKind::Region(_)))
-        .map(|e| e.nodes)
         .collect();
     anyhow::ensure!(
-        outer.len() <= MOST_ELEMENTS,
-        "region.far_field: the outer boundary is meshed into {} edges, more than the {} boundary \
-         elements a far field takes (its dense matrices grow as the square); coarsen \
-         zoning.edge_far or shrink the region",
+        outer.len() <= 2 * MOST_ELEMENTS,
+        "region.far_field: the outer boundary is meshed into {} edges, more than the {} nodes a \
+         far field takes (its stiffness grows as the square); coarsen zoning.edge_far or shrink \
+         the region",
         outer.len(),
+        2 * MOST_ELEMENTS
+    );
+    let chains = match spec.element_size {
+        None => outer.iter().map(|e| e.nodes.to_vec()).collect(),
+        Some(size) => element_chains(&outer, &model.nodes.pos, size),
+    };
+    anyhow::ensure!(
+        chains.len() <= MOST_ELEMENTS,
+        "region.far_field: {} boundary elements, more than the {} a far field takes (its dense \
+         matrices grow as the square); make element_size longer",
+        chains.len(),
         MOST_ELEMENTS
     );
     let mut local: BTreeMap<u32, usize> = BTreeMap::new();
     let mut nodes = Vec::new();
-    let edges: Vec<[usize; 2]> = (outer.iter())
-        .map(|e| {
-            e.map(|n| {
-                *local.entry(n).or_insert_with(|| {
-                    nodes.push(n);
-                    nodes.len() - 1
+    let chains: Vec<Vec<usize>> = (chains.iter())
+        .map(|c| {
+            (c.iter())
+                .map(|&n| {
+                    *local.entry(n).or_insert_with(|| {
+                        nodes.push(n);
+                        nodes.len() - 1
+                    })
                 })
-            })
+                .collect()
         })
         .collect();
     let points: Vec<[f64; 2]> = nodes.iter().map(|&n| model.nodes.pos[n as usize]).collect();
-    let stiffness = interface_stiffness_on(&points, &edges, medium)
+    let stiffness = interface_stiffness_chains(&points, &chains, medium)
         .map_err(|e| anyhow::anyhow!("region.{e}"))?;
     let mut loads = vec![[0.0; 2]; model.nodes.len()];
     let region_edges = (boundary.edges.iter()).filter(|e| matches!(e.kind, EdgeKind::Region(_)));
@@ -82,4 +94,78 @@ pub fn far_field(
         attached,
         assemble_s: start.elapsed().as_secs_f64(),
     }))
+}
+
+/// The outer boundary's edges `outer` (material on their left, so in a loop) grouped into
+/// elements of about `size` (m): the loop is cut into runs at the region's corners and where a
+/// joint reaches it (an edge's end node starts no edge: the next starts at its twin, the other
+/// block's node at the same place), and each run of length L into max(1, round(L / size))
+/// elements (at most one per edge), each ending at the edge end nearest its share of L. Each
+/// element is its chain of nodes from start to end.
+fn element_chains(outer: &[&BoundaryEdge], pos: &[[f64; 2]], size: f64) -> Vec<Vec<u32>> {
+    let by_start: BTreeMap<u32, usize> = (outer.iter().enumerate())
+        .map(|(i, e)| (e.nodes[0], i))
+        .collect();
+    let at = |n: u32| pos[n as usize];
+    let gap = |a: [f64; 2], b: [f64; 2]| (a[0] - b[0]).hypot(a[1] - b[1]);
+    // The edge after each, by its end node, or else the one starting nearest its end.
+    let next: Vec<usize> = (outer.iter())
+        .map(|e| match by_start.get(&e.nodes[1]) {
+            Some(&j) => j,
+            None => (0..outer.len())
+                .min_by(|&a, &b| {
+                    let end = at(e.nodes[1]);
+                    gap(at(outer[a].nodes[0]), end).total_cmp(&gap(at(outer[b].nodes[0]), end))
+                })
+                .unwrap_or(0),
+        })
+        .collect();
+    let breaks_after = |i: usize| {
+        let j = next[i];
+        outer[i].kind != outer[j].kind || outer[i].nodes[1] != outer[j].nodes[0]
+    };
+    let Some(first) = (0..outer.len()).find(|&i| breaks_after(i)).map(|i| next[i]) else {
+        return outer.iter().map(|e| e.nodes.to_vec()).collect();
+    };
+    // The runs, edge by edge from a break.
+    let mut runs: Vec<Vec<usize>> = vec![Vec::new()];
+    let mut i = first;
+    for _ in 0..outer.len() {
+        runs.last_mut().expect("a run").push(i);
+        if breaks_after(i) {
+            runs.push(Vec::new());
+        }
+        i = next[i];
+        if i == first {
+            break;
+        }
+    }
+    runs.retain(|r| !r.is_empty());
+    let mut chains = Vec::new();
+    for run in runs {
+        let lengths: Vec<f64> = (run.iter())
+            .map(|&e| gap(at(outer[e].nodes[0]), at(outer[e].nodes[1])))
+            .collect();
+        let total: f64 = lengths.iter().sum();
+        let count = ((total / size).round() as usize).clamp(1, run.len());
+        let mut chain = vec![outer[run[0]].nodes[0]];
+        let (mut walked, mut made) = (0.0, 0);
+        for (k, (&e, len)) in run.iter().zip(&lengths).enumerate() {
+            walked += len;
+            chain.push(outer[e].nodes[1]);
+            // End the element at this edge's end when it is the run's last, or when it is the
+            // end nearest the element's share of the run (the next lies farther past it), or when
+            // the edges left are just enough for the elements left.
+            let last = k + 1 == run.len();
+            let share = total * (made + 1) as f64 / count as f64;
+            let nearest = walked + 0.5 * lengths.get(k + 1).copied().unwrap_or(0.0) >= share;
+            let (edges_left, elements_left) = (run.len() - 1 - k, count - made - 1);
+            if last || (elements_left > 0 && (nearest || edges_left == elements_left)) {
+                chains.push(std::mem::take(&mut chain));
+                chain.push(outer[e].nodes[1]);
+                made += 1;
+            }
+        }
+    }
+    chains
 }
