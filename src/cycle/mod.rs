@@ -138,6 +138,7 @@ pub struct StageSeconds {
     pub detect: f64,
     pub contacts: f64,
     pub zones: f64,
+    /// The structural stage's, and the far field's (`region.far_field`) with it.
     pub supports: f64,
     pub motion: f64,
     pub output: f64,

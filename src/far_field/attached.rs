@@ -30,20 +30,16 @@ impl FarField {
             let u = disp[n as usize];
             *m = [u[0] - a[0], u[1] - a[1]];
         }
-        let n2 = 2 * self.nodes.len();
-        let (k, moved) = (&self.stiffness.k, &*moved);
+        let (k, moved) = (&self.stiffness, &*moved);
         out.par_iter_mut()
             .zip(self.in_situ.par_iter())
             .enumerate()
             .with_min_len(16)
             .for_each(|(i, (f, f0))| {
-                for d in 0..2 {
-                    let row = &k[(2 * i + d) * n2..(2 * i + d + 1) * n2];
-                    let ku: f64 = (row.iter().zip(moved.iter().flatten()))
-                        .map(|(k, u)| k * u)
-                        .sum();
-                    f[d] = f0[d] - ku;
-                }
+                *f = [
+                    f0[0] - k.row_times(i, 0, moved),
+                    f0[1] - k.row_times(i, 1, moved),
+                ];
             });
     }
 

@@ -4,19 +4,20 @@
 //! the polygon's nodes.
 //!
 //! Direct boundary element method (Brebbia & Dominguez 1992, ch. 5) with Kelvin's fundamental
-//! solution (`kelvin`) on straight discontinuous linear elements, one per polygon edge
-//! (`elements`): at each collocation point ξ,
+//! solution (`kelvin`) on straight discontinuous linear elements, one per polygon edge or one
+//! per straight run of several (`elements`): at each collocation point ξ,
 //! c_ij u_j(ξ) + ∫_Γ T_ij u_j dΓ = ∫_Γ U_ij t_j dΓ + C_i, over the interface alone, with C the
 //! displacement at infinity and the tractions carrying no net force, ∫_Γ t dΓ = 0 (the exterior
 //! problem's two conditions at infinity). Collocated at every element's two points,
 //! H u_c = G t_c + C and ∫ t = 0, solved for t_c = X u_c (faer's dense LU). The free C makes a
 //! translation of the interface cost no force, as it costs the infinite medium none, and frees
-//! the solution from the length unit of Kelvin's ln r (without it G is singular for an interface
-//! of one size, the degenerate scale, a circle of about a metre here). The polygon's nodes move the collocation points linearly
-//! (u_c = Q u, exact for the near field's straight edges), and the tractions, linear along each
-//! element, load the nodes through the edges' linear shape functions (f = P t_c, ∫ N_a φ_k ds).
-//! So K = P G⁻¹ H Q (N/m per m of node displacement): the far field pushes node a by −(K u)_a,
-//! u the displacements of the interface's nodes since the far field was attached.
+//! the solution from the length unit of Kelvin's ln r (without it G is singular for an
+//! interface of one size, the degenerate scale, a circle of about a metre here). The polygon's
+//! nodes move the collocation points linearly (u_c = Q u, exact for the near field's straight
+//! edges), and the tractions, linear along each element, load the nodes through the edges'
+//! linear shape functions (f = P t_c, ∫ N_a φ_k ds). So K = P X Q (N/m per m of node
+//! displacement): the far field pushes node a by −(K u)_a, u the displacements of the
+//! interface's nodes since the far field was attached.
 //!
 //! K is not symmetric (collocation); its symmetric part is what the implicit path can factorize.
 
@@ -45,16 +46,17 @@ impl InterfaceStiffness {
         self.k[(2 * a + d) * 2 * self.nodes + 2 * b + e]
     }
 
+    /// (K u) for component `d` of node `a`, the node displacements `u` (m), N/m.
+    pub fn row_times(&self, a: usize, d: usize, u: &[[f64; 2]]) -> f64 {
+        let n2 = 2 * self.nodes;
+        let row = &self.k[(2 * a + d) * n2..(2 * a + d + 1) * n2];
+        row.iter().zip(u.iter().flatten()).map(|(k, v)| k * v).sum()
+    }
+
     /// The force (N/m) the far field exerts on each node for the displacements `u` (m): −K u.
     pub fn forces(&self, u: &[[f64; 2]], out: &mut [[f64; 2]]) {
-        let n2 = 2 * self.nodes;
-        for (r, f) in out.iter_mut().enumerate() {
-            for (d, fd) in f.iter_mut().enumerate() {
-                let row = &self.k[(2 * r + d) * n2..(2 * r + d + 1) * n2];
-                *fd = -(row.iter().zip(u.iter().flatten()))
-                    .map(|(k, v)| k * v)
-                    .sum::<f64>();
-            }
+        for (a, f) in out.iter_mut().enumerate() {
+            *f = [-self.row_times(a, 0, u), -self.row_times(a, 1, u)];
         }
     }
 }

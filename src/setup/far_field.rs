@@ -1,6 +1,7 @@
 //! The far field of `region.far_field` attached to a model: the interface is the region's outer
-//! boundary as meshed (one boundary element per boundary edge of the zones), its stiffness
-//! condensed once (`far_field::interface_stiffness_on`) and reused at every stage.
+//! boundary as meshed (one boundary element per boundary edge of the zones, or per straight run
+//! of them about `element_size` long), its stiffness condensed once
+//! (`far_field::interface_stiffness_chains`) and reused at every stage.
 
 use std::collections::BTreeMap;
 use std::time::Instant;
