@@ -130,3 +130,27 @@ fn a_model_at_rest_stays_at_rest() {
         .fold(0.0, f64::max);
     assert!(most < 1e-9, "{most} m");
 }
+
+/// Without a fixed point a model with a far field floats (a translation costs the infinite
+/// medium nothing): explicitly it settles all the same, implicitly it stops naming the block
+/// nothing holds and the far field as the reason.
+#[test]
+fn a_floating_far_field_model_is_named_implicitly() {
+    for method in ["explicit", "implicit"] {
+        let mut sc = staged_with_far_field(method);
+        sc.boundary.clear();
+        sc.validate().unwrap();
+        let out = std::env::temp_dir().join(format!("adit-test-far-float-{method}"));
+        let _ = std::fs::remove_dir_all(&out);
+        let r = adit::run_scene(&sc, &out, &mut Quiet).unwrap();
+        if method == "explicit" {
+            assert_eq!(r.summary.status, "converged");
+        } else {
+            let reason = r.summary.reason.unwrap_or_default();
+            assert!(
+                reason.contains("held by nothing") && reason.contains("far field"),
+                "{reason}"
+            );
+        }
+    }
+}

@@ -286,10 +286,16 @@ pub fn solve_driven(
         Err(format!(
             "implicit: {} block(s) held by nothing, neither a fixed node nor a chain of contacts \
              to one (block {}{}): a mechanism the matrix cannot solve; fix them in `boundary`, or \
-             solve explicitly",
+             solve explicitly{}",
             loose.len(),
             names.join(", "),
-            if loose.len() > 10 { ", …" } else { "" }
+            if loose.len() > 10 { ", …" } else { "" },
+            if model.far_field.is_some() {
+                " (the far field, region.far_field, holds no translation, which costs the \
+                 infinite medium nothing: fix a point or two, as `{ \"at\": …, \"fix\": … }`)"
+            } else {
+                ""
+            }
         ))
     };
     let (t, before) = (Instant::now(), cost.assemble_s + cost.factorize_s);
