@@ -115,20 +115,30 @@ fn what_a_far_field_cannot_do_is_refused() {
 
 /// A model at rest in its in-situ stress stays at rest with the far field: nothing excavated,
 /// the in-situ traction it carries balances the zones' stress, and its response is to
-/// displacement only (the staged tunnel's box without its tunnel or stages).
+/// displacement only (the staged tunnel's box without its tunnel or stages); under gravity too,
+/// the in-situ stress growing with depth as the rock's weight (ρ g = 24 525 Pa/m, k0 = 0.5), which
+/// the far field's traction carries on the boundary.
 #[test]
 fn a_model_at_rest_stays_at_rest() {
-    let mut sc = staged_with_far_field("explicit");
-    sc.excavations.clear();
-    sc.stages.clear();
-    sc.validate().unwrap();
-    let out = std::env::temp_dir().join("adit-test-far-rest");
-    let _ = std::fs::remove_dir_all(&out);
-    let r = adit::run_scene(&sc, &out, &mut Quiet).unwrap();
-    let most = (r.built.model.nodes.disp.iter())
-        .map(|u| u[0].hypot(u[1]))
-        .fold(0.0, f64::max);
-    assert!(most < 1e-9, "{most} m");
+    for gravity in [false, true] {
+        let mut sc = staged_with_far_field("explicit");
+        sc.excavations.clear();
+        sc.stages.clear();
+        if gravity {
+            sc.gravity = [0.0, -9.81];
+            sc.in_situ.gradient.syy = 2500.0 * 9.81;
+            sc.in_situ.gradient.sxx = 0.5 * 2500.0 * 9.81;
+            sc.in_situ.sxx = -5e6;
+        }
+        sc.validate().unwrap();
+        let out = std::env::temp_dir().join(format!("adit-test-far-rest-{gravity}"));
+        let _ = std::fs::remove_dir_all(&out);
+        let r = adit::run_scene(&sc, &out, &mut Quiet).unwrap();
+        let most = (r.built.model.nodes.disp.iter())
+            .map(|u| u[0].hypot(u[1]))
+            .fold(0.0, f64::max);
+        assert!(most < 1e-9, "gravity {gravity}: {most} m");
+    }
 }
 
 /// Without a fixed point a model with a far field floats (a translation costs the infinite
