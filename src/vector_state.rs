@@ -19,10 +19,3 @@ pub(crate) fn clear_upper_vector_state() {
         unsafe { std::arch::x86_64::_mm256_zeroupper() }
     }
 }
-
-/// `clear_upper_vector_state` on every rayon worker and this thread: after faer's dense
-/// factorizations, which run on the global pool (`far_field`, once per model).
-pub(crate) fn clear_upper_vector_state_everywhere() {
-    rayon::broadcast(|_| clear_upper_vector_state());
-    clear_upper_vector_state();
-}

@@ -25,8 +25,7 @@ mod attached;
 mod elements;
 mod kelvin;
 
-use faer::Mat;
-use faer::linalg::solvers::Solve;
+use faer::{Conj, Mat, Par};
 
 pub use attached::FarField;
 use elements::{COLLOCATION, Element};
@@ -152,8 +151,8 @@ pub fn interface_stiffness_chains(
             }
         }
     }
-    // [G 1; L 0] [t_c; C] = [H u_c; 0], L_(i, (f,k,i)) = ∫ φ_k ds = L_f / 2; faer's dense LU
-    // runs on the global pool, whose vector registers are cleared after it (`vector_state`).
+    // [G 1; L 0] [t_c; C] = [H u_c; 0], L_(i, (f,k,i)) = ∫ φ_k ds = L_f / 2, by faer's dense LU
+    // on this thread (`solve_dense`).
     let mut a = Mat::<f64>::zeros(size + 2, size + 2);
     let mut rhs = Mat::<f64>::zeros(size + 2, size);
     for r in 0..size {
@@ -171,8 +170,7 @@ pub fn interface_stiffness_chains(
         }
     }
     drop((g, h));
-    a.partial_piv_lu().solve_in_place(rhs.as_mut());
-    crate::vector_state::clear_upper_vector_state_everywhere();
+    solve_dense(a, rhs.as_mut())?;
     let h = rhs;
     // K = P X Q.
     // The collocation point at η (the fraction w = (1 + η)/2 along the element) moves with the
@@ -238,6 +236,50 @@ pub fn interface_stiffness_chains(
         }
     }
     Ok(InterfaceStiffness { nodes: n, k })
+}
+
+/// Solve `a` x = `rhs` in place by faer's LU with partial pivoting, on the calling thread: the
+/// same rounding on any number of threads (a parallel LU's blocking follows the thread count),
+/// as the implicit path's factorizations (`implicit::factor`); an error if its scratch cannot be
+/// had.
+fn solve_dense(mut a: Mat<f64>, rhs: faer::MatMut<'_, f64>) -> Result<(), String> {
+    use faer::dyn_stack::{MemBuffer, MemStack};
+    use faer::linalg::lu::partial_pivoting::{factor, solve};
+    let (m, par) = (a.nrows(), Par::Seq);
+    let scratch = |req| {
+        MemBuffer::try_new(req).map_err(|e| format!("far field: the dense solve's scratch: {e:?}"))
+    };
+    let (mut fwd, mut bwd) = (vec![0usize; m], vec![0usize; m]);
+    let mut work = scratch(factor::lu_in_place_scratch::<usize, f64>(
+        m,
+        m,
+        par,
+        Default::default(),
+    ))?;
+    let (_, perm) = factor::lu_in_place(
+        a.as_mut(),
+        &mut fwd,
+        &mut bwd,
+        par,
+        MemStack::new(&mut work),
+        Default::default(),
+    );
+    let mut work = scratch(solve::solve_in_place_scratch::<usize, f64>(
+        m,
+        rhs.ncols(),
+        par,
+    ))?;
+    solve::solve_in_place_with_conj(
+        a.as_ref(),
+        a.as_ref(),
+        perm,
+        Conj::No,
+        rhs,
+        par,
+        MemStack::new(&mut work),
+    );
+    crate::vector_state::clear_upper_vector_state();
+    Ok(())
 }
 
 /// Where each node of `chain` sits along `element` (fractions of its length, 0 at its start and

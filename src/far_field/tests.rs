@@ -254,3 +254,18 @@ fn elements_over_several_nodes_store_the_work_of_their_ends() {
     let e = interface_stiffness_chains(&bent, &chains, medium(0.3)).unwrap_err();
     assert!(e.contains("element 0 is not straight"), "{e}");
 }
+
+/// The same interface gives the same K, bit for bit, on one thread and on two (the dense solve
+/// runs on the calling thread; the forces' rows each sum in order).
+#[test]
+fn the_stiffness_does_not_depend_on_the_thread_count() {
+    let points = circle(96, 3.0, [1.0, 2.0]);
+    let on = |threads: usize| {
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap();
+        pool.install(|| interface_stiffness(&points, medium(0.3)).unwrap().k)
+    };
+    assert!(on(1) == on(2));
+}

@@ -15,7 +15,8 @@ use crate::model::{Model, traction};
 use crate::scene::Scene;
 
 /// Most interface elements a far field takes: its dense matrices hold (4n + 2)² values twice
-/// while it is condensed, 1.0 GB at this many (measured: 1 600 elements took 15 s and 0.74 GB).
+/// while it is condensed, 1.0 GB at this many (measured: 1 600 elements took 17 s on one thread
+/// and 0.74 GB).
 pub const MOST_ELEMENTS: usize = 2_000;
 
 /// The far field of `scene` on `model` (None without `region.far_field`); an error naming the

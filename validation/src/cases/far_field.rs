@@ -180,7 +180,7 @@ impl Case for FarField {
         let _ = writeln!(
             md,
             "Condensing a far field of n elements (a circle's; `far_field::interface_stiffness`, \
-             faer's dense LU on the run's threads): the dense solve grows as n³, its matrices as n².\n\n\
+             faer's dense LU on one thread): the dense solve grows as n³, its matrices as n².\n\n\
              | elements | seconds | matrices MB |\n|---:|---:|---:|"
         );
         for (n, s, b) in &costs {
