@@ -177,4 +177,31 @@ mod tests {
         }
         assert!(s.normal < -1e6);
     }
+
+    /// The trial from a commit at rest takes one whole increment: the joint slips past its limit
+    /// and dilates by the plastic slip alone, (ks Δus − limit)/ks · tan ψ, where `update` counts
+    /// the whole Δus; its shear and flags are `update`'s.
+    #[test]
+    fn the_trial_dilates_by_the_plastic_slip() {
+        let law = CoulombSlip {
+            tan_dilation: tan_deg(10.0),
+            cohesion: 0.0,
+            ..joint()
+        };
+        let start = JointState {
+            normal: -1e6,
+            initial_normal: -1e6,
+            flags: FAILED,
+            ..Default::default()
+        };
+        let ds = 1e-3;
+        let (mut t, mut u) = (start, start);
+        law.trial(&mut t, 0.0, ds);
+        law.update(&mut u, 0.0, ds);
+        let limit = 1e6 * law.tan_friction;
+        let plastic = (law.shear_stiffness * ds - limit) / law.shear_stiffness;
+        assert!((t.dilation - plastic * law.tan_dilation).abs() < 1e-15, "{t:?}");
+        assert!((u.dilation - ds * law.tan_dilation).abs() < 1e-15, "{u:?}");
+        assert_eq!((t.shear, t.flags), (u.shear, u.flags));
+    }
 }
