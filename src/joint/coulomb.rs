@@ -200,7 +200,10 @@ mod tests {
         law.update(&mut u, 0.0, ds);
         let limit = 1e6 * law.tan_friction;
         let plastic = (law.shear_stiffness * ds - limit) / law.shear_stiffness;
-        assert!((t.dilation - plastic * law.tan_dilation).abs() < 1e-15, "{t:?}");
+        assert!(
+            (t.dilation - plastic * law.tan_dilation).abs() < 1e-15,
+            "{t:?}"
+        );
         assert!((u.dilation - ds * law.tan_dilation).abs() < 1e-15, "{u:?}");
         assert_eq!((t.shear, t.flags), (u.shear, u.flags));
     }
