@@ -143,6 +143,10 @@ fn element_chains(outer: &[&BoundaryEdge], pos: &[[f64; 2]], size: f64) -> Vec<V
         }
     }
     runs.retain(|r| !r.is_empty());
+    // A walk that missed edges (the loop not closing through them) keeps one element per edge.
+    if runs.iter().map(Vec::len).sum::<usize>() != outer.len() {
+        return outer.iter().map(|e| e.nodes.to_vec()).collect();
+    }
     let mut chains = Vec::new();
     for run in runs {
         let lengths: Vec<f64> = (run.iter())
