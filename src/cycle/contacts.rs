@@ -83,22 +83,18 @@ impl Cycle {
                     let [j, k] = blocks.edges[e as usize];
                     let n = contact_normal(blocks, &x, i, e, corner);
                     let t = [-n[1], n[0]];
-                    let relative = |v: &dyn Fn(u32) -> [f64; 2]| {
-                        let (vi, vj, vk) = (v(i), v(j), v(k));
-                        [
-                            vi[0] - (1.0 - xi) * vj[0] - xi * vk[0],
-                            vi[1] - (1.0 - xi) * vj[1] - xi * vk[1],
-                        ]
-                    };
-                    let vr = relative(&|n| vel[n as usize]);
+                    let vr = relative(xi, [i, j, k].map(|n| vel[n as usize]));
                     let mut dn = (vr[0] * n[0] + vr[1] * n[1]) * dt;
                     let mut ds = (vr[0] * t[0] + vr[1] * t[1]) * dt;
                     if let Some(from) = &commit {
                         *state = from.state[c];
-                        let since = relative(&|n| {
-                            let (u, u0) = (disp[n as usize], from.disp[n as usize]);
-                            [u[0] - u0[0], u[1] - u0[1]]
-                        });
+                        let since = relative(
+                            xi,
+                            [i, j, k].map(|n| {
+                                let (u, u0) = (disp[n as usize], from.disp[n as usize]);
+                                [u[0] - u0[0], u[1] - u0[1]]
+                            }),
+                        );
                         dn += since[0] * n[0] + since[1] * n[1];
                         ds += since[0] * t[0] + since[1] * t[1];
                     }
@@ -126,6 +122,16 @@ impl Cycle {
                 },
             );
     }
+}
+
+/// A contact's relative value (velocity or displacement) of its node i against the point ξ of
+/// its edge (j, k): v_i − (1 − ξ) v_j − ξ v_k, from `v` = [v_i, v_j, v_k].
+#[inline]
+fn relative(xi: f64, [vi, vj, vk]: [[f64; 2]; 3]) -> [f64; 2] {
+    [
+        vi[0] - (1.0 - xi) * vj[0] - xi * vk[0],
+        vi[1] - (1.0 - xi) * vj[1] - xi * vk[1],
+    ]
 }
 
 /// What the contacts' joint laws take their trial from (the implicit path, `contact_forces`):
