@@ -154,6 +154,7 @@ fn build_solve_write(
     let mut analysis = implicit::Analysis::default();
     for (i, stage) in plan.stages.iter().enumerate() {
         staging.apply(stage, model, plan);
+        writer.set_stage(i, &stage.name);
         let mut solver = Solver::new(model, &stage.solve, scene.output.every);
         ensure_time_step(&solver)?;
         let spec = &stage.solve;

@@ -62,6 +62,7 @@ fn run_writes_every_contract_file() {
         ("block", 1),
         ("material", 1),
         ("state", 1),
+        ("recovery_error", 1),
     ] {
         assert!(
             cell.contains(&(name.to_string(), per * zones)),
@@ -69,9 +70,15 @@ fn run_writes_every_contract_file() {
         );
     }
     let point = sizes(&piece.data.point);
-    for name in ["displacement", "velocity"] {
+    for (name, per) in [
+        ("displacement", 3),
+        ("velocity", 3),
+        ("stress_nodal", 9),
+        ("sigma1_nodal", 1),
+        ("sigma3_nodal", 1),
+    ] {
         assert!(
-            point.contains(&(name.to_string(), 3 * nodes)),
+            point.contains(&(name.to_string(), per * nodes)),
             "point data {name}: {point:?}"
         );
     }
@@ -123,7 +130,9 @@ fn jointed_tunnel_converges_and_writes_contacts() {
     );
     let pvd = std::fs::read_to_string(dir.join("jointed_tunnel.pvd")).unwrap();
     assert!(
-        pvd.contains("part=\"1\" file=\"jointed_tunnel_contacts_0000.vtu\""),
+        pvd.contains(
+            "part=\"1\" name=\"contacts\" stage=\"solve\" file=\"jointed_tunnel_contacts_0000.vtu\""
+        ),
         "{pvd}"
     );
     check_with_meshio(
@@ -135,6 +144,7 @@ fn jointed_tunnel_converges_and_writes_contacts() {
         &dir.join("jointed_tunnel_contacts_0000.vtu"),
         r.summary.contacts,
     );
+    check_joints_with_meshio(&dir.join("jointed_tunnel_joints_0000.vtu"));
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
@@ -199,11 +209,13 @@ m = meshio.read(sys.argv[1])
 assert m.points.shape == ({nodes}, 3), m.points.shape
 tri = [c for c in m.cells if c.type == "triangle"]
 assert len(tri) == 1 and tri[0].data.shape == ({zones}, 3)
-for name, comps in [("stress", 9), ("sigma1", 1), ("sigma3", 1), ("block", 1), ("material", 1), ("state", 1)]:
+for name, comps in [("stress", 9), ("sigma1", 1), ("sigma3", 1), ("block", 1), ("material", 1), ("state", 1), ("recovery_error", 1)]:
     a = m.cell_data[name][0]
     assert a.shape[0] == {zones} and (a.size // {zones}) == comps, (name, a.shape)
 for name in ["displacement", "velocity"]:
     assert m.point_data[name].shape == ({nodes}, 3), name
+assert m.point_data["stress_nodal"].shape == ({nodes}, 9)
+assert "material: rock" in m.field_data, list(m.field_data)
 print("meshio ok")
 "#
     );
@@ -251,6 +263,23 @@ print("meshio ok")
 "#
     );
     run_python(&script, path);
+}
+
+/// Read a joints file with meshio: line cells with the joints' cell data, some of them closed
+/// and compressed (the jointed tunnel's joints carry the in-situ stress).
+fn check_joints_with_meshio(path: &Path) {
+    let script = r#"
+import sys, meshio
+m = meshio.read(sys.argv[1])
+lines = [c for c in m.cells if c.type == "line"]
+assert len(lines) == 1 and lines[0].data.shape[0] > 100, [c.type for c in m.cells]
+n = lines[0].data.shape[0]
+for name in ["normal_stress", "shear_stress", "shear_displacement", "aperture", "state", "material", "block"]:
+    assert m.cell_data[name][0].shape[0] == n, name
+assert (m.cell_data["normal_stress"][0] < 0).mean() > 0.9
+print("meshio ok")
+"#;
+    run_python(script, path);
 }
 
 /// Run a Python check on `path`. Required when `ADIT_REQUIRE_MESHIO=1` (as in `.ci/run`, which
@@ -347,4 +376,71 @@ fn an_unwritable_output_folder_fails_first_naming_it() {
         "{err}"
     );
     std::fs::remove_file(&file).unwrap();
+}
+
+/// After its stage, an excavation's rock is gone from the zone files (it was drawn as stress-free
+/// triangles inside the hole), and each file names its stage and the materials.
+#[test]
+fn excavated_zones_leave_the_zone_files() {
+    let mut s = small_scene();
+    s.output.every = 0;
+    s.stages = ["in-situ", "excavate"]
+        .iter()
+        .map(|name| {
+            let excavate: Vec<&str> = if *name == "excavate" {
+                vec!["tunnel"]
+            } else {
+                vec![]
+            };
+            serde_json::from_value(serde_json::json!({ "name": name, "excavate": excavate }))
+                .unwrap()
+        })
+        .collect();
+    let dir = out_dir("excavated");
+    let r = run_scene(&s, &dir, &mut Quiet).unwrap();
+    let grid = |step: usize| {
+        let path = dir.join(format!("kirsch_zones_{step:04}.vtu"));
+        let text = std::fs::read_to_string(&path).unwrap();
+        let vtk = Vtk::import(&path).unwrap();
+        let DataSet::UnstructuredGrid { pieces, .. } = vtk.data else {
+            panic!("not an unstructured grid")
+        };
+        let Piece::Inline(piece) = pieces[0].clone() else {
+            panic!("piece not inline")
+        };
+        (text, *piece)
+    };
+    let materials = |piece: &vtkio::model::UnstructuredGridPiece| -> Vec<i64> {
+        piece
+            .data
+            .cell
+            .iter()
+            .find_map(|a| match a {
+                Attribute::DataArray(d) if d.name == "material" => {
+                    d.data.clone().cast_into::<i64>()
+                }
+                _ => None,
+            })
+            .unwrap()
+    };
+    let (before_text, before) = grid(0);
+    let (after_text, after) = grid(1);
+    assert_eq!(before.cells.types.len(), r.summary.zones);
+    let null = 1; // `rock`, then the staged scene's null law `excavated`
+    assert!(before_text.contains("Name=\"material: excavated\""));
+    assert!(!materials(&before).contains(&null));
+    let removed = r.summary.zones - after.cells.types.len();
+    assert!(removed > 50, "{removed} zones left out");
+    assert!(!materials(&after).contains(&null));
+    assert!(
+        before_text.contains("Name=\"stage: in-situ\""),
+        "{before_text:.2000}"
+    );
+    assert!(after_text.contains("Name=\"stage: excavate\""));
+    let pvd = std::fs::read_to_string(dir.join("kirsch.pvd")).unwrap();
+    assert!(
+        pvd.contains("stage=\"excavate\" file=\"kirsch_zones_0001.vtu\""),
+        "{pvd}"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
 }

@@ -1,9 +1,12 @@
 //! Results on disk, as the output contract of `design.md`: a ParaView collection (`.pvd`) over
-//! zone grids (`_zones_NNNN.vtu`), contacts and supports (`_contacts_`, `_supports_NNNN.vtu`),
+//! zone grids (`_zones_NNNN.vtu`), contacts, joints and supports (`_contacts_`, `_joints_`,
+//! `_supports_NNNN.vtu`),
 //! `history.csv` and `summary.json`, each written atomically (`history.csv` is also written row by
 //! row while a run goes, so that a killed run keeps it; the run's `summary.json` says `running`).
 
 pub mod atomic;
+pub mod joints_vtu;
+pub mod recovery;
 pub mod supports_vtu;
 pub mod vtu;
 
@@ -21,9 +24,11 @@ use atomic::write_atomic;
 pub struct OutputWriter {
     pub(crate) dir: PathBuf,
     pub name: String,
-    /// (timestep value, file names: zones, then contacts when there are blocks, then supports when
-    /// there are any) of each step so far.
-    steps: Vec<(f64, Vec<String>)>,
+    /// Each step so far: its timestep value, its stage and its file names (zones, then contacts
+    /// and joints when there are blocks, then supports when there are any).
+    steps: Vec<Step>,
+    /// The stage the next steps belong to and its number (`set_stage`; `None` before the first).
+    stage: Option<(usize, String)>,
     /// Whether rows go to `history.csv` as the run goes (`for_run`, until `write_history`).
     live_history: bool,
     /// That file, from the first row on, flushed at each row, so that a killed run keeps its
@@ -40,6 +45,7 @@ impl OutputWriter {
             dir: dir.to_path_buf(),
             name: name.to_string(),
             steps: Vec::new(),
+            stage: None,
             live_history: false,
             history: None,
         })
@@ -97,31 +103,49 @@ impl OutputWriter {
         })
     }
 
-    /// Write the zone grid of this step and refresh the collection; `timestep` is the cumulative
+    /// Label the steps written from now on with stage `index` of the run, named `name` (their
+    /// files' field data and the collection's `stage` of each data set).
+    pub fn set_stage(&mut self, index: usize, name: &str) {
+        self.stage = Some((index, name.to_string()));
+    }
+
+    /// Write the grids of this step and refresh the collection; `timestep` is the cumulative
     /// cycle count.
     pub fn write_step(&mut self, model: &Model, timestep: f64) -> anyhow::Result<()> {
         let step = self.steps.len();
-        let zones = format!("{}_zones_{step:04}.vtu", self.name);
-        let xml = vtu::zones_vtu(model)?;
-        write_atomic(&self.dir.join(&zones), |w| w.write_all(&xml))?;
-        let mut files = vec![zones];
+        let stage = self.stage.as_ref().map(|(i, n)| (*i, n.as_str()));
+        let labels = vtu::Labels::of(model, stage);
+        let mut files = Vec::new();
+        let mut write = |kind: &str, xml: Vec<u8>| -> std::io::Result<()> {
+            let file = format!("{}_{kind}_{step:04}.vtu", self.name);
+            write_atomic(&self.dir.join(&file), |w| w.write_all(&xml))?;
+            files.push(file);
+            Ok(())
+        };
+        write("zones", vtu::zones_vtu(model, &labels)?)?;
         if model.blocks.len() > 1 {
-            let contacts = format!("{}_contacts_{step:04}.vtu", self.name);
-            let xml = vtu::contacts_vtu(model)?;
-            write_atomic(&self.dir.join(&contacts), |w| w.write_all(&xml))?;
-            files.push(contacts);
+            write("contacts", vtu::contacts_vtu(model, &labels)?)?;
+            write("joints", joints_vtu::joints_vtu(model, &labels)?)?;
         }
         if !model.supports.is_empty() {
-            let supports = format!("{}_supports_{step:04}.vtu", self.name);
-            let xml = supports_vtu::supports_vtu(model)?;
-            write_atomic(&self.dir.join(&supports), |w| w.write_all(&xml))?;
-            files.push(supports);
+            write("supports", supports_vtu::supports_vtu(model, &labels)?)?;
         }
-        self.steps.push((timestep, files));
+        self.steps.push(Step {
+            timestep,
+            stage: self
+                .stage
+                .as_ref()
+                .map_or(String::new(), |(_, n)| n.clone()),
+            files,
+        });
         self.write_pvd()?;
         Ok(())
     }
 
+    /// The collection: one data set per file of each step, its `part` and `name` the file's kind
+    /// (0 `zones`, then `contacts`, `joints`, `supports` as present: ParaView names its blocks so)
+    /// and its `stage` the step's stage (an attribute readers pass over; the files' field data
+    /// `stage` carries it into ParaView).
     fn write_pvd(&self) -> std::io::Result<()> {
         let path = self.dir.join(format!("{}.pvd", self.name));
         write_atomic(&path, |w| {
@@ -131,11 +155,14 @@ impl OutputWriter {
                 "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">"
             )?;
             writeln!(w, "  <Collection>")?;
-            for (t, files) in &self.steps {
-                for (part, file) in files.iter().enumerate() {
+            for s in &self.steps {
+                let stage = xml_attribute(&s.stage);
+                for (part, file) in s.files.iter().enumerate() {
+                    let kind = file_kind(file);
                     writeln!(
                         w,
-                        "    <DataSet timestep=\"{t}\" group=\"\" part=\"{part}\" file=\"{file}\"/>"
+                        "    <DataSet timestep=\"{}\" group=\"\" part=\"{part}\" name=\"{kind}\" stage=\"{stage}\" file=\"{file}\"/>",
+                        s.timestep
                     )?;
                 }
             }
@@ -191,6 +218,28 @@ impl OutputWriter {
             w.write_all(text.as_bytes())
         })
     }
+}
+
+/// One output step of the collection.
+struct Step {
+    timestep: f64,
+    stage: String,
+    files: Vec<String>,
+}
+
+/// The kind of a grid file `<name>_<kind>_NNNN.vtu`: `zones`, `contacts`, `joints` or `supports`.
+fn file_kind(file: &str) -> &str {
+    let stem = file.strip_suffix(".vtu").unwrap_or(file);
+    let stem = stem.rsplit_once('_').map_or(stem, |(s, _)| s);
+    stem.rsplit_once('_').map_or(stem, |(_, k)| k)
+}
+
+/// `text` as an XML attribute value (its `&`, `<`, `>` and `"` escaped).
+pub(crate) fn xml_attribute(text: &str) -> String {
+    text.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+        .replace('"', "&quot;")
 }
 
 /// A figure for `summary.json`: `Some` when finite. A run that stops before measuring something
@@ -303,7 +352,7 @@ fn history_row(w: &mut dyn Write, r: &HistoryRow) -> std::io::Result<()> {
 }
 
 /// Whether `file` is an output of a run of the scene `name` (or such a file's temporary):
-/// `<name>.pvd`, `<name>_zones_NNNN.vtu` and its contacts and supports siblings, `history.csv`,
+/// `<name>.pvd`, `<name>_zones_NNNN.vtu` and its contacts, joints and supports siblings, `history.csv`,
 /// `ground_reaction.csv`, `summary.json`.
 fn is_run_output(file: &str, name: &str) -> bool {
     let file = match file.strip_prefix('.').and_then(|f| f.strip_suffix(".tmp")) {
@@ -319,11 +368,13 @@ fn is_run_output(file: &str, name: &str) -> bool {
     if rest == ".pvd" {
         return true;
     }
-    ["_zones_", "_contacts_", "_supports_"].iter().any(|kind| {
-        rest.strip_prefix(kind)
-            .and_then(|r| r.strip_suffix(".vtu"))
-            .is_some_and(|n| n.len() == 4 && n.bytes().all(|b| b.is_ascii_digit()))
-    })
+    ["_zones_", "_contacts_", "_joints_", "_supports_"]
+        .iter()
+        .any(|kind| {
+            rest.strip_prefix(kind)
+                .and_then(|r| r.strip_suffix(".vtu"))
+                .is_some_and(|n| n.len() == 4 && n.bytes().all(|b| b.is_ascii_digit()))
+        })
 }
 
 /// A CSV field (RFC 4180): quoted, with quotes doubled, when it holds a comma, a quote or a line
@@ -367,6 +418,7 @@ mod tests {
             "tunnel.pvd",
             "tunnel_zones_0002.vtu",
             "tunnel_contacts_0000.vtu",
+            "tunnel_joints_0001.vtu",
             "tunnel_supports_0013.vtu",
             "history.csv",
             "summary.json",

@@ -6,11 +6,11 @@
 
 use vtkio::model::{Attribute, Attributes, CellType, Cells, UnstructuredGridPiece, VertexNumbers};
 
-use super::vtu::xml_of;
+use super::vtu::{Labels, xml_of};
 use crate::model::Model;
 
 /// The supports of `model` as XML text.
-pub fn supports_vtu(model: &Model) -> Result<Vec<u8>, vtkio::Error> {
+pub fn supports_vtu(model: &Model, labels: &Labels) -> Result<Vec<u8>, vtkio::Error> {
     let (c, l) = (&model.supports.cables, &model.supports.liners);
     let nodes = &model.nodes;
     let rock = |n: u32| {
@@ -88,5 +88,5 @@ pub fn supports_vtu(model: &Model) -> Result<Vec<u8>, vtkio::Error> {
             ],
         },
     };
-    xml_of(piece)
+    xml_of(piece, labels)
 }

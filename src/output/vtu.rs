@@ -1,14 +1,40 @@
 //! Zone results as a binary XML unstructured grid (`.vtu`, vtkio): one triangle cell per zone (and
-//! per outline triangle of a rigid or simple block) at
-//! its original position, with stress, principal stresses, block, material and state per cell and
-//! displacement and velocity per point (the output contract of `design.md`).
+//! per outline triangle of a rigid or simple block) of the blocks not excavated, at its original
+//! position, with stress, principal stresses, block, material, state and the recovery's error
+//! indicator per cell, and displacement, velocity and the recovered nodal stress per point (the
+//! output contract of `design.md`); each file's field data names its stage and the materials.
 
 use vtkio::model::{
     Attribute, Attributes, ByteOrder, CellType, Cells, DataSet, UnstructuredGridPiece, Version,
     VertexNumbers, Vtk,
 };
 
+use super::{recovery, xml_attribute};
 use crate::model::{Model, Stress};
+
+/// What every grid file of a step says in its field data: its stage, and the names the integer
+/// `material` columns stand for.
+#[derive(Debug, Clone, Copy)]
+pub struct Labels<'a> {
+    /// The stage the step ends or belongs to, with its number in the run's order (`None`
+    /// before the first).
+    pub stage: Option<(usize, &'a str)>,
+    /// Zone material names, indexed by the `material` cell data.
+    pub materials: &'a [String],
+    /// Joint material names, indexed by the joints' and contacts' `material` data.
+    pub joint_materials: &'a [String],
+}
+
+impl<'a> Labels<'a> {
+    /// The labels of `model` at stage `stage`.
+    pub fn of(model: &'a Model, stage: Option<(usize, &'a str)>) -> Labels<'a> {
+        Labels {
+            stage,
+            materials: &model.materials.zone_names,
+            joint_materials: &model.materials.joint_names,
+        }
+    }
+}
 
 /// Principal stresses (Pa, tension positive) as (σ1, σ3): σ1 the most compressive (algebraically
 /// smallest) and σ3 the least, among the in-plane pair (c ∓ r, c = (σxx+σyy)/2,
@@ -27,35 +53,55 @@ struct Cell {
     block: u32,
     material: u32,
     state: u8,
+    /// The recovery's error indicator, Pa (0 for an outline triangle, whose stress is uniform).
+    error: f64,
 }
 
-/// The zones, then the rigid and simple blocks' outline triangles.
-fn cells(model: &Model) -> impl Iterator<Item = Cell> + '_ {
+/// The zones, then the rigid and simple blocks' outline triangles, of the blocks not excavated;
+/// `error`: each zone's indicator.
+fn cells<'a>(model: &'a Model, error: &'a [f64]) -> impl Iterator<Item = Cell> + 'a {
     let (z, b) = (&model.zones, &model.bodies);
-    let zones = (0..z.len()).map(move |i| Cell {
-        nodes: z.nodes[i],
-        stress: z.stress[i],
-        block: z.block[i],
-        material: z.material[i].0,
-        state: z.state[i],
-    });
-    let outlines = b.outline.iter().zip(&b.outline_body).map(move |(t, &k)| {
-        let k = k as usize;
-        Cell {
-            nodes: *t,
-            stress: b.stress[k],
-            block: b.block[k],
-            material: b.material[k].0,
-            state: b.state[k],
-        }
-    });
+    let live = |block: u32| !model.blocks.is_removed(block as usize);
+    let zones = (0..z.len())
+        .filter(move |&i| live(z.block[i]))
+        .map(move |i| Cell {
+            nodes: z.nodes[i],
+            stress: z.stress[i],
+            block: z.block[i],
+            material: z.material[i].0,
+            state: z.state[i],
+            error: error[i],
+        });
+    let outlines = b
+        .outline
+        .iter()
+        .zip(&b.outline_body)
+        .filter(move |(_, k)| live(b.block[**k as usize]))
+        .map(move |(t, &k)| {
+            let k = k as usize;
+            Cell {
+                nodes: *t,
+                stress: b.stress[k],
+                block: b.block[k],
+                material: b.material[k].0,
+                state: b.state[k],
+                error: 0.0,
+            }
+        });
     zones.chain(outlines)
 }
 
+/// The full 3×3 tensor (9 components, row by row) of an in-plane stress with its σzz.
+fn tensor(s: &Stress) -> [f64; 9] {
+    [s[0], s[3], 0.0, s[3], s[1], 0.0, 0.0, 0.0, s[2]]
+}
+
 /// The zone grid of `model` as XML text.
-pub fn zones_vtu(model: &Model) -> Result<Vec<u8>, vtkio::Error> {
+pub fn zones_vtu(model: &Model, labels: &Labels) -> Result<Vec<u8>, vtkio::Error> {
     let nodes = &model.nodes;
-    let cells: Vec<Cell> = cells(model).collect();
+    let nodal = recovery::nodal_stress(model);
+    let error = recovery::indicator(model, &nodal);
+    let cells: Vec<Cell> = cells(model, &error).collect();
     let points: Vec<f64> = nodes.pos.iter().flat_map(|p| [p[0], p[1], 0.0]).collect();
     let connectivity: Vec<u64> = cells
         .iter()
@@ -63,14 +109,9 @@ pub fn zones_vtu(model: &Model) -> Result<Vec<u8>, vtkio::Error> {
         .map(|n| n as u64)
         .collect();
     let offsets: Vec<u64> = (1..=cells.len() as u64).map(|k| 3 * k).collect();
-    let stress: Vec<f64> = cells
-        .iter()
-        .flat_map(|c| {
-            let s = c.stress;
-            [s[0], s[3], 0.0, s[3], s[1], 0.0, 0.0, 0.0, s[2]]
-        })
-        .collect();
+    let stress: Vec<f64> = cells.iter().flat_map(|c| tensor(&c.stress)).collect();
     let (sigma1, sigma3): (Vec<f64>, Vec<f64>) = cells.iter().map(|c| principal(&c.stress)).unzip();
+    let (sigma1_nodal, sigma3_nodal): (Vec<f64>, Vec<f64>) = nodal.iter().map(principal).unzip();
     let int = |f: &dyn Fn(&Cell) -> i32| -> Vec<i32> { cells.iter().map(f).collect() };
     let vec3 = |v: &[[f64; 2]]| -> Vec<f64> { v.iter().flat_map(|p| [p[0], p[1], 0.0]).collect() };
     let piece = UnstructuredGridPiece {
@@ -93,6 +134,10 @@ pub fn zones_vtu(model: &Model) -> Result<Vec<u8>, vtkio::Error> {
                         .collect::<Vec<f64>>(),
                 ),
                 Attribute::generic("velocity", 3).with_data(vec3(&nodes.vel)),
+                Attribute::generic("stress_nodal", 9)
+                    .with_data(nodal.iter().flat_map(tensor).collect::<Vec<f64>>()),
+                Attribute::generic("sigma1_nodal", 1).with_data(sigma1_nodal),
+                Attribute::generic("sigma3_nodal", 1).with_data(sigma3_nodal),
             ],
             cell: vec![
                 Attribute::generic("stress", 9).with_data(stress),
@@ -101,15 +146,17 @@ pub fn zones_vtu(model: &Model) -> Result<Vec<u8>, vtkio::Error> {
                 Attribute::generic("block", 1).with_data(int(&|c| c.block as i32)),
                 Attribute::generic("material", 1).with_data(int(&|c| c.material as i32)),
                 Attribute::generic("state", 1).with_data(int(&|c| c.state as i32)),
+                Attribute::generic("recovery_error", 1)
+                    .with_data(cells.iter().map(|c| c.error).collect::<Vec<f64>>()),
             ],
         },
     };
-    xml_of(piece)
+    xml_of(piece, labels)
 }
 
 /// Contacts as vertex cells at their points (original positions), with joint stresses and
 /// displacements and the state (0 elastic, 1 slipping, 2 open) as point data.
-pub fn contacts_vtu(model: &Model) -> Result<Vec<u8>, vtkio::Error> {
+pub fn contacts_vtu(model: &Model, labels: &Labels) -> Result<Vec<u8>, vtkio::Error> {
     let (c, pos) = (&model.contacts, &model.nodes.pos);
     let n = c.len();
     let points: Vec<f64> = (0..n)
@@ -126,19 +173,7 @@ pub fn contacts_vtu(model: &Model) -> Result<Vec<u8>, vtkio::Error> {
     let column = |f: &dyn Fn(&crate::joint::JointState) -> f64| -> Vec<f64> {
         c.state.iter().map(f).collect()
     };
-    let state: Vec<i32> = c
-        .state
-        .iter()
-        .map(|s| {
-            if s.flags & crate::joint::OPEN != 0 {
-                2
-            } else if s.flags & crate::joint::SLIPPING != 0 {
-                1
-            } else {
-                0
-            }
-        })
-        .collect();
+    let state: Vec<i32> = c.state.iter().map(state_code).collect();
     let piece = UnstructuredGridPiece {
         points: points.into(),
         cells: Cells {
@@ -161,11 +196,25 @@ pub fn contacts_vtu(model: &Model) -> Result<Vec<u8>, vtkio::Error> {
             cell: vec![],
         },
     };
-    xml_of(piece)
+    xml_of(piece, labels)
 }
 
-/// One piece as binary XML text, with the positions note in its field data.
-pub(super) fn xml_of(piece: UnstructuredGridPiece) -> Result<Vec<u8>, vtkio::Error> {
+/// A joint state as the output's code: 0 elastic, 1 slipping, 2 open (open wins).
+pub(super) fn state_code(s: &crate::joint::JointState) -> i32 {
+    if s.flags & crate::joint::OPEN != 0 {
+        2
+    } else if s.flags & crate::joint::SLIPPING != 0 {
+        1
+    } else {
+        0
+    }
+}
+
+/// One piece as binary XML text, with the positions note and `labels` in its field data.
+pub(super) fn xml_of(
+    piece: UnstructuredGridPiece,
+    labels: &Labels,
+) -> Result<Vec<u8>, vtkio::Error> {
     let vtk = Vtk {
         version: Version::new((1, 0)),
         title: String::new(),
@@ -175,7 +224,7 @@ pub(super) fn xml_of(piece: UnstructuredGridPiece) -> Result<Vec<u8>, vtkio::Err
     };
     let mut xml = Vec::new();
     vtk.write_xml(&mut xml)?;
-    Ok(with_cell_count(with_field_data(xml)))
+    Ok(with_cell_count(with_field_data(xml, labels)))
 }
 
 /// vtkio writes a piece without cells with the polydata counts (`NumberOfVerts`, `NumberOfLines`,
@@ -202,18 +251,45 @@ fn with_cell_count(xml: Vec<u8>) -> Vec<u8> {
     [&xml[..at], fixed.as_bytes(), &xml[at + len..]].concat()
 }
 
-/// vtkio writes no field data; add `deformed_positions = 0` (cells are drawn at original positions)
-/// right after the `<UnstructuredGrid>` tag.
-fn with_field_data(xml: Vec<u8>) -> Vec<u8> {
+/// vtkio writes no field data; add it right after the `<UnstructuredGrid>` tag, as one-value
+/// Int32 arrays: `deformed_positions = 0` (cells are drawn at original positions), and the names
+/// the integer columns stand for, each an array named after it holding its number:
+/// `stage: <name>` (the stage's number in the run's order, as `stage_index`; no stage before the
+/// first), `material: <name>` and `joint_material: <name>` (each material's id). Names go in the
+/// arrays' names because meshio reads no string arrays (`type="String"`, which ParaView reads):
+/// ParaView's spreadsheet of the field data shows them as its column heads.
+fn with_field_data(xml: Vec<u8>, labels: &Labels) -> Vec<u8> {
     const TAG: &[u8] = b"<UnstructuredGrid>";
-    const FIELD: &[u8] = b"<FieldData><DataArray type=\"Int32\" Name=\"deformed_positions\" NumberOfTuples=\"1\" format=\"ascii\">0</DataArray></FieldData>";
+    let mut field = String::from("<FieldData>");
+    field += &int_array("deformed_positions", 0);
+    if let Some((i, name)) = labels.stage {
+        field += &int_array("stage_index", i as i32);
+        field += &int_array(&format!("stage: {name}"), i as i32);
+    }
+    for (kind, names) in [
+        ("material", labels.materials),
+        ("joint_material", labels.joint_materials),
+    ] {
+        for (id, name) in names.iter().enumerate() {
+            field += &int_array(&format!("{kind}: {name}"), id as i32);
+        }
+    }
+    field += "</FieldData>";
     match xml.windows(TAG.len()).position(|w| w == TAG) {
         Some(at) => {
             let cut = at + TAG.len();
-            [&xml[..cut], FIELD, &xml[cut..]].concat()
+            [&xml[..cut], field.as_bytes(), &xml[cut..]].concat()
         }
         None => xml,
     }
+}
+
+/// A field data array of one Int32 `value` named `name`.
+fn int_array(name: &str, value: i32) -> String {
+    format!(
+        "<DataArray type=\"Int32\" Name=\"{}\" NumberOfTuples=\"1\" format=\"ascii\">{value}</DataArray>",
+        xml_attribute(name)
+    )
 }
 
 #[cfg(test)]
@@ -238,7 +314,12 @@ mod tests {
                 cell: vec![],
             },
         };
-        let xml = String::from_utf8(xml_of(piece).unwrap()).unwrap();
+        let labels = Labels {
+            stage: None,
+            materials: &[],
+            joint_materials: &[],
+        };
+        let xml = String::from_utf8(xml_of(piece, &labels).unwrap()).unwrap();
         assert!(
             xml.contains("<Piece NumberOfPoints=\"0\" NumberOfCells=\"0\">"),
             "{xml}"

@@ -29,6 +29,7 @@ pub mod random_scenes;
 pub mod rayleigh;
 pub mod readme;
 pub mod realizations;
+pub mod recovery;
 pub mod render;
 pub mod report;
 pub mod rotation;

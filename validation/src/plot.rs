@@ -132,6 +132,14 @@ pub fn curves(
         .configure_mesh()
         .x_desc(xlabel)
         .y_desc(ylabel)
+        .x_label_formatter(&|v| {
+            // Large or small ranges in powers of ten, others as they are.
+            if x1.abs().max(x0.abs()) >= 1e4 || x1.abs().max(x0.abs()) < 1e-2 {
+                format!("{v:.1e}")
+            } else {
+                format!("{v}")
+            }
+        })
         .y_label_formatter(&|v| format!("{v:.3e}"))
         .draw()?;
     for c in curves {

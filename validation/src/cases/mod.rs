@@ -20,6 +20,7 @@ mod modes;
 mod patch;
 mod pullout;
 mod random_scenes;
+mod recovery;
 mod rotation;
 mod salencon;
 mod scale;
@@ -37,6 +38,7 @@ pub fn all() -> Vec<Box<dyn Case>> {
         Box::new(kirsch::Kirsch),
         Box::new(implicit::Implicit),
         Box::new(far_field::FarField),
+        Box::new(recovery::Recovery),
         Box::new(patch::Patch),
         Box::new(gravity::Gravity),
         Box::new(salencon::Salencon),
