@@ -259,6 +259,14 @@ fn build_solve_write(
     if plan.staged {
         writer.write_ground_reaction(&stage_summaries, &plan.excavations)?;
     }
+    let excavations: &[String] = if plan.staged { &plan.excavations } else { &[] };
+    let plot_warnings = crate::output::plots::write_plots(
+        &writer.dir,
+        &solution.history,
+        &stage_summaries,
+        excavations,
+        model,
+    );
     output_seconds += t.elapsed().as_secs_f64();
     seconds.output = output_seconds;
     let wall = start.elapsed().as_secs_f64();
@@ -305,7 +313,7 @@ fn build_solve_write(
         critical_block: solver.step.limiting_block,
         critical_limiter: solver.step.describe(),
         min_zone_angle: built.mesh.min_angle_deg,
-        warnings: built.warnings.clone(),
+        warnings: [built.warnings.clone(), plot_warnings].concat(),
         stages: if built.plan.staged {
             stage_summaries
         } else {

@@ -198,6 +198,15 @@ print("meshio ok")
         cells = segments + elements
     );
     run_python(&script, &dir.join("lined_supports_0001.vtu"));
+    for plot in ["history.png", "ground_reaction.png", "bolts.png"] {
+        let png = std::fs::read(dir.join(plot)).unwrap();
+        assert_eq!(&png[1..4], b"PNG", "{plot}");
+    }
+    assert!(
+        r.summary.warnings.iter().all(|w| !w.contains(".png")),
+        "{:?}",
+        r.summary.warnings
+    );
 }
 
 /// Read a zones file with Python's meshio and check the contract's fields and sizes.

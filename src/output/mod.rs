@@ -6,6 +6,7 @@
 
 pub mod atomic;
 pub mod joints_vtu;
+pub mod plots;
 pub mod recovery;
 pub mod supports_vtu;
 pub mod vtu;
@@ -353,13 +354,21 @@ fn history_row(w: &mut dyn Write, r: &HistoryRow) -> std::io::Result<()> {
 
 /// Whether `file` is an output of a run of the scene `name` (or such a file's temporary):
 /// `<name>.pvd`, `<name>_zones_NNNN.vtu` and its contacts, joints and supports siblings, `history.csv`,
-/// `ground_reaction.csv`, `summary.json`.
+/// `ground_reaction.csv`, `summary.json` and the plots (`plots.rs`).
 fn is_run_output(file: &str, name: &str) -> bool {
     let file = match file.strip_prefix('.').and_then(|f| f.strip_suffix(".tmp")) {
         Some(inner) => inner,
         None => file,
     };
-    if ["history.csv", "ground_reaction.csv", "summary.json"].contains(&file) {
+    const FILES: [&str; 6] = [
+        "history.csv",
+        "ground_reaction.csv",
+        "summary.json",
+        "history.png",
+        "ground_reaction.png",
+        "bolts.png",
+    ];
+    if FILES.contains(&file) {
         return true;
     }
     let Some(rest) = file.strip_prefix(name) else {

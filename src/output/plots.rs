@@ -1,0 +1,247 @@
+//! PNG plots beside the results, for a look without ParaView: the unbalanced-force ratio's history
+//! (`history.png`), the ground reaction curve of each excavation (`ground_reaction.png`, staged
+//! scenes: support pressure against mean wall closure at each stage's end, from no closure under
+//! the whole in-situ pressure) and the axial force along each installed bolt (`bolts.png`, scenes with bolts).
+//!
+//! Each is drawn into a buffer and written atomically. A plot that cannot be drawn (no font on
+//! the machine: fontconfig is loaded at run time) is a warning of the run, never its failure.
+
+use std::path::Path;
+
+use image::ImageEncoder as _;
+use plotters::prelude::*;
+
+use super::StageSummary;
+use super::atomic::write_atomic;
+use crate::model::Model;
+use crate::solve::HistoryRow;
+
+/// Plot size, pixels.
+const SIZE: (u32, u32) = (800, 500);
+
+/// Colours of successive curves.
+const PALETTE: [RGBColor; 6] = [
+    RGBColor(31, 119, 180),
+    RGBColor(214, 39, 40),
+    RGBColor(44, 160, 44),
+    RGBColor(148, 103, 189),
+    RGBColor(255, 127, 14),
+    RGBColor(23, 190, 207),
+];
+
+/// One line of a plot: its label and points.
+struct Line {
+    label: String,
+    points: Vec<(f64, f64)>,
+}
+
+/// Write every plot the run has data for into `dir`; what could not be drawn comes back as
+/// warnings.
+pub fn write_plots(
+    dir: &Path,
+    history: &[HistoryRow],
+    stages: &[StageSummary],
+    excavations: &[String],
+    model: &Model,
+) -> Vec<String> {
+    let mut warnings = Vec::new();
+    let mut plot = |file: &str, title: &str, axes: (&str, &str), log_y: bool, lines: Vec<Line>| {
+        if lines.iter().all(|l| l.points.is_empty()) {
+            return;
+        }
+        let drawn = std::panic::catch_unwind(|| draw(title, axes, log_y, &lines));
+        let written = match drawn {
+            Ok(Ok(png)) => {
+                write_atomic(&dir.join(file), |w| w.write_all(&png)).map_err(|e| e.to_string())
+            }
+            Ok(Err(e)) => Err(e),
+            Err(_) => Err("the plotting library panicked (no usable font?)".to_string()),
+        };
+        if let Err(e) = written {
+            warnings.push(format!("{file} not written: {e}"));
+        }
+    };
+    let ratio = history
+        .iter()
+        .filter(|r| r.ratio.is_finite() && r.ratio > 0.0)
+        .map(|r| (r.cycle as f64, r.ratio))
+        .collect();
+    plot(
+        "history.png",
+        "Unbalanced-force ratio",
+        ("cycle (implicit: iteration)", "ratio"),
+        true,
+        vec![Line {
+            label: "ratio".into(),
+            points: ratio,
+        }],
+    );
+    // Each excavation's curve starts at no closure under the whole in-situ pressure.
+    let curves = excavations
+        .iter()
+        .map(|name| Line {
+            label: name.clone(),
+            points: std::iter::once((0.0, 100.0))
+                .chain(stages.iter().filter_map(|s| {
+                    let c = s.closure.get(name)?;
+                    Some((1e3 * c, 100.0 * s.support_fraction))
+                }))
+                .collect(),
+        })
+        .filter(|l| l.points.len() > 1)
+        .collect();
+    plot(
+        "ground_reaction.png",
+        "Ground reaction curve",
+        ("mean wall closure (mm)", "support pressure (% of in-situ)"),
+        false,
+        curves,
+    );
+    plot(
+        "bolts.png",
+        "Axial force along each bolt",
+        (
+            "distance from the head (m)",
+            "axial force (kN/m, tension positive)",
+        ),
+        false,
+        bolt_lines(model),
+    );
+    warnings
+}
+
+/// The axial force (kN/m) against distance from the head (m, at segment middles) of each
+/// installed bolt: its segments are a chain, head first.
+fn bolt_lines(model: &Model) -> Vec<Line> {
+    let c = &model.supports.cables;
+    let mut lines: Vec<Line> = Vec::new();
+    let mut along = 0.0;
+    for (k, seg) in c.segment.iter().enumerate() {
+        let group = c.segment_group[k] as usize;
+        if !c.active[group] {
+            continue;
+        }
+        let continues = k > 0 && c.segment[k - 1][1] == seg[0] && !lines.is_empty();
+        if !continues {
+            along = 0.0;
+            lines.push(Line {
+                label: format!("{} {}", c.names[group], lines.len() + 1),
+                points: Vec::new(),
+            });
+        }
+        let length = c.segment_length[k];
+        if let Some(line) = lines.last_mut() {
+            line.points.push((along + 0.5 * length, 1e-3 * c.axial[k]));
+        }
+        along += length;
+    }
+    lines
+}
+
+/// Draw `lines` as a PNG image.
+fn draw(
+    title: &str,
+    (x_label, y_label): (&str, &str),
+    log_y: bool,
+    lines: &[Line],
+) -> Result<Vec<u8>, String> {
+    let mut rgb = vec![255u8; (SIZE.0 * SIZE.1 * 3) as usize];
+    {
+        let root = BitMapBackend::with_buffer(&mut rgb, SIZE).into_drawing_area();
+        let all = || lines.iter().flat_map(|l| l.points.iter().copied());
+        let span = |f: fn((f64, f64)) -> f64| {
+            let (lo, hi) = all().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
+                (a.min(f(p)), b.max(f(p)))
+            });
+            let pad = if hi > lo { 0.04 * (hi - lo) } else { 1.0 };
+            (lo - pad, hi + pad)
+        };
+        let (x0, x1) = span(|p| p.0);
+        let err = |e: &dyn std::fmt::Display| e.to_string();
+        let mut chart = ChartBuilder::on(&root);
+        chart
+            .caption(title, ("sans-serif", 20))
+            .margin(14)
+            .x_label_area_size(44)
+            .y_label_area_size(80);
+        let legend = lines.len() > 1 && lines.len() <= 12;
+        if log_y {
+            let (lo, hi) = all().fold((f64::INFINITY, 0.0f64), |(a, b), p| {
+                (a.min(p.1), b.max(p.1))
+            });
+            let mut chart = chart
+                .build_cartesian_2d(x0..x1, (lo * 0.5..hi * 2.0).log_scale())
+                .map_err(|e| err(&e))?;
+            chart
+                .configure_mesh()
+                .x_desc(x_label)
+                .y_desc(y_label)
+                .y_label_formatter(&|v| format!("{v:.0e}"))
+                .draw()
+                .map_err(|e| err(&e))?;
+            for (i, l) in lines.iter().enumerate() {
+                let color = PALETTE[i % PALETTE.len()];
+                chart
+                    .draw_series(LineSeries::new(l.points.clone(), color.stroke_width(2)))
+                    .map_err(|e| err(&e))?;
+            }
+        } else {
+            let (y0, y1) = span(|p| p.1);
+            let mut chart = chart
+                .build_cartesian_2d(x0..x1, y0..y1)
+                .map_err(|e| err(&e))?;
+            chart
+                .configure_mesh()
+                .x_desc(x_label)
+                .y_desc(y_label)
+                .draw()
+                .map_err(|e| err(&e))?;
+            for (i, l) in lines.iter().enumerate() {
+                let color = PALETTE[i % PALETTE.len()];
+                chart
+                    .draw_series(LineSeries::new(l.points.clone(), color.stroke_width(2)))
+                    .map_err(|e| err(&e))?
+                    .label(l.label.clone())
+                    .legend(move |(x, y)| {
+                        PathElement::new([(x, y), (x + 16, y)], color.stroke_width(2))
+                    });
+                chart
+                    .draw_series(l.points.iter().map(|&p| Circle::new(p, 3, color.filled())))
+                    .map_err(|e| err(&e))?;
+            }
+            if legend {
+                chart
+                    .configure_series_labels()
+                    .position(SeriesLabelPosition::UpperRight)
+                    .background_style(WHITE.mix(0.8))
+                    .border_style(BLACK)
+                    .draw()
+                    .map_err(|e| err(&e))?;
+            }
+        }
+        root.present().map_err(|e| err(&e))?;
+    }
+    let mut png = Vec::new();
+    image::codecs::png::PngEncoder::new(&mut png)
+        .write_image(&rgb, SIZE.0, SIZE.1, image::ColorType::Rgb8)
+        .map_err(|e| e.to_string())?;
+    Ok(png)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A plot comes out as a PNG of the plot's size.
+    #[test]
+    fn a_plot_is_a_png_image() {
+        let line = Line {
+            label: "a".into(),
+            points: vec![(0.0, 1.0), (1.0, 3.0), (2.0, 2.0)],
+        };
+        let png = draw("t", ("x", "y"), false, &[line]).unwrap();
+        assert_eq!(&png[1..4], b"PNG");
+        let image = image::load_from_memory(&png).unwrap();
+        assert_eq!((image.width(), image.height()), SIZE);
+    }
+}
