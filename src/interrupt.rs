@@ -12,8 +12,9 @@ pub fn requested() -> bool {
     REQUESTED.load(Ordering::Relaxed)
 }
 
-/// Ask for an interruption (what the signal handler does).
-fn request() {
+/// Ask for an interruption: what the signal handler does, and what the Python package does when
+/// Python reports a Ctrl-C.
+pub fn request() {
     REQUESTED.store(true, Ordering::Relaxed);
 }
 

@@ -22,6 +22,7 @@ pub mod setup;
 pub mod solve;
 pub mod stage;
 pub mod support;
+pub mod sweep;
 mod vector_state;
 
 pub use run::{RunResult, run_scene};

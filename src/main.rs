@@ -51,6 +51,22 @@ enum Command {
         #[arg(long)]
         out: Option<PathBuf>,
     },
+    /// Run a sweep: a base scene over a grid or random draws of parameters and joint
+    /// realizations, each run independent, gathered into sweep.csv and sweep.png. Runs already
+    /// done are skipped, so a sweep interrupted and started again runs only what is missing.
+    Sweep {
+        spec: PathBuf,
+        /// Output folder (default: the spec's out, else out/<name>).
+        #[arg(long)]
+        out: Option<PathBuf>,
+        /// Runs at once (default: the machine's cores).
+        #[arg(long)]
+        workers: Option<usize>,
+        /// A Dask scheduler's address: the runs go to its cluster, through the Python package
+        /// (`python3 -m adit.sweep`), which must be installed.
+        #[arg(long)]
+        scheduler: Option<String>,
+    },
 }
 
 /// Progress bar over cycles (or implicit iterations) showing the unbalanced-force ratio, and the
@@ -264,6 +280,21 @@ fn main() -> ExitCode {
         }
         Command::Check { scene } => check(&scene).map(|_| ExitCode::SUCCESS),
         Command::Mesh { scene, out } => write_mesh(&scene, out).map(|_| ExitCode::SUCCESS),
+        Command::Sweep {
+            spec,
+            out,
+            workers,
+            scheduler: Some(address),
+        } => on_dask(&spec, out, workers, &address),
+        Command::Sweep {
+            spec,
+            out,
+            workers,
+            scheduler: None,
+        } => {
+            adit::interrupt::install();
+            sweep(&spec, out, workers)
+        }
     };
     match result {
         Ok(code) => code,
@@ -274,6 +305,88 @@ fn main() -> ExitCode {
             ExitCode::FAILURE
         }
     }
+}
+
+/// `adit sweep` on this machine's threads.
+fn sweep(path: &Path, out: Option<PathBuf>, workers: Option<usize>) -> anyhow::Result<ExitCode> {
+    let spec = adit::sweep::SweepSpec::load(path)?;
+    let dir = path.parent().unwrap_or(Path::new("."));
+    let base = spec.base_scene(dir)?;
+    let out = out.unwrap_or_else(|| spec.out_dir());
+    let runs = adit::sweep::plan(&spec);
+    let workers = workers.unwrap_or_else(|| {
+        std::thread::available_parallelism().map_or(1, std::num::NonZeroUsize::get)
+    });
+    say!(
+        "sweep {}: {} runs, {} at once, into {}",
+        spec.name,
+        runs.len(),
+        workers,
+        out.display()
+    )?;
+    let count = std::sync::atomic::AtomicUsize::new(0);
+    let told = |row: &adit::sweep::Row, before: bool| {
+        let k = count.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
+        let how = if before {
+            "done before".to_string()
+        } else {
+            format!("{:.2} s", row.wall_seconds)
+        };
+        let error = row
+            .error
+            .as_deref()
+            .map_or(String::new(), |e| format!(": {e}"));
+        let _ = say!(
+            "[{k}/{}] {} {} ({how}){error}",
+            runs.len(),
+            row.id,
+            row.status
+        );
+    };
+    let rows = adit::sweep::run_local(&base, &runs, &out, workers, &told);
+    let finished: Vec<adit::sweep::Row> = rows.iter().flatten().cloned().collect();
+    for w in adit::sweep::write_table(&out, &finished)? {
+        eprintln!("warning: {w}");
+    }
+    let failed = finished.iter().filter(|r| r.status == "failed").count();
+    say!(
+        "{} of {} runs in {} ({failed} failed); table {}",
+        finished.len(),
+        runs.len(),
+        out.display(),
+        out.join("sweep.csv").display()
+    )?;
+    if finished.len() < runs.len() {
+        eprintln!("interrupted: run the same command again to make the runs still missing");
+        return Ok(ExitCode::from(130));
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+/// `adit sweep --scheduler ADDR`: hand the sweep to the Python package's Dask path.
+fn on_dask(
+    spec: &Path,
+    out: Option<PathBuf>,
+    workers: Option<usize>,
+    address: &str,
+) -> anyhow::Result<ExitCode> {
+    let mut python = std::process::Command::new("python3");
+    python
+        .args(["-m", "adit.sweep"])
+        .arg(spec)
+        .args(["--scheduler", address]);
+    if let Some(out) = out {
+        python.arg("--out").arg(out);
+    }
+    if let Some(w) = workers {
+        python.args(["--workers", &w.to_string()]);
+    }
+    let status = python.status().map_err(|e| {
+        anyhow::anyhow!("--scheduler: python3 could not be started ({e}); install the package: pip install ./python")
+    })?;
+    Ok(ExitCode::from(
+        status.code().unwrap_or(1).clamp(0, 255) as u8
+    ))
 }
 
 /// Whether `e` is a write to a pipe whose reader has closed.

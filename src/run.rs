@@ -95,14 +95,16 @@ pub fn ensure_time_step(solver: &Solver) -> anyhow::Result<()> {
 }
 
 /// Build and solve `scene`, writing results into `out_dir`. A failed solve still writes
-/// `history.csv` and a `summary.json` with status `failed`, but no final zone grid.
+/// `history.csv` and a `summary.json` with status `failed`, but no final zone grid. An
+/// interruption asked for before the run (`interrupt::requested`) stops it at once: a caller that
+/// runs again after a Ctrl-C clears it first (`interrupt::clear`), as the Python package does,
+/// while a sweep's concurrent runs all stop on one.
 pub fn run_scene(
     scene: &Scene,
     out_dir: &Path,
     observer: &mut dyn Observer,
 ) -> anyhow::Result<RunResult> {
     let start = Instant::now();
-    crate::interrupt::clear();
     let mut writer = OutputWriter::for_run(out_dir, &scene.name)?;
     let result = build_solve_write(scene, &mut writer, observer, start);
     if let Err(e) = &result {

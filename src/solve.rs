@@ -57,6 +57,11 @@ pub struct Solution {
 }
 
 impl Solution {
+    /// The monitor rows of the solve, in order.
+    pub fn history(&self) -> &[HistoryRow] {
+        &self.history
+    }
+
     /// This solve followed by `rest`, which went on from where it stopped: the cycles and the
     /// history of both (`rest`'s counted on from this one's), `rest`'s status and final ratio.
     pub fn then(mut self, rest: Solution) -> Solution {

@@ -4,6 +4,7 @@
 //! `history.csv` and `summary.json`, each written atomically (`history.csv` is also written row by
 //! row while a run goes, so that a killed run keeps it; the run's `summary.json` says `running`).
 
+pub mod arrays;
 pub mod atomic;
 pub mod joints_vtu;
 pub mod plots;
@@ -388,7 +389,7 @@ fn is_run_output(file: &str, name: &str) -> bool {
 
 /// A CSV field (RFC 4180): quoted, with quotes doubled, when it holds a comma, a quote or a line
 /// break; as it is otherwise.
-fn csv_field(text: &str) -> std::borrow::Cow<'_, str> {
+pub(crate) fn csv_field(text: &str) -> std::borrow::Cow<'_, str> {
     if text.contains([',', '"', '\n', '\r']) {
         format!("\"{}\"", text.replace('"', "\"\"")).into()
     } else {

@@ -228,6 +228,78 @@ fn draw(
     Ok(png)
 }
 
+/// Write `file` into `dir`: one panel per figure, its values sorted against the fraction of
+/// runs at or below them (the spread as an empirical distribution). A plot that cannot be drawn
+/// comes back as a warning.
+pub fn write_spread(dir: &Path, file: &str, figures: &[(String, Vec<f64>)]) -> Vec<String> {
+    if figures.is_empty() {
+        return Vec::new();
+    }
+    let drawn = std::panic::catch_unwind(|| spread(figures));
+    let written = match drawn {
+        Ok(Ok(png)) => {
+            write_atomic(&dir.join(file), |w| w.write_all(&png)).map_err(|e| e.to_string())
+        }
+        Ok(Err(e)) => Err(e),
+        Err(_) => Err("the plotting library panicked (no usable font?)".to_string()),
+    };
+    written
+        .err()
+        .map(|e| format!("{file} not written: {e}"))
+        .into_iter()
+        .collect()
+}
+
+fn spread(figures: &[(String, Vec<f64>)]) -> Result<Vec<u8>, String> {
+    let columns = figures.len().min(3) as u32;
+    let rows = (figures.len() as u32).div_ceil(columns);
+    let size = (420 * columns, 320 * rows);
+    let mut rgb = vec![255u8; (size.0 * size.1 * 3) as usize];
+    {
+        let root = BitMapBackend::with_buffer(&mut rgb, size).into_drawing_area();
+        let panels = root.split_evenly((rows as usize, columns as usize));
+        let err = |e: &dyn std::fmt::Display| e.to_string();
+        for ((title, values), panel) in figures.iter().zip(&panels) {
+            let mut v = values.clone();
+            v.sort_by(f64::total_cmp);
+            let n = v.len() as f64;
+            let points: Vec<(f64, f64)> = v
+                .iter()
+                .enumerate()
+                .map(|(i, &y)| ((i as f64 + 1.0) / n, y))
+                .collect();
+            let (lo, hi) = (v[0], v[v.len() - 1]);
+            let pad = if hi > lo {
+                0.08 * (hi - lo)
+            } else {
+                0.5 * lo.abs().max(1.0)
+            };
+            let mut chart = ChartBuilder::on(panel)
+                .caption(format!("{title}, {} runs", v.len()), ("sans-serif", 15))
+                .margin(10)
+                .x_label_area_size(32)
+                .y_label_area_size(60)
+                .build_cartesian_2d(0.0..1.02, (lo - pad)..(hi + pad))
+                .map_err(|e| err(&e))?;
+            chart
+                .configure_mesh()
+                .x_desc("fraction of runs at or below")
+                .draw()
+                .map_err(|e| err(&e))?;
+            let color = PALETTE[0];
+            chart
+                .draw_series(points.iter().map(|&p| Circle::new(p, 3, color.filled())))
+                .map_err(|e| err(&e))?;
+        }
+        root.present().map_err(|e| err(&e))?;
+    }
+    let mut png = Vec::new();
+    image::codecs::png::PngEncoder::new(&mut png)
+        .write_image(&rgb, size.0, size.1, image::ColorType::Rgb8)
+        .map_err(|e| e.to_string())?;
+    Ok(png)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

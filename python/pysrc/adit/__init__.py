@@ -1,0 +1,166 @@
+"""adit: a 2D distinct element engine for jointed rock, from Python.
+
+Load a scene from a file or build it as a dict, change it, run it and get its results as NumPy
+arrays::
+
+    import adit
+    scene = adit.load_scene("models/kirsch.json")
+    scene["in_situ"]["sxx"] = -15e6
+    result = adit.run(scene, out="out/kirsch_15", progress=lambda row: print(row["ratio"]))
+    result.zones["stress_pa"]          # (zones, 4): sxx, syy, szz, sxy in Pa, tension positive
+
+Units are SI (m, Pa, kg, s). A run writes the same files as ``adit run`` (ParaView collection,
+history, summary) into its output folder and gives the same numbers to the last bit.
+Sweeps of parameters and joint realizations: ``adit.sweep`` (module ``adit.sweep``).
+"""
+
+from __future__ import annotations
+
+import json
+import os
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Callable, Dict, List, Mapping, Optional, TypedDict, Union
+
+import numpy as np
+
+from . import _adit
+
+__all__ = [
+    "ProgressRow",
+    "Results",
+    "SceneLike",
+    "check",
+    "load_scene",
+    "run",
+    "sweep",
+    "version",
+]
+
+#: A scene: a dict as the scene format describes it (docs/scene-format.md), or the path of a
+#: scene file.
+SceneLike = Union[Mapping[str, Any], str, "os.PathLike[str]"]
+
+
+class ProgressRow(TypedDict):
+    """What ``progress`` receives at each monitor step."""
+
+    cycle: int
+    time_s: float
+    ratio: float
+    kinetic_energy_j_per_m: float
+
+
+def version() -> str:
+    """The engine's version."""
+    return _adit.version()
+
+
+def load_scene(path: Union[str, "os.PathLike[str]"]) -> Dict[str, Any]:
+    """The scene file at ``path`` as a dict, to change before ``run``."""
+    with open(path, encoding="utf-8-sig") as f:
+        return json.load(f)
+
+
+def _scene_json(scene: SceneLike) -> str:
+    # One field a line: an error's line then names the field.
+    if isinstance(scene, (str, os.PathLike)):
+        return json.dumps(load_scene(scene), indent=1)
+    return json.dumps(scene, indent=1)
+
+
+def check(scene: SceneLike) -> None:
+    """Validate ``scene``: raises ``ValueError`` naming the field when it is not valid."""
+    _adit.check(_scene_json(scene))
+
+
+@dataclass(frozen=True)
+class Results:
+    """The results of a run, as NumPy arrays in SI units (names carry the unit).
+
+    Tables (dicts of equal-length arrays, one row per item):
+
+    - ``nodes``: ``position_m`` (n, 2), ``displacement_m`` (n, 2), ``velocity_m_per_s`` (n, 2),
+      ``stress_nodal_pa`` (n, 4: the recovered nodal stress sxx, syy, szz, sxy), ``block``,
+      ``fixed`` (bit flags: 1 x, 2 y, 4 part of a rigid or simple block);
+    - ``zones``: ``nodes`` (z, 3), ``stress_pa`` (z, 4: sxx, syy, szz, sxy), ``state`` (yield
+      bit flags, 0 elastic), ``block``, ``material`` (index into ``materials``), ``area_m2``,
+      ``plastic_strain``, ``recovery_error_pa`` (the zone's error indicator), ``excavated``
+      (1 when its block was excavated);
+    - ``contacts``: ``node``, ``edge_nodes`` (c, 2), ``block`` (the edge's block),
+      ``position_m`` (c, 2), ``length_m``, ``normal_stress_pa``, ``shear_stress_pa``,
+      ``normal_displacement_m``, ``shear_displacement_m``, ``state`` (0 elastic, 1 slipping,
+      2 open), ``material`` (index into ``joint_materials``);
+    - ``bolts`` (one row per segment) and ``liners`` (one row per element): ``ends_m`` (s, 4:
+      x0, y0, x1, y1), ``group`` (index into ``bolt_groups`` or ``liner_groups``),
+      ``installed``, ``axial_force_n_per_m`` (tension positive, per metre of tunnel); bolts
+      ``yielded``, liners ``moment_n_m_per_m`` (s, 2: at each end);
+    - ``history``: ``cycle``, ``time_s``, ``ratio``, ``kinetic_energy_j_per_m`` per monitor step.
+
+    ``summary`` is ``summary.json`` as a dict (with ``stages``, each with its ``closure`` per
+    excavation in m); ``out_dir`` the folder the run wrote.
+    """
+
+    nodes: Dict[str, np.ndarray]
+    zones: Dict[str, np.ndarray]
+    contacts: Dict[str, np.ndarray]
+    bolts: Dict[str, np.ndarray]
+    liners: Dict[str, np.ndarray]
+    history: Dict[str, np.ndarray]
+    materials: List[str]
+    joint_materials: List[str]
+    bolt_groups: List[str]
+    liner_groups: List[str]
+    summary: Dict[str, Any] = field(repr=False)
+    out_dir: Path
+
+    @property
+    def status(self) -> str:
+        """``converged``, ``cycle_limit``, ``failed`` or ``interrupted``."""
+        return self.summary["status"]
+
+    @property
+    def stages(self) -> List[Dict[str, Any]]:
+        """Each stage's summary, in order (empty for a scene without stages)."""
+        return self.summary.get("stages", [])
+
+    def closure(self, excavation: str) -> float:
+        """Mean wall closure (m, inward positive) of ``excavation`` at the end of the run."""
+        for stage in reversed(self.stages):
+            if excavation in stage["closure"]:
+                return stage["closure"][excavation]
+        raise KeyError(f"no stage excavated {excavation!r}")
+
+
+def run(
+    scene: SceneLike,
+    out: Optional[Union[str, "os.PathLike[str]"]] = None,
+    progress: Optional[Callable[[ProgressRow], None]] = None,
+) -> Results:
+    """Run ``scene`` and return its results.
+
+    The run writes its files into ``out`` (default: the scene's ``output.folder``, else
+    ``out/<name>``), as ``adit run`` does. ``progress`` is called at each monitor step. Ctrl-C
+    stops the run at the end of a cycle, writes its last state (summary status ``interrupted``)
+    and raises ``KeyboardInterrupt``; an exception in ``progress`` stops it the same way and is
+    raised. A scene that is not valid raises ``ValueError`` naming the field; a run that cannot
+    be built or solved raises ``RuntimeError`` with the reason.
+    """
+    raw = _adit.run(_scene_json(scene), None if out is None else os.fspath(out), progress)
+    return Results(
+        nodes=raw["nodes"],
+        zones=raw["zones"],
+        contacts=raw["contacts"],
+        bolts=raw["bolts"],
+        liners=raw["liners"],
+        history=raw["history"],
+        materials=raw["materials"],
+        joint_materials=raw["joint_materials"],
+        bolt_groups=raw["bolt_groups"],
+        liner_groups=raw["liner_groups"],
+        summary=json.loads(raw["summary_json"]),
+        out_dir=Path(raw["out_dir"]),
+    )
+
+
+from .sweep import sweep  # noqa: E402  (sweep uses run)

@@ -1,0 +1,180 @@
+//! The Python module `adit._adit`: run a scene given as JSON text and get its results as NumPy
+//! arrays. The pure-Python package `adit` (`pysrc/adit/`) wraps it with type hints, scene
+//! loading and sweeps.
+
+mod progress;
+mod sweep;
+
+use std::path::PathBuf;
+
+use numpy::{IntoPyArray, PyArrayMethods};
+use pyo3::exceptions::{PyKeyboardInterrupt, PyRuntimeError, PyValueError};
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+
+use adit::output::arrays::{Tables, Values, names};
+use adit::{Scene, run_scene};
+
+use progress::Progress;
+
+/// Parse and validate a scene given as JSON text, as `adit check` does before building: a
+/// `ValueError` naming the field when it is not a valid scene.
+#[pyfunction]
+fn check(scene_json: &str) -> PyResult<()> {
+    parse(scene_json).map(|_| ())
+}
+
+/// The scene in `scene_json`; a parse error (which names a line and column) quotes that line, so
+/// that a scene given as a dict (sent here one field a line) names its field.
+fn parse(scene_json: &str) -> PyResult<Scene> {
+    Scene::from_json(scene_json, "scene").map_err(|e| {
+        let text = e.to_string();
+        let line = text
+            .split("line ")
+            .nth(1)
+            .and_then(|rest| rest.split(|c: char| !c.is_ascii_digit()).next())
+            .and_then(|n| n.parse::<usize>().ok())
+            .and_then(|n| scene_json.lines().nth(n.saturating_sub(1)));
+        match line {
+            Some(l) => PyValueError::new_err(format!("{text} (at {})", l.trim())),
+            None => PyValueError::new_err(text),
+        }
+    })
+}
+
+/// Run the scene given as JSON text, writing its output files into `out` (default: the scene's
+/// `output.folder`, else `out/<name>`), calling `progress(row)` at each monitor step with a dict
+/// of `cycle`, `time_s`, `ratio` and `kinetic_energy_j_per_m`. Ctrl-C stops the run at the end of
+/// a cycle (its files are written, its summary says `interrupted`) and raises
+/// `KeyboardInterrupt`; an exception in `progress` stops it the same way and is raised. Returns
+/// a dict of the results (`adit.Results` wraps it).
+#[pyfunction]
+#[pyo3(signature = (scene_json, out=None, progress=None))]
+fn run<'py>(
+    py: Python<'py>,
+    scene_json: &str,
+    out: Option<PathBuf>,
+    progress: Option<Py<PyAny>>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let scene = parse(scene_json)?;
+    let out = out.unwrap_or_else(|| adit::run::default_out_dir(&scene));
+    // A Ctrl-C that stopped an earlier run of this process does not stop this one.
+    adit::interrupt::clear();
+    // The run goes on its own thread; this (main) thread watches for Ctrl-C, which Python only
+    // reports on the main thread, and asks the run to stop at the end of a cycle.
+    let dir = out.clone();
+    let worker = std::thread::spawn(move || {
+        let mut observer = Progress::new(progress);
+        let result = run_scene(&scene, &dir, &mut observer);
+        (result, observer)
+    });
+    let mut interrupted = false;
+    while !worker.is_finished() {
+        py.detach(|| std::thread::sleep(std::time::Duration::from_millis(20)));
+        if let Err(e) = py.check_signals() {
+            if !e.is_instance_of::<PyKeyboardInterrupt>(py) {
+                adit::interrupt::request();
+                let _ = worker.join();
+                return Err(e);
+            }
+            interrupted = true;
+            adit::interrupt::request();
+        }
+    }
+    let (result, mut observer) = worker
+        .join()
+        .map_err(|_| PyRuntimeError::new_err("the run panicked (a defect of the engine)"))?;
+    if let Some(err) = observer.error.take() {
+        return Err(err);
+    }
+    if interrupted || observer.interrupted {
+        return Err(PyKeyboardInterrupt::new_err(format!(
+            "the run was interrupted; its last state is in {}",
+            out.display()
+        )));
+    }
+    let r = result.map_err(|e| PyRuntimeError::new_err(format!("{e:#}")))?;
+    let dict = PyDict::new(py);
+    for (table, columns) in Tables::of(&r.built.model).tables {
+        let t = PyDict::new(py);
+        for c in columns {
+            let rows = |len: usize| {
+                if c.width == 1 {
+                    vec![len]
+                } else {
+                    vec![len / c.width, c.width]
+                }
+            };
+            match c.values {
+                Values::Float(v) => {
+                    let shape = rows(v.len());
+                    t.set_item(c.name, v.into_pyarray(py).reshape(shape)?)?;
+                }
+                Values::Int(v) => {
+                    let shape = rows(v.len());
+                    t.set_item(c.name, v.into_pyarray(py).reshape(shape)?)?;
+                }
+            }
+        }
+        dict.set_item(table, t)?;
+    }
+    for (kind, list) in names(&r.built.model) {
+        dict.set_item(kind, list)?;
+    }
+    let h = r.solution.history();
+    let history = PyDict::new(py);
+    history.set_item(
+        "cycle",
+        h.iter()
+            .map(|r| r.cycle as i64)
+            .collect::<Vec<_>>()
+            .into_pyarray(py),
+    )?;
+    history.set_item(
+        "time_s",
+        h.iter()
+            .map(|r| r.time)
+            .collect::<Vec<_>>()
+            .into_pyarray(py),
+    )?;
+    history.set_item(
+        "ratio",
+        h.iter()
+            .map(|r| r.ratio)
+            .collect::<Vec<_>>()
+            .into_pyarray(py),
+    )?;
+    history.set_item(
+        "kinetic_energy_j_per_m",
+        h.iter()
+            .map(|r| r.kinetic)
+            .collect::<Vec<_>>()
+            .into_pyarray(py),
+    )?;
+    dict.set_item("history", history)?;
+    let summary =
+        serde_json::to_string(&r.summary).map_err(|e| PyRuntimeError::new_err(e.to_string()))?;
+    dict.set_item("summary_json", summary)?;
+    dict.set_item("out_dir", r.out_dir.to_string_lossy().into_owned())?;
+    Ok(dict)
+}
+
+/// The engine's version.
+#[pyfunction]
+fn version() -> &'static str {
+    env!("CARGO_PKG_VERSION")
+}
+
+#[pymodule]
+fn _adit(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    // Load NumPy's C API now, so that no later call can meet a pending Ctrl-C while loading it.
+    numpy::PyArray1::<f64>::zeros(m.py(), 0, false);
+    m.add_function(wrap_pyfunction!(check, m)?)?;
+    m.add_function(wrap_pyfunction!(run, m)?)?;
+    m.add_function(wrap_pyfunction!(version, m)?)?;
+    m.add_function(wrap_pyfunction!(sweep::sweep_plan, m)?)?;
+    m.add_function(wrap_pyfunction!(sweep::sweep_run, m)?)?;
+    m.add_function(wrap_pyfunction!(sweep::sweep_done, m)?)?;
+    m.add_function(wrap_pyfunction!(sweep::sweep_table, m)?)?;
+    Ok(())
+}

@@ -1,0 +1,66 @@
+"""adit.sweep: the same sweep on a Dask LocalCluster and on the local pool gives the same table;
+killed half way, a sweep started again makes only the runs still missing."""
+
+import csv
+import subprocess
+import sys
+import time
+
+import pytest
+
+import adit
+
+
+def figures(table):
+    """The table's rows without the seconds (the only column that differs between machines)."""
+    with open(table) as f:
+        rows = list(csv.DictReader(f))
+    for r in rows:
+        r.pop("wall_seconds")
+    return rows
+
+
+@pytest.fixture(scope="module")
+def on_dask(root, tmp_path_factory):
+    from distributed import Client, LocalCluster
+
+    out = tmp_path_factory.mktemp("dask")
+    with LocalCluster(n_workers=2, threads_per_worker=1, processes=True) as cluster:
+        with Client(cluster) as client:
+            r = adit.sweep(root / "models" / "tunnel_sweep.json", out=out, client=client)
+    return r
+
+
+@pytest.fixture(scope="module")
+def root():
+    from conftest import ROOT
+
+    return ROOT
+
+
+def test_sixteen_realizations_run_on_a_dask_cluster(on_dask):
+    r = on_dask
+    assert len(r.rows) == 16 and r.ran == 16
+    assert all(row["status"] == "converged" for row in r.rows), [row.get("error") for row in r.rows]
+    assert r.table.exists() and r.plot.exists()
+    closures = [row["closure_m"]["tunnel"] for row in r.rows]
+    assert len(set(closures)) > 8, "realizations differ"
+    assert all(row["max_bolt_force_n_per_m"] > 0 for row in r.rows)
+
+
+def test_the_local_pool_killed_half_way_and_restarted_gives_the_dask_table(on_dask, root, tmp_path):
+    spec = root / "models" / "tunnel_sweep.json"
+    command = [sys.executable, "-m", "adit.sweep", str(spec), "--out", str(tmp_path), "--workers", "2"]
+    child = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    runs = tmp_path / "runs"
+    start = time.time()
+    while len(list(runs.glob("*/row.json"))) < 3 and time.time() - start < 300:
+        time.sleep(0.02)
+    child.kill()
+    child.wait()
+    done = len(list(runs.glob("*/row.json")))
+    assert 3 <= done < 16, f"{done} runs done when killed"
+    assert not (tmp_path / "sweep.csv").exists()
+    again = adit.sweep(spec, out=tmp_path, workers=2)
+    assert again.ran == 16 - done
+    assert figures(again.table) == figures(on_dask.table)

@@ -1,0 +1,119 @@
+//! One run of a sweep to one row of its table.
+
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use serde::{Deserialize, Serialize};
+use serde_json::Value;
+
+use super::{RunInput, scene_of};
+use crate::model::Model;
+use crate::output::atomic::write_atomic;
+use crate::solve::Quiet;
+
+/// What one run gave: its inputs, its status, and the figures a support study compares.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Row {
+    pub id: String,
+    pub params: BTreeMap<String, Value>,
+    /// `converged`, `cycle_limit`, `failed` or `interrupted`.
+    pub status: String,
+    /// Why it failed (a bad parameter, a scene refused, a solve that failed).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub error: Option<String>,
+    pub wall_seconds: f64,
+    pub cycles: u64,
+    /// Mean wall closure of each excavation at the end of the run, m (staged scenes).
+    pub closure_m: BTreeMap<String, f64>,
+    /// Zones yielded at the end (excavated ones left out).
+    pub yielded_zones: usize,
+    /// Largest axial force of an installed bolt segment, N/m (tension positive; none without
+    /// bolts).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub max_bolt_force_n_per_m: Option<f64>,
+    /// Largest compressive axial force (thrust) of an installed liner element, N/m (none
+    /// without liners).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub max_liner_thrust_n_per_m: Option<f64>,
+}
+
+/// The folder of run `id` under the sweep's output folder.
+pub fn run_dir(out: &Path, id: &str) -> PathBuf {
+    out.join("runs").join(id)
+}
+
+/// The row run `input` left in `out` when it finished with these parameters (an interrupted
+/// run left none): the run need not be made again.
+pub fn done(out: &Path, input: &RunInput) -> Option<Row> {
+    let text = std::fs::read_to_string(run_dir(out, &input.id).join("row.json")).ok()?;
+    let row: Row = serde_json::from_str(&text).ok()?;
+    (row.params == input.params).then_some(row)
+}
+
+/// Run `input` on `base` into `<out>/runs/<id>/` and return its row, a failure included; the
+/// row is also left as `row.json` there (but for an interrupted run, which a restart makes
+/// again).
+pub fn run_one(base: &Value, input: &RunInput, out: &Path) -> Row {
+    let start = Instant::now();
+    let dir = run_dir(out, &input.id);
+    let mut row = Row {
+        id: input.id.clone(),
+        params: input.params.clone(),
+        status: "failed".into(),
+        error: None,
+        wall_seconds: 0.0,
+        cycles: 0,
+        closure_m: BTreeMap::new(),
+        yielded_zones: 0,
+        max_bolt_force_n_per_m: None,
+        max_liner_thrust_n_per_m: None,
+    };
+    let ran = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| -> anyhow::Result<_> {
+        let scene = scene_of(base, input)?;
+        let scene = crate::Scene::from_json(&scene.to_string(), &input.id)?;
+        crate::run_scene(&scene, &dir, &mut Quiet)
+    }));
+    match ran {
+        Ok(Ok(r)) => {
+            row.status = r.summary.status.clone();
+            row.error = r.summary.reason.clone();
+            row.cycles = r.summary.cycles;
+            if let Some(last) = r.summary.stages.last() {
+                row.closure_m = last.closure.clone();
+            }
+            figures(&mut row, &r.built.model);
+        }
+        Ok(Err(e)) => row.error = Some(format!("{e:#}")),
+        Err(_) => row.error = Some("the run panicked (a defect of the engine)".into()),
+    }
+    row.wall_seconds = start.elapsed().as_secs_f64();
+    if row.status != "interrupted" {
+        let text = serde_json::to_string_pretty(&row).expect("a row serializes");
+        let saved = std::fs::create_dir_all(&dir)
+            .and_then(|_| write_atomic(&dir.join("row.json"), |w| w.write_all(text.as_bytes())));
+        if let Err(e) = saved {
+            row.error
+                .get_or_insert_with(|| format!("row.json not written: {e}"));
+        }
+    }
+    row
+}
+
+/// Yielded zones, the largest bolt force and liner thrust of the model at the run's end.
+fn figures(row: &mut Row, model: &Model) {
+    let z = &model.zones;
+    row.yielded_zones = (0..z.len())
+        .filter(|&e| z.state[e] != 0 && !model.blocks.is_removed(z.block[e] as usize))
+        .count();
+    let (c, l) = (&model.supports.cables, &model.supports.liners);
+    let installed = |group: u32, active: &[bool]| active[group as usize];
+    row.max_bolt_force_n_per_m = (0..c.segment.len())
+        .filter(|&k| installed(c.segment_group[k], &c.active))
+        .map(|k| c.axial[k])
+        .reduce(f64::max);
+    row.max_liner_thrust_n_per_m = (0..l.element.len())
+        .filter(|&k| installed(l.element_group[k], &l.active))
+        .map(|k| -l.axial[k])
+        .reduce(f64::max);
+}
