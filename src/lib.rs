@@ -6,6 +6,7 @@
 //! results. Units are SI
 //! (m, Pa, kg, s), tension positive.
 
+pub mod checkpoint;
 pub mod contact;
 pub mod cycle;
 mod damping;
@@ -25,5 +26,5 @@ pub mod support;
 pub mod sweep;
 mod vector_state;
 
-pub use run::{RunResult, run_scene};
+pub use run::{RunResult, run_scene, run_scene_from};
 pub use scene::Scene;

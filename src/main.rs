@@ -5,11 +5,11 @@ use std::process::ExitCode;
 
 use std::io::Write;
 
+use adit::Scene;
 use adit::output::OutputWriter;
 use adit::run::default_out_dir;
 use adit::setup::{mesh, setup, setup_meshed};
 use adit::solve::{HistoryRow, Observer, Status};
-use adit::{Scene, run_scene};
 use clap::{Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressStyle};
 
@@ -42,6 +42,10 @@ enum Command {
         /// No progress bar.
         #[arg(long)]
         quiet: bool,
+        /// Go on from stage N (numbered from 1) with the checkpoint stage N − 1 left in the output
+        /// folder: the numbers of the run that was not stopped.
+        #[arg(long, value_name = "N", default_value_t = 1)]
+        from_stage: usize,
     },
     /// Validate a scene and print mesh statistics, without solving.
     Check { scene: PathBuf },
@@ -88,7 +92,12 @@ fn load(path: &Path) -> anyhow::Result<Scene> {
     Ok(Scene::load(path)?)
 }
 
-fn run(scene_path: &Path, out: Option<PathBuf>, quiet: bool) -> anyhow::Result<ExitCode> {
+fn run(
+    scene_path: &Path,
+    out: Option<PathBuf>,
+    quiet: bool,
+    from_stage: usize,
+) -> anyhow::Result<ExitCode> {
     let scene = load(scene_path)?;
     let out = out.unwrap_or_else(|| default_out_dir(&scene));
     let bar = if quiet {
@@ -101,7 +110,8 @@ fn run(scene_path: &Path, out: Option<PathBuf>, quiet: bool) -> anyhow::Result<E
             .progress_chars("=> "),
     );
     let mut progress = Progress(bar, String::new());
-    let result = run_scene(&scene, &out, &mut progress)?;
+    anyhow::ensure!(from_stage >= 1, "--from-stage: stages are numbered from 1");
+    let result = adit::run_scene_from(&scene, &out, from_stage, &mut progress)?;
     progress.0.finish_and_clear();
     let s = &result.summary;
     for w in &s.warnings {
@@ -272,11 +282,16 @@ fn write_mesh(scene_path: &Path, out: Option<PathBuf>) -> anyhow::Result<()> {
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
-        Command::Run { scene, out, quiet } => {
+        Command::Run {
+            scene,
+            out,
+            quiet,
+            from_stage,
+        } => {
             // Ctrl-C and SIGTERM stop the solve at the end of a cycle; the run then writes what
             // it has, with status `interrupted`.
             adit::interrupt::install();
-            run(&scene, out, quiet)
+            run(&scene, out, quiet, from_stage)
         }
         Command::Check { scene } => check(&scene).map(|_| ExitCode::SUCCESS),
         Command::Mesh { scene, out } => write_mesh(&scene, out).map(|_| ExitCode::SUCCESS),

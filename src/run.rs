@@ -3,10 +3,12 @@
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
+use crate::checkpoint::{self, RunSoFar};
 use crate::cycle::{Cycle, ZoneScheme};
 use crate::implicit::{self, Method};
 use crate::model::Model;
 use crate::model::bodies::BodyMode;
+use crate::output::atomic::write_atomic;
 use crate::output::{FarFieldSummary, OutputWriter, StageSummary, Summary, measured};
 use crate::scene::Scene;
 use crate::scene::SolveMethod;
@@ -98,15 +100,40 @@ pub fn ensure_time_step(solver: &Solver) -> anyhow::Result<()> {
 /// `history.csv` and a `summary.json` with status `failed`, but no final zone grid. An
 /// interruption asked for before the run (`interrupt::requested`) stops it at once: a caller that
 /// runs again after a Ctrl-C clears it first (`interrupt::clear`), as the Python package does,
-/// while a sweep's concurrent runs all stop on one.
+/// while a sweep's concurrent runs all stop on one. Each stage that ends leaves its checkpoint
+/// (`checkpoint::path`).
 pub fn run_scene(
     scene: &Scene,
     out_dir: &Path,
     observer: &mut dyn Observer,
 ) -> anyhow::Result<RunResult> {
+    run_scene_from(scene, out_dir, 1, observer)
+}
+
+/// [`run_scene`] from stage `from` (numbered from 1): with `from` > 1, the run goes on from the
+/// checkpoint stage `from − 1` left in `out_dir` (`adit run --from-stage`), keeping the earlier
+/// stages' output steps and history, and gives the numbers of the run that was not stopped.
+pub fn run_scene_from(
+    scene: &Scene,
+    out_dir: &Path,
+    from: usize,
+    observer: &mut dyn Observer,
+) -> anyhow::Result<RunResult> {
     let start = Instant::now();
-    let mut writer = OutputWriter::for_run(out_dir, &scene.name)?;
-    let result = build_solve_write(scene, &mut writer, observer, start);
+    let resumed = if from > 1 {
+        Some(std::fs::read(checkpoint::path(out_dir, from - 1)).map_err(|e| {
+            anyhow::anyhow!(
+                "--from-stage {from}: no checkpoint of stage {} in {} ({e}); run the scene from \
+                 the start first",
+                from - 1,
+                out_dir.display()
+            )
+        })?)
+    } else {
+        None
+    };
+    let mut writer = OutputWriter::for_run(out_dir, &scene.name, from)?;
+    let result = build_solve_write(scene, &mut writer, observer, start, resumed.as_deref());
     if let Err(e) = &result {
         // The summary must not stay `running`; the error itself is the caller's to report.
         let _ = writer.write_status("failed", Some(&format!("{e:#}")));
@@ -138,23 +165,58 @@ fn build_solve_write(
     writer: &mut OutputWriter,
     observer: &mut dyn Observer,
     start: Instant,
+    resumed: Option<&[u8]>,
 ) -> anyhow::Result<RunResult> {
     let mut built = setup(scene)?;
     let Setup { model, plan, .. } = &mut built;
     let mut staging = Staging::new(plan);
-    let (mut history, mut cycles, mut output_seconds) = (Vec::new(), 0u64, 0.0);
     let mut seconds = crate::cycle::StageSeconds::default();
-    let mut stage_summaries = Vec::new();
+    let mut output_seconds = 0.0;
     let mut last: Option<(Solver, Solution)> = None;
     // A stage asking the implicit path of a model it cannot solve is refused before any solve.
     for i in 0..plan.stages.len() {
         stage_method(plan, i, model)?;
     }
-    let (mut methods, mut implicit_cost) = (Vec::new(), None::<implicit::Cost>);
+    // Going on from a checkpoint: the stages before replayed (what the state does not hold),
+    // then the state put in.
+    let so_far = match resumed {
+        Some(bytes) => {
+            let first = writer.first_stage();
+            anyhow::ensure!(
+                first < plan.stages.len(),
+                "--from-stage {}: the scene has {} stage(s)",
+                first + 1,
+                plan.stages.len()
+            );
+            for stage in &plan.stages[..first] {
+                staging.apply(stage, model, plan);
+            }
+            let run = checkpoint::decode(bytes, scene, model)
+                .map_err(|e| anyhow::anyhow!("--from-stage {}: {e}", first + 1))?;
+            anyhow::ensure!(
+                run.stages_done == first,
+                "--from-stage {}: the checkpoint is of stage {}",
+                first + 1,
+                run.stages_done
+            );
+            writer.resume(&run.steps, &run.history)?;
+            run
+        }
+        None => RunSoFar::default(),
+    };
+    let RunSoFar {
+        mut history,
+        mut cycles,
+        summaries: mut stage_summaries,
+        mut methods,
+        implicit: mut implicit_cost,
+        ..
+    } = so_far;
     // The last factorization, whose symbolic analysis a later stage reuses while the stiffness
     // keeps its pattern.
     let mut analysis = implicit::Analysis::default();
-    for (i, stage) in plan.stages.iter().enumerate() {
+    let first = writer.first_stage();
+    for (i, stage) in plan.stages.iter().enumerate().skip(first) {
         staging.apply(stage, model, plan);
         writer.set_stage(i, &stage.name);
         let mut solver = Solver::new(model, &stage.solve, scene.output.every);
@@ -240,6 +302,21 @@ fn build_solve_write(
         let interrupted = solution.status == Status::Interrupted;
         if !failed {
             writer.write_step(model, cycles as f64)?;
+        }
+        if !failed && !interrupted {
+            let run = RunSoFar {
+                stages_done: i + 1,
+                cycles,
+                history: history.clone(),
+                summaries: stage_summaries.clone(),
+                methods: methods.clone(),
+                implicit: implicit_cost,
+                steps: writer.steps(),
+            };
+            let bytes = checkpoint::encode(scene, &run, model);
+            let path = checkpoint::path(&writer.dir, i + 1);
+            std::fs::create_dir_all(path.parent().expect("a checkpoint has a folder"))?;
+            write_atomic(&path, |w| w.write_all(&bytes))?;
         }
         output_seconds += t.elapsed().as_secs_f64();
         last = Some((solver, solution));

@@ -13,7 +13,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use adit::output::arrays::{Tables, Values, names};
-use adit::{Scene, run_scene};
+use adit::{Scene, run_scene_from};
 
 use progress::Progress;
 
@@ -42,20 +42,27 @@ fn parse(scene_json: &str) -> PyResult<Scene> {
     })
 }
 
-/// Run the scene given as JSON text, writing its output files into `out` (default: the scene's
-/// `output.folder`, else `out/<name>`), calling `progress(row)` at each monitor step with a dict
+/// Run the scene given as JSON text (from stage `from_stage`, numbered from 1: a later one goes on
+/// from the checkpoint the stage before left in `out`), writing its output files into `out`
+/// (default: the scene's `output.folder`, else `out/<name>`), calling `progress(row)` at each monitor step with a dict
 /// of `cycle`, `time_s`, `ratio` and `kinetic_energy_j_per_m`. Ctrl-C stops the run at the end of
 /// a cycle (its files are written, its summary says `interrupted`) and raises
 /// `KeyboardInterrupt`; an exception in `progress` stops it the same way and is raised. Returns
 /// a dict of the results (`adit.Results` wraps it).
 #[pyfunction]
-#[pyo3(signature = (scene_json, out=None, progress=None))]
+#[pyo3(signature = (scene_json, out=None, progress=None, from_stage=1))]
 fn run<'py>(
     py: Python<'py>,
     scene_json: &str,
     out: Option<PathBuf>,
     progress: Option<Py<PyAny>>,
+    from_stage: usize,
 ) -> PyResult<Bound<'py, PyDict>> {
+    if from_stage < 1 {
+        return Err(PyValueError::new_err(
+            "from_stage: stages are numbered from 1",
+        ));
+    }
     let scene = parse(scene_json)?;
     let out = out.unwrap_or_else(|| adit::run::default_out_dir(&scene));
     // A Ctrl-C that stopped an earlier run of this process does not stop this one.
@@ -65,7 +72,7 @@ fn run<'py>(
     let dir = out.clone();
     let worker = std::thread::spawn(move || {
         let mut observer = Progress::new(progress);
-        let result = run_scene(&scene, &dir, &mut observer);
+        let result = run_scene_from(&scene, &dir, from_stage, &mut observer);
         (result, observer)
     });
     let mut interrupted = false;

@@ -101,3 +101,13 @@ def test_ctrl_c_stops_the_run_and_leaves_it_interrupted(root, tmp_path):
     assert '"interrupted"' in summary
     # The next run of this process is not stopped by the earlier Ctrl-C.
     assert adit.run(root / "models" / "kirsch.json", out=tmp_path / "next").status == "converged"
+
+
+def test_a_run_from_stage_2_equals_the_whole_run(root, tmp_path):
+    scene = root / "models" / "tunnel.json"
+    whole = adit.run(scene, out=tmp_path)
+    again = adit.run(scene, out=tmp_path, from_stage=2)
+    assert np.array_equal(whole.zones["stress_pa"], again.zones["stress_pa"])
+    assert np.array_equal(whole.nodes["displacement_m"], again.nodes["displacement_m"])
+    assert np.array_equal(whole.history["ratio"], again.history["ratio"])
+    assert whole.summary["stages"] == again.summary["stages"]

@@ -31,6 +31,8 @@ pub struct OutputWriter {
     steps: Vec<Step>,
     /// The stage the next steps belong to and its number (`set_stage`; `None` before the first).
     stage: Option<(usize, String)>,
+    /// The index of the first stage the run solves (`for_run`).
+    first_stage: usize,
     /// Whether rows go to `history.csv` as the run goes (`for_run`, until `write_history`).
     live_history: bool,
     /// That file, from the first row on, flushed at each row, so that a killed run keeps its
@@ -48,30 +50,97 @@ impl OutputWriter {
             name: name.to_string(),
             steps: Vec::new(),
             stage: None,
+            first_stage: 0,
             live_history: false,
             history: None,
         })
     }
 
-    /// Open `dir` for a run of the scene `name`: remove what an earlier run of that name left there
-    /// (`is_run_output`), then write a `summary.json` with status `running`. A folder then never
-    /// shows an earlier run's results as this one's, and one that cannot be written fails here,
-    /// before anything is solved.
-    pub fn for_run(dir: &Path, name: &str) -> anyhow::Result<OutputWriter> {
+    /// Open `dir` for a run of the scene `name` from stage `from` (numbered from 1): from the
+    /// first, remove what an earlier run of that name left there (`is_run_output`, and its
+    /// checkpoints); from a later one, keep it until `resume` says which steps to keep. Then
+    /// write a `summary.json` with status `running`. A folder then never shows an earlier run's
+    /// results as this one's, and one that cannot be written fails here, before anything is
+    /// solved.
+    pub fn for_run(dir: &Path, name: &str, from: usize) -> anyhow::Result<OutputWriter> {
         let writer = OutputWriter::new(dir, name)?;
+        if from <= 1 {
+            writer.remove_outputs(0, 0)?;
+        }
+        writer
+            .write_status("running", None)
+            .map_err(|e| anyhow::anyhow!("output folder {}: {e}", dir.display()))?;
+        Ok(OutputWriter {
+            live_history: true,
+            first_stage: from.saturating_sub(1),
+            ..writer
+        })
+    }
+
+    /// Remove the outputs of an earlier run of this scene but its first `steps` output steps
+    /// and its checkpoints of stages up to `stages`.
+    fn remove_outputs(&self, steps: usize, stages: usize) -> anyhow::Result<()> {
+        let dir = &self.dir;
         let in_folder = |e: std::io::Error| anyhow::anyhow!("output folder {}: {e}", dir.display());
         for entry in std::fs::read_dir(dir).map_err(in_folder)? {
             let entry = entry.map_err(in_folder)?;
             let file = entry.file_name().to_string_lossy().into_owned();
-            if is_run_output(&file, name) {
+            let kept = step_of(&file, &self.name).is_some_and(|s| s < steps);
+            if is_run_output(&file, &self.name) && !kept {
                 std::fs::remove_file(entry.path()).map_err(in_folder)?;
             }
         }
-        writer.write_status("running", None).map_err(in_folder)?;
-        Ok(OutputWriter {
-            live_history: true,
-            ..writer
-        })
+        let checkpoints = dir.join("checkpoints");
+        if let Ok(entries) = std::fs::read_dir(&checkpoints) {
+            for entry in entries.flatten() {
+                let file = entry.file_name().to_string_lossy().into_owned();
+                let number = file
+                    .strip_prefix("stage_")
+                    .and_then(|f| f.strip_suffix(".ckpt"))
+                    .and_then(|n| n.parse::<usize>().ok());
+                if number.is_some_and(|n| n > stages) {
+                    std::fs::remove_file(entry.path()).map_err(in_folder)?;
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// The index of the first stage this writer's run solves (0 unless it goes on from a
+    /// checkpoint).
+    pub fn first_stage(&self) -> usize {
+        self.first_stage
+    }
+
+    /// The output steps written so far: timestep, stage and files of each.
+    pub fn steps(&self) -> Vec<(f64, String, Vec<String>)> {
+        self.steps
+            .iter()
+            .map(|s| (s.timestep, s.stage.clone(), s.files.clone()))
+            .collect()
+    }
+
+    /// Go on from a checkpoint: keep its output `steps` (removing any later step and
+    /// checkpoint an earlier run left) and start `history.csv` with its `history`.
+    pub fn resume(
+        &mut self,
+        steps: &[(f64, String, Vec<String>)],
+        history: &[HistoryRow],
+    ) -> anyhow::Result<()> {
+        self.remove_outputs(steps.len(), self.first_stage)?;
+        self.steps = steps
+            .iter()
+            .map(|(timestep, stage, files)| Step {
+                timestep: *timestep,
+                stage: stage.clone(),
+                files: files.clone(),
+            })
+            .collect();
+        self.history = None;
+        for r in history {
+            self.append_history(r)?;
+        }
+        Ok(())
     }
 
     /// Add a row to the `history.csv` a run writes as it goes (nothing for other writers).
@@ -385,6 +454,13 @@ fn is_run_output(file: &str, name: &str) -> bool {
                 .and_then(|r| r.strip_suffix(".vtu"))
                 .is_some_and(|n| n.len() == 4 && n.bytes().all(|b| b.is_ascii_digit()))
         })
+}
+
+/// The step number of an output grid file of the scene `name` (`<name>_<kind>_NNNN.vtu`).
+fn step_of(file: &str, name: &str) -> Option<usize> {
+    let rest = file.strip_prefix(name)?.strip_suffix(".vtu")?;
+    let (_, number) = rest.rsplit_once('_')?;
+    (number.len() == 4).then(|| number.parse().ok())?
 }
 
 /// A CSV field (RFC 4180): quoted, with quotes doubled, when it holds a comma, a quote or a line

@@ -136,6 +136,7 @@ def run(
     scene: SceneLike,
     out: Optional[Union[str, "os.PathLike[str]"]] = None,
     progress: Optional[Callable[[ProgressRow], None]] = None,
+    from_stage: int = 1,
 ) -> Results:
     """Run ``scene`` and return its results.
 
@@ -145,8 +146,14 @@ def run(
     and raises ``KeyboardInterrupt``; an exception in ``progress`` stops it the same way and is
     raised. A scene that is not valid raises ``ValueError`` naming the field; a run that cannot
     be built or solved raises ``RuntimeError`` with the reason.
+
+    Each stage that ends leaves a checkpoint in ``out/checkpoints/``; ``from_stage=N`` goes on
+    from the one stage N - 1 left, giving the numbers of the run that was not stopped (the
+    results then hold the whole run).
     """
-    raw = _adit.run(_scene_json(scene), None if out is None else os.fspath(out), progress)
+    raw = _adit.run(
+        _scene_json(scene), None if out is None else os.fspath(out), progress, from_stage
+    )
     return Results(
         nodes=raw["nodes"],
         zones=raw["zones"],

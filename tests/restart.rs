@@ -1,0 +1,163 @@
+//! Checkpoints and `--from-stage`: a run of `models/tunnel.json` restarted from stage 2 or 3
+//! writes the files of the run that was not stopped, bit for bit, also after the first run was
+//! killed in the middle of a stage; a checkpoint of another scene, a damaged one or a missing one
+//! is refused naming why.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+use std::time::{Duration, Instant};
+
+use adit::solve::Quiet;
+use adit::{Scene, run_scene, run_scene_from};
+
+fn tunnel() -> Scene {
+    Scene::load(&Path::new(env!("CARGO_MANIFEST_DIR")).join("models/tunnel.json")).unwrap()
+}
+
+fn folder(tag: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("adit-restart-{tag}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    d
+}
+
+fn copy(from: &Path, to: &Path) {
+    std::fs::create_dir_all(to.join("checkpoints")).unwrap();
+    for sub in ["", "checkpoints"] {
+        for e in std::fs::read_dir(from.join(sub)).unwrap().flatten() {
+            if e.path().is_file() {
+                std::fs::copy(e.path(), to.join(sub).join(e.file_name())).unwrap();
+            }
+        }
+    }
+}
+
+/// Every result file of `a` is in `b` with the same bytes (summary.json: the same figures but
+/// for the seconds), and `b` has no other.
+fn same_results(a: &Path, b: &Path) {
+    let names = |d: &Path| -> Vec<String> {
+        let mut v: Vec<String> = std::fs::read_dir(d)
+            .unwrap()
+            .flatten()
+            .filter(|e| e.path().is_file())
+            .map(|e| e.file_name().to_string_lossy().into_owned())
+            .collect();
+        v.sort();
+        v
+    };
+    assert_eq!(names(a), names(b));
+    for f in names(a) {
+        if f.ends_with(".vtu") || f.ends_with(".csv") || f.ends_with(".pvd") {
+            assert!(
+                std::fs::read(a.join(&f)).unwrap() == std::fs::read(b.join(&f)).unwrap(),
+                "{f} differs"
+            );
+        }
+    }
+    let summary = |d: &Path| -> serde_json::Value {
+        serde_json::from_str(&std::fs::read_to_string(d.join("summary.json")).unwrap()).unwrap()
+    };
+    let (x, y) = (summary(a), summary(b));
+    for key in [
+        "status",
+        "cycles",
+        "final_ratio",
+        "stages",
+        "zones",
+        "contacts",
+    ] {
+        assert_eq!(x[key], y[key], "summary.json {key}");
+    }
+}
+
+#[test]
+fn a_run_from_stage_2_or_3_equals_the_run_not_stopped() {
+    let whole = folder("whole");
+    run_scene(&tunnel(), &whole, &mut Quiet).unwrap();
+    for n in [3, 2] {
+        let again = folder(&format!("from{n}"));
+        copy(&whole, &again);
+        let r = run_scene_from(&tunnel(), &again, n, &mut Quiet).unwrap();
+        assert_eq!(r.summary.status, "converged");
+        same_results(&whole, &again);
+        std::fs::remove_dir_all(&again).unwrap();
+    }
+    std::fs::remove_dir_all(&whole).unwrap();
+}
+
+#[test]
+fn a_run_killed_in_its_last_stage_goes_on_from_the_checkpoint_before() {
+    let whole = folder("whole-cli");
+    run_scene(&tunnel(), &whole, &mut Quiet).unwrap();
+    let killed = folder("killed");
+    let adit = env!("CARGO_BIN_EXE_adit");
+    let scene = concat!(env!("CARGO_MANIFEST_DIR"), "/models/tunnel.json");
+    let mut child = Command::new(adit)
+        .args(["run", scene, "--quiet", "--out"])
+        .arg(&killed)
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    let start = Instant::now();
+    let second = killed.join("checkpoints/stage_02.ckpt");
+    while !second.exists() && start.elapsed() < Duration::from_secs(120) {
+        std::thread::sleep(Duration::from_millis(2));
+    }
+    child.kill().unwrap();
+    child.wait().unwrap();
+    assert!(
+        !killed.join("checkpoints/stage_03.ckpt").exists(),
+        "killed before its last stage ended"
+    );
+    let out = Command::new(adit)
+        .args(["run", scene, "--quiet", "--from-stage", "3", "--out"])
+        .arg(&killed)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    same_results(&whole, &killed);
+    std::fs::remove_dir_all(&whole).unwrap();
+    std::fs::remove_dir_all(&killed).unwrap();
+}
+
+#[test]
+fn a_checkpoint_of_another_scene_or_damaged_or_missing_is_refused() {
+    let dir = folder("refused");
+    let mut small = tunnel();
+    small.stages.truncate(2);
+    run_scene(&small, &dir, &mut Quiet).unwrap();
+    let error = |scene: &Scene, n: usize| {
+        let e = run_scene_from(scene, &dir, n, &mut Quiet)
+            .err()
+            .expect("refused");
+        format!("{e:#}")
+    };
+    let mut other = small.clone();
+    other.in_situ.sxx *= 1.01;
+    assert!(
+        error(&other, 2).contains("another scene"),
+        "{}",
+        error(&other, 2)
+    );
+    assert!(
+        error(&small, 3).contains("the scene has 2 stage(s)"),
+        "{}",
+        error(&small, 3)
+    );
+    assert!(error(&small, 5).contains("no checkpoint of stage 4"));
+    let path = dir.join("checkpoints/stage_01.ckpt");
+    let bytes = std::fs::read(&path).unwrap();
+    std::fs::write(&path, &bytes[..bytes.len() / 2]).unwrap();
+    assert!(
+        error(&small, 2).contains("ends early"),
+        "{}",
+        error(&small, 2)
+    );
+    std::fs::write(&path, b"not a checkpoint at all").unwrap();
+    assert!(error(&small, 2).contains("not an adit checkpoint"));
+    std::fs::remove_dir_all(&dir).unwrap();
+}
