@@ -64,3 +64,32 @@ def test_the_local_pool_killed_half_way_and_restarted_gives_the_dask_table(on_da
     again = adit.sweep(spec, out=tmp_path, workers=2)
     assert again.ran == 16 - done
     assert figures(again.table) == figures(on_dask.table)
+
+
+def test_a_spec_as_a_dict_draws_its_runs_and_a_failing_run_is_a_row(root, tmp_path):
+    spec = {
+        "name": "small",
+        "base": str(root / "models" / "kirsch.json"),
+        "grid": {
+            "zoning.edge_far": [8.0],
+            "zoning.edge_at_excavation": [0.3],
+            # The second value is not a Poisson's ratio: that run fails, naming the field.
+            "materials.rock.poisson": [0.25, 0.7],
+        },
+        "draws": {"count": 2, "seed": 5, "uniform": {"in_situ.sxx": [-20e6, -10e6]}},
+    }
+    r = adit.sweep(spec, out=tmp_path, workers=2)
+    assert [row["id"] for row in r.rows] == ["run_0000", "run_0001", "run_0002", "run_0003"]
+    statuses = [row["status"] for row in r.rows]
+    assert statuses == ["converged", "converged", "failed", "failed"], statuses
+    assert all("poisson" in row["error"] for row in r.rows[2:])
+    sxx = [row["params"]["in_situ.sxx"] for row in r.rows]
+    assert sxx[0] == sxx[2] and sxx[1] == sxx[3] and sxx[0] != sxx[1], "common draws"
+    assert all(-20e6 <= x < -10e6 for x in sxx)
+    again = adit.sweep(spec, out=tmp_path, workers=2)
+    assert again.ran == 0, "every run, failed ones too, has its row"
+    try:
+        import pyarrow.parquet as pq
+    except ImportError:
+        return
+    assert pq.read_table(tmp_path / "sweep.parquet").num_rows == 4

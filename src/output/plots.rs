@@ -49,17 +49,7 @@ pub fn write_plots(
         if lines.iter().all(|l| l.points.is_empty()) {
             return;
         }
-        let drawn = std::panic::catch_unwind(|| draw(title, axes, log_y, &lines));
-        let written = match drawn {
-            Ok(Ok(png)) => {
-                write_atomic(&dir.join(file), |w| w.write_all(&png)).map_err(|e| e.to_string())
-            }
-            Ok(Err(e)) => Err(e),
-            Err(_) => Err("the plotting library panicked (no usable font?)".to_string()),
-        };
-        if let Err(e) = written {
-            warnings.push(format!("{file} not written: {e}"));
-        }
+        warnings.extend(write_png(dir, file, || draw(title, axes, log_y, &lines)));
     };
     let ratio = history
         .iter()
@@ -221,11 +211,33 @@ fn draw(
         }
         root.present().map_err(|e| err(&e))?;
     }
+    png(&rgb, SIZE)
+}
+
+/// An RGB buffer of `size` pixels as PNG bytes.
+fn png(rgb: &[u8], size: (u32, u32)) -> Result<Vec<u8>, String> {
     let mut png = Vec::new();
     image::codecs::png::PngEncoder::new(&mut png)
-        .write_image(&rgb, SIZE.0, SIZE.1, image::ColorType::Rgb8)
+        .write_image(rgb, size.0, size.1, image::ColorType::Rgb8)
         .map_err(|e| e.to_string())?;
     Ok(png)
+}
+
+/// Write the PNG `draw` makes as `file` in `dir`, atomically; a warning when it could not be
+/// drawn or written (a panic of the plotting library included).
+fn write_png(
+    dir: &Path,
+    file: &str,
+    draw: impl FnOnce() -> Result<Vec<u8>, String> + std::panic::UnwindSafe,
+) -> Option<String> {
+    let written = match std::panic::catch_unwind(draw) {
+        Ok(Ok(png)) => {
+            write_atomic(&dir.join(file), |w| w.write_all(&png)).map_err(|e| e.to_string())
+        }
+        Ok(Err(e)) => Err(e),
+        Err(_) => Err("the plotting library panicked (no usable font?)".to_string()),
+    };
+    written.err().map(|e| format!("{file} not written: {e}"))
 }
 
 /// Write `file` into `dir`: one panel per figure, its values sorted against the fraction of
@@ -235,17 +247,7 @@ pub fn write_spread(dir: &Path, file: &str, figures: &[(String, Vec<f64>)]) -> V
     if figures.is_empty() {
         return Vec::new();
     }
-    let drawn = std::panic::catch_unwind(|| spread(figures));
-    let written = match drawn {
-        Ok(Ok(png)) => {
-            write_atomic(&dir.join(file), |w| w.write_all(&png)).map_err(|e| e.to_string())
-        }
-        Ok(Err(e)) => Err(e),
-        Err(_) => Err("the plotting library panicked (no usable font?)".to_string()),
-    };
-    written
-        .err()
-        .map(|e| format!("{file} not written: {e}"))
+    write_png(dir, file, || spread(figures))
         .into_iter()
         .collect()
 }
@@ -293,11 +295,7 @@ fn spread(figures: &[(String, Vec<f64>)]) -> Result<Vec<u8>, String> {
         }
         root.present().map_err(|e| err(&e))?;
     }
-    let mut png = Vec::new();
-    image::codecs::png::PngEncoder::new(&mut png)
-        .write_image(&rgb, size.0, size.1, image::ColorType::Rgb8)
-        .map_err(|e| e.to_string())?;
-    Ok(png)
+    png(&rgb, size)
 }
 
 #[cfg(test)]
