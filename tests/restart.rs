@@ -124,6 +124,81 @@ fn a_run_killed_in_its_last_stage_goes_on_from_the_checkpoint_before() {
     std::fs::remove_dir_all(&killed).unwrap();
 }
 
+/// The tunnel model with simple blocks to its left and rigid ones above (bodies, bolts, liners,
+/// contacts and zones in one scene).
+fn every_kind() -> Scene {
+    let mut s = tunnel();
+    s.blocks = serde_json::from_value(serde_json::json!({
+        "mode": "deformable",
+        "regions": [
+            { "mode": "simple", "polygon": [[-40, -40], [-15, -40], [-15, 40], [-40, 40]] },
+            { "mode": "rigid", "polygon": [[-15, 20], [40, 20], [40, 40], [-15, 40]] }
+        ]
+    }))
+    .unwrap();
+    s
+}
+
+/// The state a checkpoint puts into a model built anew is the state of the model that ran, field
+/// by field: what a solve or a stage changes is all saved (a field left out shows here).
+#[test]
+fn a_restored_model_is_the_model_that_ran() {
+    let mut two = every_kind();
+    two.stages.truncate(2);
+    let dir = folder("fields");
+    let ran = run_scene(&two, &dir, &mut Quiet).unwrap();
+    assert!(ran.summary.rigid_blocks > 0 && ran.summary.simple_blocks > 0);
+    let bytes = std::fs::read(dir.join("checkpoints/stage_02.ckpt")).unwrap();
+    let mut built = adit::setup::setup(&two).unwrap();
+    let adit::setup::Setup { model, plan, .. } = &mut built;
+    let mut staging = adit::stage::Staging::new(plan);
+    for stage in &plan.stages {
+        staging.apply(stage, model, plan);
+    }
+    adit::checkpoint::decode(&bytes, &two, model).unwrap();
+    let (x, y) = (&ran.built.model, &*model);
+    for (name, a, b) in [
+        ("nodes", format!("{:?}", x.nodes), format!("{:?}", y.nodes)),
+        ("zones", format!("{:?}", x.zones), format!("{:?}", y.zones)),
+        (
+            "bodies",
+            format!("{:?}", x.bodies),
+            format!("{:?}", y.bodies),
+        ),
+        (
+            "blocks",
+            format!("{:?}", x.blocks),
+            format!("{:?}", y.blocks),
+        ),
+        (
+            "contacts",
+            format!("{:?}", x.contacts),
+            format!("{:?}", y.contacts),
+        ),
+        (
+            "supports",
+            format!("{:?}", x.supports),
+            format!("{:?}", y.supports),
+        ),
+        ("mixed", format!("{:?}", x.mixed), format!("{:?}", y.mixed)),
+    ] {
+        assert!(a == b, "{name} differ");
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn a_run_of_every_block_kind_from_stage_3_equals_the_run_not_stopped() {
+    let whole = folder("kinds-whole");
+    run_scene(&every_kind(), &whole, &mut Quiet).unwrap();
+    let again = folder("kinds-again");
+    copy(&whole, &again);
+    run_scene_from(&every_kind(), &again, 3, &mut Quiet).unwrap();
+    same_results(&whole, &again);
+    std::fs::remove_dir_all(&whole).unwrap();
+    std::fs::remove_dir_all(&again).unwrap();
+}
+
 #[test]
 fn a_checkpoint_of_another_scene_or_damaged_or_missing_is_refused() {
     let dir = folder("refused");

@@ -93,6 +93,8 @@ pub fn save(model: &Model, out: &mut Vec<u8>) {
     put(out, &b.mass);
     put(out, &b.force);
     put(out, &b.weight);
+    put(out, &b.area);
+    put(out, &b.radius);
     put(out, &b.material);
     put(out, &b.stress);
     put(out, &b.state);
@@ -167,6 +169,8 @@ pub fn restore(model: &mut Model, r: &mut Reader) -> anyhow::Result<()> {
     b.mass = same(r, bodies, "body masses")?;
     b.force = same(r, bodies, "body forces")?;
     b.weight = same(r, bodies, "body weights")?;
+    b.area = same(r, bodies, "body areas")?;
+    b.radius = same(r, bodies, "body radii")?;
     b.material = same(r, bodies, "body materials")?;
     b.stress = same(r, bodies, "body stresses")?;
     b.state = same(r, bodies, "body states")?;
