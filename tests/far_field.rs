@@ -8,28 +8,6 @@ use adit::solve::Quiet;
 
 /// The staged tunnel of `common` on a box of half-width 4 m (four tunnel radii) with the far
 /// field outside instead of the in-situ traction; its point fixities stay.
-fn staged_with_far_field(method: &str) -> Scene {
-    let text = common::STAGED_TUNNEL
-        .replace(
-            "[[-12, -12], [12, -12], [12, 12], [-12, 12]]",
-            "[[-4, -4], [4, -4], [4, 4], [-4, 4]]",
-        )
-        .replace(
-            r#""material": "rock" },"#,
-            r#""material": "rock", "far_field": { "kind": "boundary_elements" } },"#,
-        )
-        .replace(r#"{ "part": "outer", "in_situ_traction": true },"#, "")
-        .replace("[12, 0]", "[4, 0]")
-        .replace("[-12, 0]", "[-4, 0]")
-        .replace("[0, 12]", "[0, 4]")
-        .replace("[0, -12]", "[0, -4]")
-        .replace(
-            r#""ratio": 1e-6 }"#,
-            &format!(r#""ratio": 1e-7, "method": "{method}" }}"#),
-        );
-    Scene::from_json(&text, "far").unwrap()
-}
-
 /// Hydrostatic p = 10 MPa, a = 1 m, G = 4 GPa: the wall of a hole released fully moves inward
 /// by p a / 2G = 1.25 mm in the infinite medium, by half that with half the traction left.
 /// Zoned to 4 m with the far field outside, the staged run's closures give both within 2 % by
@@ -43,7 +21,7 @@ fn a_tunnel_in_a_small_box_closes_as_in_the_infinite_medium() {
         ("implicit", None),
         ("implicit", Some(2.0)),
     ] {
-        let mut sc = staged_with_far_field(method);
+        let mut sc = common::staged_with_far_field(method);
         if let Some(f) = &mut sc.region.far_field {
             f.element_size = size;
         }
@@ -121,7 +99,7 @@ fn what_a_far_field_cannot_do_is_refused() {
 #[test]
 fn a_model_at_rest_stays_at_rest() {
     for gravity in [false, true] {
-        let mut sc = staged_with_far_field("explicit");
+        let mut sc = common::staged_with_far_field("explicit");
         sc.excavations.clear();
         sc.stages.clear();
         if gravity {
@@ -147,7 +125,7 @@ fn a_model_at_rest_stays_at_rest() {
 #[test]
 fn a_floating_far_field_model_is_named_implicitly() {
     for method in ["explicit", "implicit"] {
-        let mut sc = staged_with_far_field(method);
+        let mut sc = common::staged_with_far_field(method);
         sc.boundary.clear();
         sc.validate().unwrap();
         let out = std::env::temp_dir().join(format!("adit-test-far-float-{method}"));

@@ -7,6 +7,8 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
+mod common;
+
 use adit::solve::Quiet;
 use adit::{Scene, run_scene, run_scene_from};
 
@@ -197,6 +199,22 @@ fn a_run_of_every_block_kind_from_stage_3_equals_the_run_not_stopped() {
     same_results(&whole, &again);
     std::fs::remove_dir_all(&whole).unwrap();
     std::fs::remove_dir_all(&again).unwrap();
+}
+
+/// With the far field by boundary elements, explicitly and implicitly.
+#[test]
+fn a_run_with_a_far_field_from_stage_2_equals_the_run_not_stopped() {
+    for method in ["explicit", "implicit"] {
+        let scene = common::staged_with_far_field(method);
+        let whole = folder(&format!("far-{method}"));
+        run_scene(&scene, &whole, &mut Quiet).unwrap();
+        let again = folder(&format!("far-{method}-again"));
+        copy(&whole, &again);
+        run_scene_from(&scene, &again, 2, &mut Quiet).unwrap();
+        same_results(&whole, &again);
+        std::fs::remove_dir_all(&whole).unwrap();
+        std::fs::remove_dir_all(&again).unwrap();
+    }
 }
 
 #[test]

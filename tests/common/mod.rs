@@ -26,6 +26,29 @@ pub const STAGED_TUNNEL: &str = r#"{
         ]
     }"#;
 
+/// `STAGED_TUNNEL` zoned to a box of ±4 m with the elastic far field outside, solved by `method`.
+pub fn staged_with_far_field(method: &str) -> adit::Scene {
+    let text = STAGED_TUNNEL
+        .replace(
+            "[[-12, -12], [12, -12], [12, 12], [-12, 12]]",
+            "[[-4, -4], [4, -4], [4, 4], [-4, 4]]",
+        )
+        .replace(
+            r#""material": "rock" },"#,
+            r#""material": "rock", "far_field": { "kind": "boundary_elements" } },"#,
+        )
+        .replace(r#"{ "part": "outer", "in_situ_traction": true },"#, "")
+        .replace("[12, 0]", "[4, 0]")
+        .replace("[-12, 0]", "[-4, 0]")
+        .replace("[0, 12]", "[0, 4]")
+        .replace("[0, -12]", "[0, -4]")
+        .replace(
+            r#""ratio": 1e-6 }"#,
+            &format!(r#""ratio": 1e-7, "method": "{method}" }}"#),
+        );
+    adit::Scene::from_json(&text, "far").unwrap()
+}
+
 /// A lone rigid block in a dynamic run: nothing to derive a time step from.
 pub const LONE_RIGID_BLOCK: &str = r#"{
     "name": "lone",
