@@ -339,6 +339,8 @@ fn sweep(path: &Path, out: Option<PathBuf>, workers: Option<usize>) -> anyhow::R
         workers,
         out.display()
     )?;
+    std::fs::create_dir_all(&out).map_err(|e| anyhow::anyhow!("{}: {e}", out.display()))?;
+    adit::sweep::remove_table(&out).map_err(|e| anyhow::anyhow!("{}: {e}", out.display()))?;
     let count = std::sync::atomic::AtomicUsize::new(0);
     let told = |row: &adit::sweep::Row, before: bool| {
         let k = count.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
@@ -360,21 +362,24 @@ fn sweep(path: &Path, out: Option<PathBuf>, workers: Option<usize>) -> anyhow::R
     };
     let rows = adit::sweep::run_local(&base, &runs, &out, workers, &told);
     let finished: Vec<adit::sweep::Row> = rows.iter().flatten().cloned().collect();
+    if finished.len() < runs.len() {
+        eprintln!(
+            "interrupted with {} of {} runs done: run the same command again to make the others",
+            finished.len(),
+            runs.len()
+        );
+        return Ok(ExitCode::from(130));
+    }
     for w in adit::sweep::write_table(&out, &finished)? {
         eprintln!("warning: {w}");
     }
     let failed = finished.iter().filter(|r| r.status == "failed").count();
     say!(
-        "{} of {} runs in {} ({failed} failed); table {}",
+        "{} runs in {} ({failed} failed); table {}",
         finished.len(),
-        runs.len(),
         out.display(),
         out.join("sweep.csv").display()
     )?;
-    if finished.len() < runs.len() {
-        eprintln!("interrupted: run the same command again to make the runs still missing");
-        return Ok(ExitCode::from(130));
-    }
     Ok(ExitCode::SUCCESS)
 }
 

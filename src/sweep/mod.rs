@@ -5,7 +5,9 @@
 //! the Python package (`adit.sweep`, a process pool or a Dask cluster): the spec (`spec.rs`), its
 //! runs and their scenes (`plan.rs`), one run to one row (`row.rs`), and the table with its plot
 //! (`table.rs`). A run that fails is a row with its error. Each finished run leaves its row in
-//! `<out>/runs/<id>/row.json`, so a sweep started again runs only what is missing.
+//! `<out>/runs/<id>/row.json`, so a sweep started again runs only what is missing. The table is
+//! written only when every run has its row (a sweep starting removes the last one's), so a table
+//! that exists is of a sweep that finished.
 
 pub mod local;
 pub mod plan;
@@ -17,4 +19,4 @@ pub use local::run_local;
 pub use plan::{RunInput, plan, scene_of};
 pub use row::{Row, done, run_one};
 pub use spec::SweepSpec;
-pub use table::write_table;
+pub use table::{remove_table, write_table};

@@ -117,3 +117,33 @@ fn figures(row: &mut Row, model: &Model) {
         .map(|k| -l.axial[k])
         .reduce(f64::max);
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A row read back from its `row.json` has the figures it was written with, to the bit (a
+    /// restarted sweep's table is the uninterrupted one's): serde_json's `float_roundtrip`.
+    #[test]
+    fn a_row_reads_back_bit_for_bit() {
+        let mut rng = adit_meshing::joints::SplitMix(11);
+        for _ in 0..200 {
+            let x = f64::from_bits(rng.next_u64() >> 2);
+            let row = Row {
+                id: "run_0000".into(),
+                params: [("in_situ.sxx".to_string(), Value::from(-x))].into(),
+                status: "converged".into(),
+                error: None,
+                wall_seconds: 1.0,
+                cycles: 3,
+                closure_m: [("tunnel".to_string(), 0.011115722249229583 * x.fract())].into(),
+                yielded_zones: 2,
+                max_bolt_force_n_per_m: Some(x),
+                max_liner_thrust_n_per_m: None,
+            };
+            let back: Row =
+                serde_json::from_str(&serde_json::to_string_pretty(&row).unwrap()).unwrap();
+            assert_eq!(back, row);
+        }
+    }
+}

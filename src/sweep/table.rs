@@ -96,6 +96,21 @@ pub fn write_table(out: &Path, rows: &[Row]) -> anyhow::Result<Vec<String>> {
     ))
 }
 
+/// The table's files in `out`: what a sweep removes when it starts, so that a table that exists is
+/// of a sweep that finished.
+pub const TABLE_FILES: [&str; 3] = ["sweep.csv", "sweep.png", "sweep.parquet"];
+
+/// Remove the table an earlier sweep left in `out`.
+pub fn remove_table(out: &Path) -> std::io::Result<()> {
+    for file in TABLE_FILES {
+        match std::fs::remove_file(out.join(file)) {
+            Err(e) if e.kind() != std::io::ErrorKind::NotFound => return Err(e),
+            _ => {}
+        }
+    }
+    Ok(())
+}
+
 /// A parameter's value as a CSV cell: numbers and strings as they are, anything else as JSON.
 fn cell(v: &Value) -> String {
     match v {

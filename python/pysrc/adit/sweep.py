@@ -79,6 +79,9 @@ def sweep(
     name, default_out, base_json, runs = _adit.sweep_plan(text, os.fspath(spec_dir))
     out_dir = Path(out if out is not None else default_out).resolve()
     out_dir.mkdir(parents=True, exist_ok=True)
+    # A table that exists is of a sweep that finished: the last one's goes now.
+    for stale in ("sweep.csv", "sweep.png", "sweep.parquet"):
+        (out_dir / stale).unlink(missing_ok=True)
     rows: Dict[str, str] = {}
     todo = []
     for run_id, params in runs:
