@@ -44,11 +44,11 @@ fn parse(scene_json: &str) -> PyResult<Scene> {
 
 /// Run the scene given as JSON text (from stage `from_stage`, numbered from 1: a later one goes on
 /// from the checkpoint the stage before left in `out`), writing its output files into `out`
-/// (default: the scene's `output.folder`, else `out/<name>`), calling `progress(row)` at each monitor step with a dict
-/// of `cycle`, `time_s`, `ratio` and `kinetic_energy_j_per_m`. Ctrl-C stops the run at the end of
-/// a cycle (its files are written, its summary says `interrupted`) and raises
-/// `KeyboardInterrupt`; an exception in `progress` stops it the same way and is raised. Returns
-/// a dict of the results (`adit.Results` wraps it).
+/// (default: the scene's `output.folder`, else `out/<name>`), calling `progress(row)` at each
+/// monitor step with a dict of `cycle`, `time_s`, `ratio` and `kinetic_energy_j_per_m`. Ctrl-C
+/// stops the run at the end of a cycle (its files are written, its summary says `interrupted`)
+/// and raises `KeyboardInterrupt`; an exception in `progress` stops it the same way and is
+/// raised. Returns a dict of the results (`adit.Results` wraps it).
 #[pyfunction]
 #[pyo3(signature = (scene_json, out=None, progress=None, from_stage=1))]
 fn run<'py>(
