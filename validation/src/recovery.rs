@@ -203,12 +203,7 @@ mod tests {
     /// recovered field is still nearer the closed form and the indicator still sizes the error.
     #[test]
     fn the_recovery_holds_across_a_plastic_radius() {
-        let r = salencon(
-            &scaled(&crate::shipped_kirsch().unwrap(), 1.0),
-            2.0,
-            "salencon",
-        )
-        .unwrap();
+        let r = salencon(&crate::shipped_kirsch().unwrap(), 2.0, "salencon").unwrap();
         eprintln!("{r:?}");
         assert!(r.recovered_l2 < 0.5 * r.zone_l2, "{r:?}");
         assert!((0.85..1.15).contains(&r.effectivity), "{r:?}");
