@@ -15,6 +15,14 @@ const LEVELS: [f64; 4] = [2.0, 1.0, 0.6, 0.4];
 
 pub struct Recovery;
 
+/// One result on the console.
+fn say(r: &RecoveryResult) {
+    println!(
+        "{}: zones {:.3e}, recovered {:.3e}, effectivity {:.3}, correlation {:.3}",
+        r.case, r.zone_l2, r.recovered_l2, r.effectivity, r.correlation
+    );
+}
+
 impl Case for Recovery {
     fn name(&self) -> &'static str {
         "recovery"
@@ -28,10 +36,7 @@ impl Case for Recovery {
         ] {
             for f in LEVELS {
                 let r = kirsch(&scaled(&scene, f), &format!("Kirsch ×{f}, {tag}"))?;
-                println!(
-                    "{}: zones {:.3e}, recovered {:.3e}, effectivity {:.3}, correlation {:.3}",
-                    r.case, r.zone_l2, r.recovered_l2, r.effectivity, r.correlation
-                );
+                say(&r);
                 results.push(r);
             }
         }
@@ -41,10 +46,7 @@ impl Case for Recovery {
                 f,
                 &format!("Salençon ×{f}, shipped rock, r ≤ 2 Rp"),
             )?;
-            println!(
-                "{}: zones {:.3e}, recovered {:.3e}, effectivity {:.3}, correlation {:.3}",
-                r.case, r.zone_l2, r.recovered_l2, r.effectivity, r.correlation
-            );
+            say(&r);
             results.push(r);
         }
         let mut md = String::new();
