@@ -67,7 +67,8 @@ enum Command {
         #[arg(long)]
         workers: Option<usize>,
         /// A Dask scheduler's address: the runs go to its cluster, through the Python package
-        /// (`python3 -m adit.sweep`), which must be installed.
+        /// (`python3 -m adit.sweep`, or the Python that ADIT_PYTHON names), which must be
+        /// installed.
         #[arg(long)]
         scheduler: Option<String>,
     },
@@ -390,7 +391,8 @@ fn on_dask(
     workers: Option<usize>,
     address: &str,
 ) -> anyhow::Result<ExitCode> {
-    let mut python = std::process::Command::new("python3");
+    let interpreter = std::env::var("ADIT_PYTHON").unwrap_or_else(|_| "python3".into());
+    let mut python = std::process::Command::new(&interpreter);
     python
         .args(["-m", "adit.sweep"])
         .arg(spec)
@@ -402,7 +404,10 @@ fn on_dask(
         python.args(["--workers", &w.to_string()]);
     }
     let status = python.status().map_err(|e| {
-        anyhow::anyhow!("--scheduler: python3 could not be started ({e}); install the package: pip install ./python")
+        anyhow::anyhow!(
+            "--scheduler: {interpreter} could not be started ({e}); install the package \
+             (pip install ./python) or name the Python that has it in ADIT_PYTHON"
+        )
     })?;
     Ok(ExitCode::from(
         status.code().unwrap_or(1).clamp(0, 255) as u8

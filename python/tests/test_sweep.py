@@ -2,6 +2,8 @@
 killed half way, a sweep started again makes only the runs still missing."""
 
 import csv
+import json
+import os
 import subprocess
 import sys
 import time
@@ -93,3 +95,26 @@ def test_a_spec_as_a_dict_draws_its_runs_and_a_failing_run_is_a_row(root, tmp_pa
     except ImportError:
         return
     assert pq.read_table(tmp_path / "sweep.parquet").num_rows == 4
+
+
+def test_the_command_line_hands_a_sweep_to_a_dask_scheduler(root, cli, tmp_path):
+    """`adit sweep SPEC --scheduler ADDRESS`: the CLI hands the sweep to `python -m adit.sweep`."""
+    from distributed import LocalCluster
+
+    spec = {
+        "name": "small",
+        "base": str(root / "models" / "kirsch.json"),
+        "grid": {"zoning.edge_far": [8.0], "zoning.edge_at_excavation": [0.3, 0.4]},
+    }
+    path = tmp_path / "spec.json"
+    path.write_text(json.dumps(spec))
+    with LocalCluster(n_workers=1, threads_per_worker=1, processes=True) as cluster:
+        done = subprocess.run(
+            [cli, "sweep", path, "--scheduler", cluster.scheduler_address, "--out", tmp_path / "out"],
+            capture_output=True,
+            text=True,
+            env={**os.environ, "ADIT_PYTHON": sys.executable},
+        )
+    assert done.returncode == 0, done.stderr
+    rows = figures(tmp_path / "out" / "sweep.csv")
+    assert [r["status"] for r in rows] == ["converged", "converged"]
