@@ -72,6 +72,16 @@ enum Command {
         #[arg(long)]
         scheduler: Option<String>,
     },
+    /// One run of a sweep, in a process of its own (what `adit sweep` starts for each run).
+    #[command(hide = true)]
+    SweepRun {
+        /// The base scene, a JSON file.
+        base: PathBuf,
+        id: String,
+        /// The run's parameters, a JSON object of dotted paths.
+        params: String,
+        out: PathBuf,
+    },
 }
 
 /// Progress bar over cycles (or implicit iterations) showing the unbalanced-force ratio, and the
@@ -302,6 +312,15 @@ fn main() -> ExitCode {
             workers,
             scheduler: Some(address),
         } => on_dask(&spec, out, workers, &address),
+        Command::SweepRun {
+            base,
+            id,
+            params,
+            out,
+        } => {
+            adit::interrupt::install();
+            sweep_run(&base, id, &params, &out)
+        }
         Command::Sweep {
             spec,
             out,
@@ -361,7 +380,12 @@ fn sweep(path: &Path, out: Option<PathBuf>, workers: Option<usize>) -> anyhow::R
             row.status
         );
     };
-    let rows = adit::sweep::run_local(&base, &runs, &out, workers, &told);
+    // Each run in a process of its own, which reads the base scene from one file.
+    let base_file = out.join("base.json");
+    adit::output::atomic::write_atomic(&base_file, |w| w.write_all(base.to_string().as_bytes()))?;
+    let exe = std::env::current_exe()?;
+    let run = |input: &adit::sweep::RunInput| adit::sweep::in_child(&exe, &base_file, input, &out);
+    let rows = adit::sweep::run_local(&runs, &out, workers, &run, &told);
     let finished: Vec<adit::sweep::Row> = rows.iter().flatten().cloned().collect();
     if finished.len() < runs.len() {
         eprintln!(
@@ -382,6 +406,20 @@ fn sweep(path: &Path, out: Option<PathBuf>, workers: Option<usize>) -> anyhow::R
         out.join("sweep.csv").display()
     )?;
     Ok(ExitCode::SUCCESS)
+}
+
+/// `adit sweep-run`: one run of a sweep, its row left in `out`.
+fn sweep_run(base: &Path, id: String, params: &str, out: &Path) -> anyhow::Result<ExitCode> {
+    let text =
+        std::fs::read_to_string(base).map_err(|e| anyhow::anyhow!("{}: {e}", base.display()))?;
+    let base: serde_json::Value = serde_json::from_str(&text)?;
+    let params = serde_json::from_str(params)?;
+    let row = adit::sweep::run_one(&base, &adit::sweep::RunInput { id, params }, out);
+    Ok(if row.status == "interrupted" {
+        ExitCode::from(130)
+    } else {
+        ExitCode::SUCCESS
+    })
 }
 
 /// `adit sweep --scheduler ADDR`: hand the sweep to the Python package's Dask path.

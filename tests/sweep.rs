@@ -126,3 +126,55 @@ fn a_sweep_killed_half_way_runs_only_what_is_missing() {
     assert_eq!(figures(&out), figures(&whole));
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// Each run is a process of its own: one killed (as an abort would end it) is a failed row naming
+/// how it ended, and the sweep goes on with the others.
+#[test]
+fn a_run_whose_process_dies_is_a_failed_row() {
+    let dir = folder("abort");
+    let path = spec(&dir, &[-10e6, -12e6, -14e6], 200_000);
+    let out = dir.join("out");
+    let mut child = sweep(&path, &out).stdout(Stdio::null()).spawn().unwrap();
+    // The first run's process, found by its command line.
+    let first = || -> Option<String> {
+        std::fs::read_dir("/proc").ok()?.flatten().find_map(|e| {
+            let cmd = std::fs::read(e.path().join("cmdline")).ok()?;
+            let cmd = String::from_utf8_lossy(&cmd).replace('\0', " ");
+            (cmd.contains("sweep-run")
+                && cmd.contains("run_0000")
+                && cmd.contains(&*out.to_string_lossy()))
+            .then(|| e.file_name().to_string_lossy().into_owned())
+        })
+    };
+    let start = Instant::now();
+    let pid = loop {
+        if let Some(pid) = first() {
+            break pid;
+        }
+        assert!(
+            start.elapsed() < Duration::from_secs(60),
+            "no run process seen"
+        );
+        std::thread::sleep(Duration::from_millis(2));
+    };
+    assert!(
+        Command::new("kill")
+            .args(["-9", &pid])
+            .status()
+            .unwrap()
+            .success()
+    );
+    assert!(child.wait().unwrap().success());
+    let table = std::fs::read_to_string(out.join("sweep.csv")).unwrap();
+    let lines: Vec<&str> = table.lines().collect();
+    assert_eq!(lines.len(), 4, "{table}");
+    assert!(
+        lines[1].contains(",failed,") && lines[1].contains("SIGKILL"),
+        "{table}"
+    );
+    assert!(
+        lines[2..].iter().all(|l| !l.contains(",failed,")),
+        "{table}"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}

@@ -57,18 +57,7 @@ pub fn done(out: &Path, input: &RunInput) -> Option<Row> {
 pub fn run_one(base: &Value, input: &RunInput, out: &Path) -> Row {
     let start = Instant::now();
     let dir = run_dir(out, &input.id);
-    let mut row = Row {
-        id: input.id.clone(),
-        params: input.params.clone(),
-        status: "failed".into(),
-        error: None,
-        wall_seconds: 0.0,
-        cycles: 0,
-        closure_m: BTreeMap::new(),
-        yielded_zones: 0,
-        max_bolt_force_n_per_m: None,
-        max_liner_thrust_n_per_m: None,
-    };
+    let mut row = Row::failed(input, None);
     let ran = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| -> anyhow::Result<_> {
         let scene = scene_of(base, input)?;
         let scene = crate::Scene::from_json(&scene.to_string(), &input.id)?;
@@ -89,15 +78,40 @@ pub fn run_one(base: &Value, input: &RunInput, out: &Path) -> Row {
     }
     row.wall_seconds = start.elapsed().as_secs_f64();
     if row.status != "interrupted" {
-        let text = serde_json::to_string_pretty(&row).expect("a row serializes");
-        let saved = std::fs::create_dir_all(&dir)
-            .and_then(|_| write_atomic(&dir.join("row.json"), |w| w.write_all(text.as_bytes())));
-        if let Err(e) = saved {
-            row.error
-                .get_or_insert_with(|| format!("row.json not written: {e}"));
-        }
+        save(&mut row, out);
     }
     row
+}
+
+impl Row {
+    /// A row of run `input` that failed, for `error`.
+    pub fn failed(input: &RunInput, error: Option<String>) -> Row {
+        Row {
+            id: input.id.clone(),
+            params: input.params.clone(),
+            status: "failed".into(),
+            error,
+            wall_seconds: 0.0,
+            cycles: 0,
+            closure_m: BTreeMap::new(),
+            yielded_zones: 0,
+            max_bolt_force_n_per_m: None,
+            max_liner_thrust_n_per_m: None,
+        }
+    }
+}
+
+/// Leave `row` as `row.json` in its run's folder under `out`; a row that cannot be written says
+/// so in its error.
+pub fn save(row: &mut Row, out: &Path) {
+    let dir = run_dir(out, &row.id);
+    let text = serde_json::to_string_pretty(&*row).expect("a row serializes");
+    let saved = std::fs::create_dir_all(&dir)
+        .and_then(|_| write_atomic(&dir.join("row.json"), |w| w.write_all(text.as_bytes())));
+    if let Err(e) = saved {
+        row.error
+            .get_or_insert_with(|| format!("row.json not written: {e}"));
+    }
 }
 
 /// Yielded zones, the largest bolt force and liner thrust of the model at the run's end.
