@@ -183,5 +183,6 @@ fn _adit(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(sweep::sweep_run, m)?)?;
     m.add_function(wrap_pyfunction!(sweep::sweep_done, m)?)?;
     m.add_function(wrap_pyfunction!(sweep::sweep_table, m)?)?;
+    m.add_function(wrap_pyfunction!(sweep::sweep_clear, m)?)?;
     Ok(())
 }

@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 
-use adit::sweep::{Row, RunInput, SweepSpec, done, plan, run_one, write_table};
+use adit::sweep::{Row, RunInput, SweepSpec, done, plan, remove_table, run_one, write_table};
 
 fn value_error(e: impl std::fmt::Display) -> PyErr {
     PyValueError::new_err(e.to_string())
@@ -77,4 +77,11 @@ pub fn sweep_table(out: PathBuf, rows_json: Vec<String>) -> PyResult<Vec<String>
         .map(|r| serde_json::from_str(r).map_err(value_error))
         .collect::<PyResult<_>>()?;
     write_table(Path::new(&out), &rows).map_err(|e| PyRuntimeError::new_err(format!("{e:#}")))
+}
+
+/// Remove the table an earlier sweep left in `out` (`sweep.csv`, `sweep.png`, `sweep.parquet`),
+/// so that a table that exists is of a sweep that finished.
+#[pyfunction]
+pub fn sweep_clear(out: PathBuf) -> PyResult<()> {
+    remove_table(&out).map_err(|e| PyRuntimeError::new_err(format!("{}: {e}", out.display())))
 }

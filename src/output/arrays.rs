@@ -123,58 +123,30 @@ impl Tables {
             int("material", 1, c.material.iter().map(|&m| i64::from(m))),
         ];
         let (cables, liners) = (&model.supports.cables, &model.supports.liners);
-        let ends = |seg: &[[u32; 2]], pos: &[[f64; 2]]| -> Vec<f64> {
-            seg.iter()
-                .flat_map(|s| {
-                    let (p, q) = (pos[s[0] as usize], pos[s[1] as usize]);
-                    [p[0], p[1], q[0], q[1]]
-                })
-                .collect()
-        };
-        let bolts = vec![
-            float("ends_m", 4, ends(&cables.segment, &cables.pos)),
-            int(
-                "group",
-                1,
-                cables.segment_group.iter().map(|&g| i64::from(g)),
-            ),
-            int(
-                "installed",
-                1,
-                cables
-                    .segment_group
-                    .iter()
-                    .map(|&g| i64::from(cables.active[g as usize])),
-            ),
-            float("axial_force_n_per_m", 1, cables.axial.clone()),
-            int(
-                "yielded",
-                1,
-                cables.plastic.iter().map(|&p| i64::from(p != 0.0)),
-            ),
-        ];
-        let liner_rows = vec![
-            float("ends_m", 4, ends(&liners.element, &liners.pos)),
-            int(
-                "group",
-                1,
-                liners.element_group.iter().map(|&g| i64::from(g)),
-            ),
-            int(
-                "installed",
-                1,
-                liners
-                    .element_group
-                    .iter()
-                    .map(|&g| i64::from(liners.active[g as usize])),
-            ),
-            float("axial_force_n_per_m", 1, liners.axial.clone()),
-            float(
-                "moment_n_m_per_m",
-                2,
-                liners.moment.iter().flatten().copied().collect(),
-            ),
-        ];
+        let mut bolts = support_columns(
+            &cables.segment,
+            &cables.pos,
+            &cables.segment_group,
+            &cables.active,
+            &cables.axial,
+        );
+        bolts.push(int(
+            "yielded",
+            1,
+            cables.plastic.iter().map(|&p| i64::from(p != 0.0)),
+        ));
+        let mut liner_rows = support_columns(
+            &liners.element,
+            &liners.pos,
+            &liners.element_group,
+            &liners.active,
+            &liners.axial,
+        );
+        liner_rows.push(float(
+            "moment_n_m_per_m",
+            2,
+            liners.moment.iter().flatten().copied().collect(),
+        ));
         Tables {
             tables: vec![
                 ("nodes", nodes),
@@ -185,6 +157,34 @@ impl Tables {
             ],
         }
     }
+}
+
+/// The columns bolts and liners share, one row per segment or element: its `ends_m` (x0, y0, x1,
+/// y1 from `pos`), its `group`, whether that group is `installed`, its `axial_force_n_per_m`.
+fn support_columns(
+    elements: &[[u32; 2]],
+    pos: &[[f64; 2]],
+    groups: &[u32],
+    active: &[bool],
+    axial: &[f64],
+) -> Vec<Column> {
+    let ends = elements
+        .iter()
+        .flat_map(|e| {
+            let (p, q) = (pos[e[0] as usize], pos[e[1] as usize]);
+            [p[0], p[1], q[0], q[1]]
+        })
+        .collect();
+    vec![
+        float("ends_m", 4, ends),
+        int("group", 1, groups.iter().map(|&g| i64::from(g))),
+        int(
+            "installed",
+            1,
+            groups.iter().map(|&g| i64::from(active[g as usize])),
+        ),
+        float("axial_force_n_per_m", 1, axial.to_vec()),
+    ]
 }
 
 /// The names the integer columns stand for: zone materials, joint materials, bolt groups and

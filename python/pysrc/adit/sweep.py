@@ -80,8 +80,7 @@ def sweep(
     out_dir = Path(out if out is not None else default_out).resolve()
     out_dir.mkdir(parents=True, exist_ok=True)
     # A table that exists is of a sweep that finished: the last one's goes now.
-    for stale in ("sweep.csv", "sweep.png", "sweep.parquet"):
-        (out_dir / stale).unlink(missing_ok=True)
+    _adit.sweep_clear(os.fspath(out_dir))
     rows: Dict[str, str] = {}
     todo = []
     for run_id, params in runs:
@@ -100,7 +99,7 @@ def sweep(
     for warning in _adit.sweep_table(os.fspath(out_dir), ordered):
         print(f"warning: {warning}", file=sys.stderr)
     parsed = [json.loads(r) for r in ordered]
-    _parquet(out_dir / "sweep.parquet", parsed)
+    _parquet(out_dir / "sweep.csv", out_dir / "sweep.parquet")
     return SweepResult(
         rows=parsed,
         out_dir=out_dir,
@@ -143,27 +142,14 @@ def _on_dask(args, rows: Dict[str, str], client: Any, scheduler: Optional[str]) 
             client.close()
 
 
-def _parquet(path: Path, rows: List[Dict[str, Any]]) -> None:
-    """``sweep.parquet`` beside the CSV, when pyarrow is installed."""
+def _parquet(table: Path, path: Path) -> None:
+    """``sweep.parquet`` beside the CSV, its columns the CSV's, when pyarrow is installed."""
     try:
-        import pyarrow as pa
+        import pyarrow.csv as pc
         import pyarrow.parquet as pq
     except ImportError:
         return
-    flat = []
-    for r in rows:
-        f = {"id": r["id"], "status": r["status"], "error": r.get("error")}
-        for k, v in r["params"].items():
-            f[k] = v if isinstance(v, (int, float, str)) else json.dumps(v)
-        f["wall_seconds"] = r["wall_seconds"]
-        f["cycles"] = r["cycles"]
-        for k, v in r["closure_m"].items():
-            f[f"closure_{k}_m"] = v
-        f["yielded_zones"] = r["yielded_zones"]
-        f["max_bolt_force_n_per_m"] = r.get("max_bolt_force_n_per_m")
-        f["max_liner_thrust_n_per_m"] = r.get("max_liner_thrust_n_per_m")
-        flat.append(f)
-    pq.write_table(pa.Table.from_pylist(flat), path)
+    pq.write_table(pc.read_csv(table), path)
 
 
 def main(argv: Optional[List[str]] = None) -> int:
