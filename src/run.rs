@@ -101,7 +101,7 @@ pub fn ensure_time_step(solver: &Solver) -> anyhow::Result<()> {
 /// interruption asked for before the run (`interrupt::requested`) stops it at once: a caller that
 /// runs again after a Ctrl-C clears it first (`interrupt::clear`), as the Python package does,
 /// while a sweep's concurrent runs all stop on one. Each stage that ends leaves its checkpoint
-/// (`checkpoint::path`).
+/// (`checkpoint::path`) unless `output.checkpoints` is false.
 pub fn run_scene(
     scene: &Scene,
     out_dir: &Path,
@@ -124,9 +124,14 @@ pub fn run_scene_from(
         Some(std::fs::read(checkpoint::path(out_dir, from - 1)).map_err(|e| {
             anyhow::anyhow!(
                 "--from-stage {from}: no checkpoint of stage {} in {} ({e}); run the scene from \
-                 the start first",
+                 the start first{}",
                 from - 1,
-                out_dir.display()
+                out_dir.display(),
+                if scene.output.checkpoints {
+                    ""
+                } else {
+                    " (its output.checkpoints is false: the run leaves none)"
+                }
             )
         })?)
     } else {
@@ -303,7 +308,7 @@ fn build_solve_write(
         if !failed {
             writer.write_step(model, cycles as f64)?;
         }
-        if !failed && !interrupted {
+        if !failed && !interrupted && scene.output.checkpoints {
             let run = RunSoFar {
                 stages_done: i + 1,
                 cycles,

@@ -602,8 +602,8 @@ fn a_driven_platen_strains_the_column_it_drives() {
 
 /// Joints the first stage opened (the rock's in-situ tension released between two fixed edges:
 /// eight blocks, every contact open) and the second stage closes (the top edge loaded in
-/// compression): the implicit solve ends within 2 % of the explicit one on the top edge's mean settlement
-/// (1.3 %: friction on the vertical joints remembers the path). The matrix holds every joint
+/// compression): the implicit solve ends within 2 % of the explicit one on the top edge's mean
+/// settlement (1.3 %: friction on the vertical joints remembers the path). The matrix holds every joint
 /// stuck; one that held the open joints at a tenth of their stiffness (tried to save iterations)
 /// overshot as they closed, detected contacts elsewhere, committed the joints there, and ended
 /// 10.5 % off in 113 iterations against 59.

@@ -254,3 +254,33 @@ fn a_checkpoint_of_another_scene_or_damaged_or_missing_is_refused() {
     assert!(error(&small, 2).contains("not an adit checkpoint"));
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// `output.checkpoints: false` leaves no checkpoint (and removes those an earlier run of the
+/// scene left), writes the same results otherwise, and a `--from-stage` run then says why it
+/// has none to go on from.
+#[test]
+fn a_run_without_checkpoints_leaves_none_and_says_so() {
+    let mut small = tunnel();
+    small.stages.truncate(2);
+    let (with, without) = (folder("with-checkpoints"), folder("without-checkpoints"));
+    run_scene(&small, &with, &mut Quiet).unwrap();
+    run_scene(&small, &without, &mut Quiet).unwrap();
+    assert!(without.join("checkpoints/stage_02.ckpt").exists());
+    small.output.checkpoints = false;
+    run_scene(&small, &without, &mut Quiet).unwrap();
+    let left = std::fs::read_dir(without.join("checkpoints"))
+        .map(|d| d.count())
+        .unwrap_or(0);
+    assert_eq!(left, 0, "checkpoints left");
+    same_results(&with, &without);
+    let e = run_scene_from(&small, &without, 2, &mut Quiet)
+        .err()
+        .expect("refused");
+    let e = format!("{e:#}");
+    assert!(
+        e.contains("no checkpoint of stage 1") && e.contains("output.checkpoints is false"),
+        "{e}"
+    );
+    std::fs::remove_dir_all(&with).unwrap();
+    std::fs::remove_dir_all(&without).unwrap();
+}

@@ -778,13 +778,27 @@ impl Default for SolveSpec {
 }
 
 /// Where and how often to write results.
-#[derive(Debug, Clone, Default, Deserialize)]
+#[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct OutputSpec {
     /// Output folder; default `out/<name>`.
     pub folder: Option<String>,
     /// Cycles between intermediate output steps; 0 = only at the end (default 0).
     pub every: u64,
+    /// Whether each stage that ends leaves its checkpoint (`checkpoints/stage_NN.ckpt`, what
+    /// `adit run --from-stage` goes on from; default true). A run of many realizations that will
+    /// not be restarted by stage can leave them out (`models/tunnel.json`: 1.1 MB a stage).
+    pub checkpoints: bool,
+}
+
+impl Default for OutputSpec {
+    fn default() -> Self {
+        OutputSpec {
+            folder: None,
+            every: 0,
+            checkpoints: true,
+        }
+    }
 }
 
 impl Scene {
