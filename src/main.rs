@@ -72,7 +72,8 @@ enum Command {
         #[arg(long)]
         scheduler: Option<String>,
     },
-    /// One run of a sweep, in a process of its own (what `adit sweep` starts for each run).
+    /// One run of a sweep, in a process of its own (what `adit sweep` starts for each run); it
+    /// stops, leaving no row, when its standard input closes (the sweep has ended).
     #[command(hide = true)]
     SweepRun {
         /// The base scene, a JSON file.
@@ -319,6 +320,7 @@ fn main() -> ExitCode {
             out,
         } => {
             adit::interrupt::install();
+            stop_when_the_sweep_ends();
             sweep_run(&base, id, &params, &out)
         }
         Command::Sweep {
@@ -406,6 +408,19 @@ fn sweep(path: &Path, out: Option<PathBuf>, workers: Option<usize>) -> anyhow::R
         out.join("sweep.csv").display()
     )?;
     Ok(ExitCode::SUCCESS)
+}
+
+/// A sweep's run stops (at the end of a cycle, leaving no row) once the sweep that started it
+/// ends, however it ends: the sweep holds the write end of the run's standard input
+/// (`sweep::in_child`), which the system closes when the sweep's process goes, SIGKILL
+/// included, so a read of it ends.
+fn stop_when_the_sweep_ends() {
+    std::thread::spawn(|| {
+        let mut byte = [0u8; 1];
+        let mut stdin = std::io::stdin();
+        while let Ok(1) = std::io::Read::read(&mut stdin, &mut byte) {}
+        adit::interrupt::request();
+    });
 }
 
 /// `adit sweep-run`: one run of a sweep, its row left in `out`.

@@ -97,6 +97,15 @@ fn a_sweep_killed_half_way_runs_only_what_is_missing() {
     }
     child.kill().unwrap();
     child.wait().unwrap();
+    // The killed sweep's runs stop with it (their standard input closes).
+    let start = Instant::now();
+    while running(&out) > 0 {
+        assert!(
+            start.elapsed() < Duration::from_secs(30),
+            "a run of the killed sweep goes on"
+        );
+        std::thread::sleep(Duration::from_millis(5));
+    }
     let before = rows(&out);
     assert!((2..6).contains(&before), "{before} runs done when killed");
     assert!(
@@ -109,7 +118,8 @@ fn a_sweep_killed_half_way_runs_only_what_is_missing() {
     assert_eq!(said.matches("done before").count(), before, "{said}");
     assert_eq!(
         said.matches(" converged (").count() + said.matches(" cycle_limit (").count(),
-        6
+        6,
+        "{said}"
     );
     // The restarted sweep's table is the uninterrupted one's but for the seconds.
     let figures = |p: &Path| -> Vec<String> {
@@ -125,6 +135,23 @@ fn a_sweep_killed_half_way_runs_only_what_is_missing() {
     };
     assert_eq!(figures(&out), figures(&whole));
     std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// The processes running runs of the sweep into `out` (`adit sweep-run`), found by their
+/// command lines.
+fn running(out: &Path) -> usize {
+    let Ok(entries) = std::fs::read_dir("/proc") else {
+        return 0;
+    };
+    entries
+        .flatten()
+        .filter(|e| {
+            std::fs::read(e.path().join("cmdline")).is_ok_and(|cmd| {
+                let cmd = String::from_utf8_lossy(&cmd).replace('\0', " ");
+                cmd.contains("sweep-run") && cmd.contains(&*out.to_string_lossy())
+            })
+        })
+        .count()
 }
 
 /// Each run is a process of its own: one killed (as an abort would end it) is a failed row naming

@@ -57,16 +57,24 @@ pub fn run_local(
 pub fn in_child(exe: &Path, base: &Path, input: &RunInput, out: &Path) -> Row {
     let params = serde_json::to_string(&input.params).expect("parameters serialize");
     let start = std::time::Instant::now();
+    // The run's standard input stays open while this process lives: the run stops when it
+    // closes (`adit sweep-run`), so a sweep killed alone leaves no run going on.
     let ended = Command::new(exe)
         .arg("sweep-run")
         .arg(base)
         .arg(&input.id)
         .arg(&params)
         .arg(out)
-        .stdin(Stdio::null())
+        .stdin(Stdio::piped())
         .stdout(Stdio::null())
         .stderr(Stdio::piped())
-        .output();
+        .spawn()
+        .and_then(|mut child| {
+            let held = child.stdin.take();
+            let ended = child.wait_with_output();
+            drop(held);
+            ended
+        });
     if let Some(row) = done(out, input) {
         return row;
     }

@@ -58,6 +58,21 @@ pub fn run_one(base: &Value, input: &RunInput, out: &Path) -> Row {
     let start = Instant::now();
     let dir = run_dir(out, &input.id);
     let mut row = Row::failed(input, None);
+    // One process at a time in a run's folder: a sweep killed alone (SIGKILL to its own
+    // process) leaves its runs' processes finishing, and the restarted sweep makes the same
+    // runs. The lock is the operating system's (flock), let go when its holder ends however it
+    // ends; a run that finished while this one waited is not made again.
+    let _lock = match lock(&dir) {
+        Ok(lock) => lock,
+        Err(e) => {
+            row.error = Some(format!("{}: {e}", dir.join(LOCK).display()));
+            save(&mut row, out);
+            return row;
+        }
+    };
+    if let Some(row) = done(out, input) {
+        return row;
+    }
     let ran = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| -> anyhow::Result<_> {
         let scene = scene_of(base, input)?;
         let scene = crate::Scene::from_json(&scene.to_string(), &input.id)?;
@@ -81,6 +96,22 @@ pub fn run_one(base: &Value, input: &RunInput, out: &Path) -> Row {
         save(&mut row, out);
     }
     row
+}
+
+/// The file a run's process holds locked while it works in the run's folder.
+const LOCK: &str = "lock";
+
+/// The run folder `dir`, made if missing, locked for this process (waiting for another that
+/// holds it): the lock is let go when the file returned is dropped or the process ends.
+fn lock(dir: &Path) -> std::io::Result<std::fs::File> {
+    std::fs::create_dir_all(dir)?;
+    let file = std::fs::OpenOptions::new()
+        .create(true)
+        .truncate(false)
+        .write(true)
+        .open(dir.join(LOCK))?;
+    file.lock()?;
+    Ok(file)
 }
 
 impl Row {
