@@ -355,21 +355,27 @@ impl Cycle {
             ..*p
         };
         model.nodes.vel.copy_from_slice(du);
+        let largest = du.iter().fold(0.0f64, |m, d| m.max(d[0].hypot(d[1])));
         let Model {
             nodes,
             blocks,
             contacts,
             materials,
+            contact_tolerance,
             ..
         } = model;
-        self.contact_forces(
-            nodes,
-            blocks,
-            contacts,
-            &materials.joint,
-            &unit,
-            Some(from.joints),
-        );
+        // The joints' states at the new place matter here only to a detection, which carries
+        // them to the contacts that persist; the residual (`balance`) evaluates them anew.
+        if self.detects_after(blocks, largest, *contact_tolerance) {
+            self.contact_forces(
+                nodes,
+                blocks,
+                contacts,
+                &materials.joint,
+                &unit,
+                Some(from.joints),
+            );
+        }
         for (((v, u), d), c) in nodes.vel.iter_mut().zip(&nodes.disp).zip(du).zip(from.disp) {
             *v = [u[0] + d[0] - c[0], u[1] + d[1] - c[1]];
         }
@@ -382,15 +388,20 @@ impl Cycle {
             materials,
             ..
         } = model;
-        let mut largest = 0.0f64;
         for (u, d) in nodes.disp.iter_mut().zip(du) {
             u[0] += d[0];
             u[1] += d[1];
-            largest = largest.max(d[0].hypot(d[1]));
         }
         nodes.vel.iter_mut().for_each(|v| *v = [0.0; 2]);
         self.moved += largest;
         self.detect_when_moved(nodes, blocks, contacts, materials, *contact_tolerance);
+    }
+
+    /// Whether the detect stage runs once the nodes have moved `more` (m) further: when any node
+    /// may have moved half the contact `tolerance` (m) since the last detection (and there are
+    /// blocks to touch).
+    fn detects_after(&self, blocks: &Blocks, more: f64, tolerance: f64) -> bool {
+        blocks.len() > 1 && self.moved + more > 0.5 * tolerance
     }
 
     /// The detect stage, when any node may have moved half the contact `tolerance` (m) since the
@@ -403,7 +414,7 @@ impl Cycle {
         materials: &Materials,
         tolerance: f64,
     ) {
-        if blocks.len() > 1 && self.moved > 0.5 * tolerance {
+        if self.detects_after(blocks, 0.0, tolerance) {
             let x = nodes.current();
             let d = Detection {
                 blocks,
