@@ -158,32 +158,19 @@ fn a_restored_model_is_the_model_that_ran() {
         staging.apply(stage, model, plan);
     }
     adit::checkpoint::decode(&bytes, &two, model).unwrap();
-    let (x, y) = (&ran.built.model, &*model);
-    for (name, a, b) in [
-        ("nodes", format!("{:?}", x.nodes), format!("{:?}", y.nodes)),
-        ("zones", format!("{:?}", x.zones), format!("{:?}", y.zones)),
-        (
-            "bodies",
-            format!("{:?}", x.bodies),
-            format!("{:?}", y.bodies),
-        ),
-        (
-            "blocks",
-            format!("{:?}", x.blocks),
-            format!("{:?}", y.blocks),
-        ),
-        (
-            "contacts",
-            format!("{:?}", x.contacts),
-            format!("{:?}", y.contacts),
-        ),
-        (
-            "supports",
-            format!("{:?}", x.supports),
-            format!("{:?}", y.supports),
-        ),
-        ("mixed", format!("{:?}", x.mixed), format!("{:?}", y.mixed)),
-    ] {
+    // Each field's every array and value, as its Debug text.
+    let fields = |m: &adit::model::Model| {
+        [
+            ("nodes", format!("{:?}", m.nodes)),
+            ("zones", format!("{:?}", m.zones)),
+            ("bodies", format!("{:?}", m.bodies)),
+            ("blocks", format!("{:?}", m.blocks)),
+            ("contacts", format!("{:?}", m.contacts)),
+            ("supports", format!("{:?}", m.supports)),
+            ("mixed", format!("{:?}", m.mixed)),
+        ]
+    };
+    for ((name, a), (_, b)) in fields(&ran.built.model).into_iter().zip(fields(model)) {
         assert!(a == b, "{name} differ");
     }
     std::fs::remove_dir_all(&dir).unwrap();
