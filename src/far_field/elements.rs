@@ -1,4 +1,5 @@
-//! Straight discontinuous linear boundary elements and their integrals of Kelvin's kernels.
+//! Straight discontinuous linear boundary elements and their integrals of a fundamental
+//! solution (`kernel::Kernel`: Kelvin's isotropic one or Lekhnitskii's anisotropic one).
 //!
 //! An element from a to b (length L, unit tangent t) carries displacement and traction linear
 //! along it, given at its two collocation points η = ∓1/2 (η ∈ [−1, 1] from a to b, s = L(η + 1)/2
@@ -6,14 +7,16 @@
 //! are smooth points of the boundary (free term c_ij = δ_ij/2) wherever the polygon has its
 //! corners, and neighbouring elements need not share a traction (a corner's two tractions differ).
 //!
-//! The integrals over an element that holds the collocation point are analytical (r = |s − s₀|
-//! along the element, ∂r/∂n = 0): ∫ φ ln r ds and the principal value of ∫ φ/(s − s₀) ds for the
-//! antisymmetric part of T, the only part left on a straight element. The others are by
+//! The integrals over an element that holds the collocation point are analytical: along a
+//! straight element both kernels are a constant times ln|s − s₀| (plus a constant on each side
+//! of the point) for U and times 1/(s − s₀) for T, so each kernel combines the scalar integrals
+//! ∫ φ ln|s − s₀| ds, the principal value of ∫ φ/(s − s₀) ds and ∫ φ ds before and after the
+//! point (`OwnScalars`). The others are by
 //! 8-point Gauss–Legendre over sub-segments no longer than a third of the collocation point's
 //! distance from the element, so a neighbour's end, a quarter of an element from the point,
 //! is integrated as accurately as a far element.
 
-use super::kelvin::Medium;
+use super::kernel::Kernel;
 
 /// Where an element's two collocation points sit, η.
 pub const COLLOCATION: [f64; 2] = [-0.5, 0.5];
@@ -49,6 +52,20 @@ pub struct Element {
 /// ∫ T_ij φ_k ds and ∫ U_ij φ_k ds over an element for one collocation point: [k][i][j].
 pub type Integrals = ([[[f64; 2]; 2]; 2], [[[f64; 2]; 2]; 2]);
 
+/// One shape function φ's scalar integrals over the element that holds the collocation point
+/// s₀ (s the arc length, m).
+#[derive(Debug, Clone, Copy)]
+pub struct OwnScalars {
+    /// ∫ φ ln|s − s₀| ds, m.
+    pub log: f64,
+    /// The principal value of ∫ φ / (s − s₀) ds.
+    pub pv: f64,
+    /// ∫ φ ds over s < s₀, m.
+    pub before: f64,
+    /// ∫ φ ds over s > s₀, m.
+    pub after: f64,
+}
+
 impl Element {
     pub fn length(&self) -> f64 {
         (self.b[0] - self.a[0]).hypot(self.b[1] - self.a[1])
@@ -65,10 +82,10 @@ impl Element {
 
     /// The integrals of T and U times each shape function for the collocation point `xi` (m)
     /// outside the element (regular, by quadrature).
-    pub fn regular(&self, m: &Medium, xi: [f64; 2]) -> Integrals {
+    pub fn regular(&self, m: &impl Kernel, xi: [f64; 2]) -> Integrals {
         let len = self.length();
         let distance = distance_to_segment(xi, self.a, self.b);
-        let pieces = ((3.0 * len / distance).ceil() as usize).clamp(1, MOST_PIECES);
+        let pieces = ((3.0 * m.stretch() * len / distance).ceil() as usize).clamp(1, MOST_PIECES);
         let (mut h, mut g) = ([[[0.0; 2]; 2]; 2], [[[0.0; 2]; 2]; 2]);
         let width = 2.0 / pieces as f64;
         for p in 0..pieces {
@@ -95,36 +112,30 @@ impl Element {
 
     /// The integrals of T (principal value, without the free term) and U times each shape
     /// function for the element's own collocation point `c` (0 or 1), analytically.
-    pub fn own(&self, m: &Medium, c: usize) -> Integrals {
+    pub fn own(&self, m: &impl Kernel, c: usize) -> Integrals {
         let len = self.length();
         let t = [(self.b[0] - self.a[0]) / len, (self.b[1] - self.a[1]) / len];
-        let n = self.n;
-        let nu = m.poisson;
+        m.own(t, self.n, &self.own_scalars(c))
+    }
+
+    /// The scalar integrals of each shape function about the collocation point `c`.
+    pub fn own_scalars(&self, c: usize) -> [OwnScalars; 2] {
+        let len = self.length();
         let s0 = 0.5 * len * (COLLOCATION[c] + 1.0);
         // φ_k(s) = α + β s.
         let lines = [(1.5, -2.0 / len), (-0.5, 2.0 / len)];
         let (before, after) = (s0, len - s0);
         let f0 = |d: f64| d * d.ln() - d;
         let f1 = |d: f64| 0.5 * d * d * d.ln() - 0.25 * d * d;
-        let gc = 1.0 / (8.0 * std::f64::consts::PI * m.shear * (1.0 - nu));
-        let tc = -(1.0 - 2.0 * nu) / (4.0 * std::f64::consts::PI * (1.0 - nu));
-        let (mut h, mut g) = ([[[0.0; 2]; 2]; 2], [[[0.0; 2]; 2]; 2]);
-        for (k, &(alpha, beta)) in lines.iter().enumerate() {
+        lines.map(|(alpha, beta)| {
             let at_s0 = alpha + beta * s0;
-            // ∫ φ ln|s − s₀| ds and ∫ φ ds over the element.
-            let log = at_s0 * (f0(before) + f0(after)) + beta * (f1(after) - f1(before));
-            let plain = 0.5 * len;
-            // PV ∫ φ / (s − s₀) ds.
-            let pv = at_s0 * (after / before).ln() + beta * len;
-            for i in 0..2 {
-                for j in 0..2 {
-                    let delta = if i == j { 1.0 } else { 0.0 };
-                    g[k][i][j] = gc * (-(3.0 - 4.0 * nu) * log * delta + t[i] * t[j] * plain);
-                    h[k][i][j] = tc * (t[j] * n[i] - t[i] * n[j]) * pv;
-                }
+            OwnScalars {
+                log: at_s0 * (f0(before) + f0(after)) + beta * (f1(after) - f1(before)),
+                pv: at_s0 * (after / before).ln() + beta * len,
+                before: alpha * s0 + 0.5 * beta * s0 * s0,
+                after: alpha * after + 0.5 * beta * (len * len - s0 * s0),
             }
-        }
-        (h, g)
+        })
     }
 }
 
@@ -140,15 +151,21 @@ mod tests {
     use super::*;
 
     /// The analytical integrals over the element's own point match quadrature that steps around
-    /// the point: U by fine midpoint sums (its log is integrable), T's principal value by
-    /// pairing the points at ±x about the point (∫ f(x)/x over [−w, w] is ∫ (f(x) − f(−x))/x over
-    /// [0, w], regular) and a plain sum over the rest.
+    /// the point, for Kelvin's kernels and for Lekhnitskii's (the jointed tunnel's rock mass): U
+    /// by fine midpoint sums (its log is integrable), T's principal value by pairing the points
+    /// at ±x about the point (∫ f(x)/x over [−w, w] is ∫ (f(x) − f(−x))/x over [0, w], regular)
+    /// and a plain sum over the rest.
     #[test]
     fn the_own_element_integrals_match_careful_quadrature() {
-        let m = Medium {
+        let kelvin = crate::far_field::Kelvin {
             shear: 2e9,
             poisson: 0.3,
         };
+        own_integrals_match_quadrature(&kelvin);
+        own_integrals_match_quadrature(&crate::far_field::lekhnitskii::tests::jointed());
+    }
+
+    fn own_integrals_match_quadrature(m: &impl Kernel) {
         let (dx, dy) = (0.9f64, 0.6f64);
         let l = dx.hypot(dy);
         let e = Element {
@@ -159,7 +176,7 @@ mod tests {
         let len = e.length();
         let count = 200_000;
         for (c, &eta) in COLLOCATION.iter().enumerate() {
-            let (h, g) = e.own(&m, c);
+            let (h, g) = e.own(m, c);
             let xi = e.at(eta);
             let s0 = 0.5 * len * (eta + 1.0);
             // T φ_k and U φ_k at arc length s.

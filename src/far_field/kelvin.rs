@@ -5,19 +5,24 @@
 //! U_ij = 1/(8πG(1 − ν)) [(3 − 4ν) ln(1/r) δ_ij + r_,i r_,j]
 //! T_ij = −1/(4π(1 − ν) r) [∂r/∂n ((1 − 2ν) δ_ij + 2 r_,i r_,j) + (1 − 2ν)(r_,j n_i − r_,i n_j)]
 //!
-//! with r = |x − ξ|, r_,i = (x − ξ)_i / r and n the unit normal at x, pointing out of the domain.
+//! with r = |x − ξ|, r_,i = (x − ξ)_i / r and n the unit normal at x, pointing out of the domain:
+//! the displacement and traction along j of a unit force along i (`kernel::Kernel`).
+//!
+//! On the element that holds the collocation point, r = |s − s₀| and ∂r/∂n = 0: U integrates
+//! through ∫ φ ln|s − s₀| ds, and T keeps its antisymmetric part alone, a principal value.
 
-/// The elastic constants the kernels take: shear modulus G (Pa) and Poisson's ratio ν.
+use super::elements::{Integrals, OwnScalars};
+use super::kernel::Kernel;
+
+/// An isotropic medium: shear modulus G (Pa) and Poisson's ratio ν.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Medium {
+pub struct Kelvin {
     pub shear: f64,
     pub poisson: f64,
 }
 
-impl Medium {
-    /// U_ij(ξ, x), m/N per m of line: the displacement at x along i of a unit force at ξ along j;
-    /// `d` = x − ξ (m, non-zero).
-    pub fn displacement(&self, d: [f64; 2]) -> [[f64; 2]; 2] {
+impl Kernel for Kelvin {
+    fn displacement(&self, d: [f64; 2]) -> [[f64; 2]; 2] {
         let nu = self.poisson;
         let r = d[0].hypot(d[1]);
         let g = [d[0] / r, d[1] / r];
@@ -28,9 +33,7 @@ impl Medium {
         })
     }
 
-    /// T_ij(ξ, x), 1/m: the traction at x (on the surface of normal `n`) along i of a unit force
-    /// at ξ along j; `d` = x − ξ (m, non-zero).
-    pub fn traction(&self, d: [f64; 2], n: [f64; 2]) -> [[f64; 2]; 2] {
+    fn traction(&self, d: [f64; 2], n: [f64; 2]) -> [[f64; 2]; 2] {
         let nu = self.poisson;
         let r = d[0].hypot(d[1]);
         let g = [d[0] / r, d[1] / r];
@@ -44,6 +47,24 @@ impl Medium {
             })
         })
     }
+
+    fn own(&self, t: [f64; 2], n: [f64; 2], s: &[OwnScalars; 2]) -> Integrals {
+        let nu = self.poisson;
+        let gc = 1.0 / (8.0 * std::f64::consts::PI * self.shear * (1.0 - nu));
+        let tc = -(1.0 - 2.0 * nu) / (4.0 * std::f64::consts::PI * (1.0 - nu));
+        let (mut h, mut g) = ([[[0.0; 2]; 2]; 2], [[[0.0; 2]; 2]; 2]);
+        for (k, s) in s.iter().enumerate() {
+            let plain = s.before + s.after;
+            for i in 0..2 {
+                for j in 0..2 {
+                    let delta = if i == j { 1.0 } else { 0.0 };
+                    g[k][i][j] = gc * (-(3.0 - 4.0 * nu) * s.log * delta + t[i] * t[j] * plain);
+                    h[k][i][j] = tc * (t[j] * n[i] - t[i] * n[j]) * s.pv;
+                }
+            }
+        }
+        (h, g)
+    }
 }
 
 #[cfg(test)]
@@ -54,7 +75,7 @@ mod tests {
     /// with n pointing away from the source (the circle's outside: the force acts on the disc).
     #[test]
     fn a_circle_about_the_force_carries_it() {
-        let m = Medium {
+        let m = Kelvin {
             shear: 3e9,
             poisson: 0.3,
         };
@@ -84,7 +105,7 @@ mod tests {
     /// U is symmetric, and its log term makes a unit force's displacement fall as ln(1/r).
     #[test]
     fn the_displacement_kernel_is_symmetric_and_logarithmic() {
-        let m = Medium {
+        let m = Kelvin {
             shear: 1.0,
             poisson: 0.25,
         };

@@ -24,12 +24,68 @@
 mod attached;
 mod elements;
 mod kelvin;
+mod kernel;
+mod lekhnitskii;
+mod rock_mass;
 
 use faer::{Conj, Mat, Par};
 
 pub use attached::FarField;
-use elements::{COLLOCATION, Element};
-pub use kelvin::Medium;
+use elements::{COLLOCATION, Element, Integrals, OwnScalars};
+pub use kelvin::Kelvin;
+use kernel::Kernel;
+pub use lekhnitskii::Lekhnitskii;
+pub use rock_mass::{JointSet, jointed_compliance, plane_strain_compliance};
+
+/// The far field's rock: isotropic (Kelvin's kernels) or anisotropic (Lekhnitskii's, a jointed
+/// rock mass as an equivalent continuum).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Medium {
+    Isotropic(Kelvin),
+    Anisotropic(Box<Lekhnitskii>),
+}
+
+impl Medium {
+    /// The isotropic medium of shear modulus G (Pa) and Poisson's ratio ν.
+    pub fn isotropic(shear: f64, poisson: f64) -> Self {
+        Self::Isotropic(Kelvin { shear, poisson })
+    }
+
+    /// The anisotropic medium of plane-strain compliance `b` (Pa⁻¹; `Lekhnitskii::new`).
+    pub fn anisotropic(b: [[f64; 3]; 3]) -> Result<Self, String> {
+        Lekhnitskii::new(b).map(|m| Self::Anisotropic(Box::new(m)))
+    }
+}
+
+impl Kernel for Medium {
+    fn displacement(&self, d: [f64; 2]) -> [[f64; 2]; 2] {
+        match self {
+            Self::Isotropic(m) => m.displacement(d),
+            Self::Anisotropic(m) => m.displacement(d),
+        }
+    }
+
+    fn traction(&self, d: [f64; 2], n: [f64; 2]) -> [[f64; 2]; 2] {
+        match self {
+            Self::Isotropic(m) => m.traction(d, n),
+            Self::Anisotropic(m) => m.traction(d, n),
+        }
+    }
+
+    fn own(&self, t: [f64; 2], n: [f64; 2], s: &[OwnScalars; 2]) -> Integrals {
+        match self {
+            Self::Isotropic(m) => m.own(t, n, s),
+            Self::Anisotropic(m) => m.own(t, n, s),
+        }
+    }
+
+    fn stretch(&self) -> f64 {
+        match self {
+            Self::Isotropic(m) => m.stretch(),
+            Self::Anisotropic(m) => m.stretch(),
+        }
+    }
+}
 
 /// The far field condensed on the interface's nodes: K, row-major 2n × 2n over the components
 /// (x, y) of the n nodes in the polygon's order (N/m per m).
@@ -298,17 +354,19 @@ fn fractions(points: &[[f64; 2]], chain: &[usize], element: &Element) -> Vec<f64
 
 /// The reasons `interface_stiffness_chains` refuses its input.
 fn check(points: &[[f64; 2]], chains: &[Vec<usize>], m: &Medium) -> Result<(), String> {
-    if !(m.shear > 0.0 && m.shear.is_finite()) {
-        return Err(format!(
-            "far field: shear modulus {} Pa is not positive",
-            m.shear
-        ));
-    }
-    if !(m.poisson > -1.0 && m.poisson < 0.5) {
-        return Err(format!(
-            "far field: Poisson's ratio {} is outside (−1, 0.5)",
-            m.poisson
-        ));
+    if let Medium::Isotropic(m) = m {
+        if !(m.shear > 0.0 && m.shear.is_finite()) {
+            return Err(format!(
+                "far field: shear modulus {} Pa is not positive",
+                m.shear
+            ));
+        }
+        if !(m.poisson > -1.0 && m.poisson < 0.5) {
+            return Err(format!(
+                "far field: Poisson's ratio {} is outside (−1, 0.5)",
+                m.poisson
+            ));
+        }
     }
     if chains.len() < 3 {
         return Err(format!(

@@ -217,6 +217,22 @@ pub struct FarFieldSpec {
     /// about this length, at its zones' edges, never shorter than one edge.
     #[serde(default)]
     pub element_size: Option<f64>,
+    /// What the far-field rock is: `intact` (default; isotropic, `young` and `poisson`) or
+    /// `jointed` (that rock cut by the scene's `joint_sets`, stuck, as an equivalent anisotropic
+    /// continuum).
+    #[serde(default)]
+    pub rock_mass: RockMass,
+}
+
+/// `region.far_field.rock_mass`.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum RockMass {
+    /// Isotropic intact rock.
+    #[default]
+    Intact,
+    /// Intact rock plus the scene's joint sets smeared over their spacing.
+    Jointed,
 }
 
 /// The kinds of far field.

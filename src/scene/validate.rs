@@ -647,6 +647,12 @@ impl Scene {
                 format!("must lie in (−1, 0.5), got {}", Num(nu)),
             ));
         }
+        if f.rock_mass == super::RockMass::Jointed && self.joint_sets.is_empty() {
+            return Err(invalid(
+                "region.far_field.rock_mass",
+                "jointed: the scene has no joint_sets to smear into the far field",
+            ));
+        }
         let solves = std::iter::once(("solve.mode", &self.solve)).chain(
             (self.stages.iter())
                 .filter_map(|s| s.solve.as_ref())

@@ -10,9 +10,12 @@ use adit_meshing::{BoundaryEdge, EdgeKind};
 
 use super::boundary::traction_loads;
 use super::plan::{Boundary, InSituField};
-use crate::far_field::{FarField, Medium, interface_stiffness_chains};
+use crate::far_field::{
+    FarField, JointSet, Medium, interface_stiffness_chains, jointed_compliance,
+    plane_strain_compliance,
+};
 use crate::model::{Model, traction};
-use crate::scene::Scene;
+use crate::scene::{RockMass, Scene};
 
 /// Most interface elements a far field takes: its dense matrices hold (4n + 2)² values twice
 /// while it is condensed, 1.0 GB at this many (measured: 1 600 elements took 17 s on one thread
@@ -36,9 +39,27 @@ pub fn far_field(
         spec.young.unwrap_or(rock.young),
         spec.poisson.unwrap_or(rock.poisson),
     );
-    let medium = Medium {
-        shear: young / (2.0 * (1.0 + poisson)),
-        poisson,
+    let medium = match spec.rock_mass {
+        RockMass::Intact => Medium::isotropic(young / (2.0 * (1.0 + poisson)), poisson),
+        RockMass::Jointed => {
+            let sets: Vec<JointSet> = (0..scene.joint_sets.len())
+                .map(|i| {
+                    let set = scene.realized_set(i);
+                    let joint = &scene.joint_materials[&set.material];
+                    // A non-persistent set's joints cover trace/(trace + gap) of each line.
+                    let persistence = set.trace.map_or(1.0, |t| t / (t + set.gap));
+                    JointSet {
+                        dip: set.dip,
+                        spacing: set.spacing / persistence,
+                        normal_stiffness: joint.normal_stiffness,
+                        shear_stiffness: joint.shear_stiffness,
+                    }
+                })
+                .collect();
+            let b = jointed_compliance(plane_strain_compliance(young, poisson), &sets);
+            Medium::anisotropic(b)
+                .map_err(|e| anyhow::anyhow!("region.far_field.rock_mass: {e}"))?
+        }
     };
     let outer: Vec<&BoundaryEdge> = (boundary.edges.iter())
         .filter(|e| matches!(e.kind, EdgeKind::Region(_)))

@@ -82,14 +82,7 @@ pub fn assembly_cost(elements: usize) -> anyhow::Result<(f64, f64)> {
         })
         .collect();
     let start = Instant::now();
-    interface_stiffness(
-        &points,
-        Medium {
-            shear: 4e9,
-            poisson: 0.25,
-        },
-    )
-    .map_err(anyhow::Error::msg)?;
+    interface_stiffness(&points, Medium::isotropic(4e9, 0.25)).map_err(anyhow::Error::msg)?;
     let size = (4 * elements + 2) as f64;
     let k = (2 * elements) as f64;
     Ok((

@@ -67,6 +67,7 @@ fn main() -> anyhow::Result<()> {
             "models/kirsch.json",
             "models/jointed_tunnel.json",
             "models/jointed_tunnel_mixed.json",
+            "models/jointed_tunnel_bem.json",
         ];
         let mut rows: Vec<readme::ModelRow> = sections
             .iter()

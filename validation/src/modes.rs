@@ -36,6 +36,8 @@ pub struct ModeRun {
     pub zone_cycles_per_s: f64,
     /// Median radial closure of the tunnel wall, m (inward positive).
     pub closure: f64,
+    /// Mean radial closure of the tunnel wall, m (inward positive).
+    pub mean_closure: f64,
     /// Largest radial closure at a wall node, m (a loose key block drifting in).
     pub largest: f64,
     /// What the implicit solve cost, when `solve.method` asked for it.
@@ -97,6 +99,7 @@ pub fn run_as(sc: &Scene, label: String) -> anyhow::Result<ModeRun> {
         block_cycles_per_s: per_s(b.model.blocks.len()),
         zone_cycles_per_s: per_s(b.model.zones.len()),
         closure: closures[closures.len() / 2],
+        mean_closure: closures.iter().sum::<f64>() / closures.len() as f64,
         largest: closures[closures.len() - 1],
         implicit,
     })
