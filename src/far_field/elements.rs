@@ -64,6 +64,8 @@ pub struct OwnScalars {
     pub before: f64,
     /// ∫ φ ds over s > s₀, m.
     pub after: f64,
+    /// ∫ φ ds over the element, L/2, m.
+    pub whole: f64,
 }
 
 impl Element {
@@ -134,6 +136,7 @@ impl Element {
                 pv: at_s0 * (after / before).ln() + beta * len,
                 before: alpha * s0 + 0.5 * beta * s0 * s0,
                 after: alpha * after + 0.5 * beta * (len * len - s0 * s0),
+                whole: 0.5 * len,
             }
         })
     }

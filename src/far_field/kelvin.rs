@@ -54,11 +54,10 @@ impl Kernel for Kelvin {
         let tc = -(1.0 - 2.0 * nu) / (4.0 * std::f64::consts::PI * (1.0 - nu));
         let (mut h, mut g) = ([[[0.0; 2]; 2]; 2], [[[0.0; 2]; 2]; 2]);
         for (k, s) in s.iter().enumerate() {
-            let plain = s.before + s.after;
             for i in 0..2 {
                 for j in 0..2 {
                     let delta = if i == j { 1.0 } else { 0.0 };
-                    g[k][i][j] = gc * (-(3.0 - 4.0 * nu) * s.log * delta + t[i] * t[j] * plain);
+                    g[k][i][j] = gc * (-(3.0 - 4.0 * nu) * s.log * delta + t[i] * t[j] * s.whole);
                     h[k][i][j] = tc * (t[j] * n[i] - t[i] * n[j]) * s.pv;
                 }
             }

@@ -85,6 +85,13 @@ fn main() -> anyhow::Result<()> {
              README.md (models table)"
         );
     } else {
+        // The models these sections measured, as the README's table would show them.
+        let rows: Vec<readme::ModelRow> = (sections.iter())
+            .flat_map(|s| s.models.iter().cloned())
+            .collect();
+        if !rows.is_empty() {
+            md.push_str(&format!("\n{}", readme::models_table(&rows, threads)));
+        }
         std::fs::write(out.join("sections.md"), md)?;
         println!("wrote target/validation/report.json and target/validation/sections.md");
     }
