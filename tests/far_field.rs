@@ -219,3 +219,26 @@ fn a_jointed_far_field_stands_for_the_jointed_rock_beyond() {
         }
     }
 }
+
+/// A jointed far field whose field varies along the interface much faster than intact rock's
+/// (joints a hundred times softer in shear than the shipped model's) is built with a warning
+/// saying so; the shipped `models/jointed_tunnel_bem.json` (stretch 1.4) gets none.
+#[test]
+fn a_strongly_anisotropic_far_field_is_warned_of() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let shipped = Scene::load(&root.join("models/jointed_tunnel_bem.json")).unwrap();
+    let mut soft = shipped.clone();
+    for m in soft.joint_materials.values_mut() {
+        m.shear_stiffness /= 100.0;
+    }
+    let warned = |sc: &Scene| {
+        let b = adit::setup::setup(sc).unwrap();
+        let stretch = b.model.far_field.as_ref().unwrap().stretch;
+        let said = b.warnings.iter().any(|w| w.contains("strongly anisotropic"));
+        (stretch, said)
+    };
+    let (stretch, said) = warned(&shipped);
+    assert!(stretch < 2.0 && !said, "{stretch}");
+    let (stretch, said) = warned(&soft);
+    assert!(stretch > 3.0 && said, "{stretch}");
+}

@@ -20,6 +20,9 @@ pub struct FarField {
     pub attached: Vec<[f64; 2]>,
     /// Seconds the stiffness took to assemble and condense.
     pub assemble_s: f64,
+    /// How many times faster the far-field rock's field varies along the interface than an
+    /// isotropic rock's (`Kernel::stretch`; 1 for intact rock).
+    pub stretch: f64,
 }
 
 impl FarField {

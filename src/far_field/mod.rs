@@ -33,7 +33,7 @@ use faer::{Conj, Mat, Par};
 pub use attached::FarField;
 use elements::{COLLOCATION, Element, Integrals, OwnScalars};
 pub use kelvin::Kelvin;
-use kernel::Kernel;
+pub use kernel::Kernel;
 pub use lekhnitskii::Lekhnitskii;
 pub use rock_mass::{JointSet, jointed_compliance, plane_strain_compliance};
 

@@ -11,7 +11,7 @@ use adit_meshing::{BoundaryEdge, EdgeKind};
 use super::boundary::traction_loads;
 use super::plan::{Boundary, InSituField};
 use crate::far_field::{
-    FarField, JointSet, Medium, interface_stiffness_chains, jointed_compliance,
+    FarField, JointSet, Kernel, Medium, interface_stiffness_chains, jointed_compliance,
     plane_strain_compliance,
 };
 use crate::model::{Model, traction};
@@ -98,6 +98,7 @@ pub fn far_field(
         })
         .collect();
     let points: Vec<[f64; 2]> = nodes.iter().map(|&n| model.nodes.pos[n as usize]).collect();
+    let stretch = medium.stretch();
     let stiffness = interface_stiffness_chains(&points, &chains, medium)
         .map_err(|e| anyhow::anyhow!("region.{e}"))?;
     let mut loads = vec![[0.0; 2]; model.nodes.len()];
@@ -116,6 +117,7 @@ pub fn far_field(
         in_situ,
         attached,
         assemble_s: start.elapsed().as_secs_f64(),
+        stretch,
     }))
 }
 
@@ -195,4 +197,21 @@ fn element_chains(outer: &[&BoundaryEdge], pos: &[[f64; 2]], size: f64) -> Vec<V
         }
     }
     chains
+}
+
+/// The stretch above which a far field's accuracy along the interface is worth a warning.
+const STRETCH_WARNED: f64 = 3.0;
+
+/// A warning for a jointed far field whose field varies along the interface `stretch` times
+/// faster than intact rock's (its boundary elements resolve it as elements that many times longer
+/// would resolve intact rock: the error on a circle grows about as stretch², `far_field::tests`).
+pub fn stretch_warning(stretch: f64) -> Option<String> {
+    (stretch > STRETCH_WARNED).then(|| {
+        format!(
+            "region.far_field: the jointed rock mass is strongly anisotropic (its field varies \
+             {stretch:.1} times faster along the interface than intact rock's), so its boundary \
+             elements answer about as elements {stretch:.1} times longer would for intact rock; \
+             zone the outer boundary finer (zoning.edge_far) or move it farther out"
+        )
+    })
 }

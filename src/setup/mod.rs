@@ -266,7 +266,7 @@ pub fn setup_meshed(scene: &Scene, meshed: Meshed) -> anyhow::Result<Setup> {
         Contacts::none(nodes.len())
     };
 
-    let warnings = warnings(scene, &meshed)?;
+    let mut warnings = warnings(scene, &meshed)?;
 
     let size = boundary.domain.outer.size();
     let gather = Gather::new(nodes.len(), &zones.nodes);
@@ -302,6 +302,10 @@ pub fn setup_meshed(scene: &Scene, meshed: Meshed) -> anyhow::Result<Setup> {
     model.supports = supports::supports(scene, &model, &fill, &boundary)?;
     model.support_gather = Gather::from_slots(model.nodes.len(), &model.supports.slot_nodes());
     model.far_field = far_field::far_field(scene, &model, &boundary, &in_situ)?;
+    if let Some(w) = (model.far_field.as_ref()).and_then(|f| far_field::stretch_warning(f.stretch))
+    {
+        warnings.push(w);
+    }
     model.far_gather = match &model.far_field {
         Some(f) => Gather::from_slots(model.nodes.len(), &f.nodes),
         None => Gather::from_slots(model.nodes.len(), &[]),

@@ -185,3 +185,85 @@ fn a_compliance_that_is_not_positive_definite_is_refused() {
     let e = Lekhnitskii::new(b).unwrap_err();
     assert!(e.contains("positive definite"), "{e}");
 }
+
+mod random {
+    use super::*;
+    use proptest::prelude::*;
+
+    /// A rock mass of random intact constants cut by one to three random sets.
+    fn rock_mass() -> impl Strategy<Value = [[f64; 3]; 3]> {
+        let set = (0.0..180.0f64, 0.2..10.0f64, 8.0..11.0f64, 0.0..2.0f64).prop_map(
+            |(dip, spacing, kn, ratio)| JointSet {
+                dip,
+                spacing,
+                normal_stiffness: 10f64.powf(kn),
+                shear_stiffness: 10f64.powf(kn - ratio),
+            },
+        );
+        (
+            1e9..1e11f64,
+            0.0..0.45f64,
+            prop::collection::vec(set, 1..=3),
+        )
+            .prop_map(|(young, poisson, sets)| {
+                jointed_compliance(plane_strain_compliance(young, poisson), &sets)
+            })
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(200))]
+
+        /// For any rock mass the roots solve their equation, the kernels carry a unit force round
+        /// a circle, and U's strain through Hooke's law gives T's stress.
+        #[test]
+        fn any_rock_mass_has_consistent_kernels(b in rock_mass(), angle in 0.0..std::f64::consts::TAU) {
+            let m = Lekhnitskii::new(b).unwrap();
+            for mu in m.roots() {
+                let f = mu.powi(4) * b[0][0] - mu.powi(3) * (2.0 * b[0][2])
+                    + mu * mu * (2.0 * b[0][1] + b[2][2])
+                    - mu * (2.0 * b[1][2])
+                    + b[1][1];
+                prop_assert!(f.norm() < 1e-10 * b[0][0].max(b[1][1]), "{mu} {f}");
+            }
+            let count = 8000;
+            let mut sum = [[0.0; 2]; 2];
+            for k in 0..count {
+                let a = std::f64::consts::TAU * (k as f64 + 0.5) / count as f64;
+                let n = [a.cos(), a.sin()];
+                let t = m.traction(n, n);
+                for i in 0..2 {
+                    for j in 0..2 {
+                        sum[i][j] += t[i][j] * std::f64::consts::TAU / count as f64;
+                    }
+                }
+            }
+            for (i, row) in sum.iter().enumerate() {
+                for (j, v) in row.iter().enumerate() {
+                    let expected = if i == j { -1.0 } else { 0.0 };
+                    prop_assert!((v - expected).abs() < 1e-6, "{sum:?} stretch {}", m.stretch());
+                }
+            }
+            let stiffness = nalgebra::Matrix3::from_fn(|i, j| b[i][j]).try_inverse().unwrap();
+            let d = [angle.cos(), angle.sin()];
+            let h = 1e-6;
+            let du = |e: [f64; 2], c: usize, f: usize| {
+                let p = m.displacement([d[0] + h * e[0], d[1] + h * e[1]]);
+                let q = m.displacement([d[0] - h * e[0], d[1] - h * e[1]]);
+                (p[f][c] - q[f][c]) / (2.0 * h)
+            };
+            for f in 0..2 {
+                let eps = nalgebra::Vector3::new(
+                    du([1.0, 0.0], 0, f),
+                    du([0.0, 1.0], 1, f),
+                    du([0.0, 1.0], 0, f) + du([1.0, 0.0], 1, f),
+                );
+                let s = stiffness * eps;
+                let (tx, ty) = (m.traction(d, [1.0, 0.0]), m.traction(d, [0.0, 1.0]));
+                let scale = tx[f][0].abs().max(ty[f][1].abs()).max(tx[f][1].abs());
+                for (got, want) in [(s[0], tx[f][0]), (s[2], tx[f][1]), (s[1], ty[f][1])] {
+                    prop_assert!((got - want).abs() < 1e-4 * scale, "{got} {want}");
+                }
+            }
+        }
+    }
+}
