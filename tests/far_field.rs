@@ -234,7 +234,10 @@ fn a_strongly_anisotropic_far_field_is_warned_of() {
     let warned = |sc: &Scene| {
         let b = adit::setup::setup(sc).unwrap();
         let stretch = b.model.far_field.as_ref().unwrap().stretch;
-        let said = b.warnings.iter().any(|w| w.contains("strongly anisotropic"));
+        let said = b
+            .warnings
+            .iter()
+            .any(|w| w.contains("strongly anisotropic"));
         (stretch, said)
     };
     let (stretch, said) = warned(&shipped);

@@ -86,7 +86,7 @@ impl Element {
     /// outside the element (regular, by quadrature).
     pub fn regular(&self, m: &impl Kernel, xi: [f64; 2]) -> Integrals {
         let len = self.length();
-        let distance = distance_to_segment(xi, self.a, self.b);
+        let distance = m.nearest_singularity(xi, self);
         let pieces = ((3.0 * m.stretch() * len / distance).ceil() as usize).clamp(1, MOST_PIECES);
         let (mut h, mut g) = ([[[0.0; 2]; 2]; 2], [[[0.0; 2]; 2]; 2]);
         let width = 2.0 / pieces as f64;
@@ -96,8 +96,7 @@ impl Element {
                 let eta = start + 0.5 * width * (x + 1.0);
                 let weight = w * 0.5 * width * 0.5 * len;
                 let x = self.at(eta);
-                let d = [x[0] - xi[0], x[1] - xi[1]];
-                let (t, u) = (m.traction(d, self.n), m.displacement(d));
+                let (t, u) = (m.traction_at(x, xi, self.n), m.displacement_at(x, xi));
                 let phi = shape(eta);
                 for k in 0..2 {
                     for i in 0..2 {
@@ -115,9 +114,18 @@ impl Element {
     /// The integrals of T (principal value, without the free term) and U times each shape
     /// function for the element's own collocation point `c` (0 or 1), analytically.
     pub fn own(&self, m: &impl Kernel, c: usize) -> Integrals {
+        m.own(self, c)
+    }
+
+    /// The distance from `p` to the element, m.
+    pub fn distance_to(&self, p: [f64; 2]) -> f64 {
+        distance_to_segment(p, self.a, self.b)
+    }
+
+    /// The unit tangent, from a to b.
+    pub fn tangent(&self) -> [f64; 2] {
         let len = self.length();
-        let t = [(self.b[0] - self.a[0]) / len, (self.b[1] - self.a[1]) / len];
-        m.own(t, self.n, &self.own_scalars(c))
+        [(self.b[0] - self.a[0]) / len, (self.b[1] - self.a[1]) / len]
     }
 
     /// The scalar integrals of each shape function about the collocation point `c`.
@@ -186,8 +194,11 @@ mod tests {
             let at = |s: f64| {
                 let eta = 2.0 * s / len - 1.0;
                 let x = e.at(eta);
-                let d = [x[0] - xi[0], x[1] - xi[1]];
-                (m.traction(d, e.n), m.displacement(d), shape(eta))
+                (
+                    m.traction_at(x, xi, e.n),
+                    m.displacement_at(x, xi),
+                    shape(eta),
+                )
             };
             let (mut hq, mut gq) = ([[[0.0; 2]; 2]; 2], [[[0.0; 2]; 2]; 2]);
             let add = |into: &mut [[[f64; 2]; 2]; 2], k: [[f64; 2]; 2], phi: [f64; 2], w: f64| {

@@ -11,7 +11,7 @@
 //! On the element that holds the collocation point, r = |s − s₀| and ∂r/∂n = 0: U integrates
 //! through ∫ φ ln|s − s₀| ds, and T keeps its antisymmetric part alone, a principal value.
 
-use super::elements::{Integrals, OwnScalars};
+use super::elements::{Element, Integrals, OwnScalars};
 use super::kernel::Kernel;
 
 /// An isotropic medium: shear modulus G (Pa) and Poisson's ratio ν.
@@ -22,7 +22,22 @@ pub struct Kelvin {
 }
 
 impl Kernel for Kelvin {
-    fn displacement(&self, d: [f64; 2]) -> [[f64; 2]; 2] {
+    fn displacement_at(&self, x: [f64; 2], xi: [f64; 2]) -> [[f64; 2]; 2] {
+        self.displacement([x[0] - xi[0], x[1] - xi[1]])
+    }
+
+    fn traction_at(&self, x: [f64; 2], xi: [f64; 2], n: [f64; 2]) -> [[f64; 2]; 2] {
+        self.traction([x[0] - xi[0], x[1] - xi[1]], n)
+    }
+
+    fn own(&self, el: &Element, c: usize) -> Integrals {
+        self.own_on(el.tangent(), el.n, &el.own_scalars(c))
+    }
+}
+
+impl Kelvin {
+    /// U_ij for `d` = x − ξ (m, non-zero), m/N per m of line.
+    pub fn displacement(&self, d: [f64; 2]) -> [[f64; 2]; 2] {
         let nu = self.poisson;
         let r = d[0].hypot(d[1]);
         let g = [d[0] / r, d[1] / r];
@@ -33,7 +48,8 @@ impl Kernel for Kelvin {
         })
     }
 
-    fn traction(&self, d: [f64; 2], n: [f64; 2]) -> [[f64; 2]; 2] {
+    /// T_ij for `d` = x − ξ (m, non-zero) on the normal `n`, 1/m.
+    pub fn traction(&self, d: [f64; 2], n: [f64; 2]) -> [[f64; 2]; 2] {
         let nu = self.poisson;
         let r = d[0].hypot(d[1]);
         let g = [d[0] / r, d[1] / r];
@@ -48,7 +64,9 @@ impl Kernel for Kelvin {
         })
     }
 
-    fn own(&self, t: [f64; 2], n: [f64; 2], s: &[OwnScalars; 2]) -> Integrals {
+    /// The own-element integrals on an element of unit tangent `t` and normal `n` from its
+    /// scalar integrals `s`.
+    pub fn own_on(&self, t: [f64; 2], n: [f64; 2], s: &[OwnScalars; 2]) -> Integrals {
         let nu = self.poisson;
         let gc = 1.0 / (8.0 * std::f64::consts::PI * self.shear * (1.0 - nu));
         let tc = -(1.0 - 2.0 * nu) / (4.0 * std::f64::consts::PI * (1.0 - nu));

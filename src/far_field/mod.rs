@@ -26,23 +26,27 @@ mod elements;
 mod kelvin;
 mod kernel;
 mod lekhnitskii;
+mod melan;
 mod rock_mass;
 
 use faer::{Conj, Mat, Par};
 
 pub use attached::FarField;
-use elements::{COLLOCATION, Element, Integrals, OwnScalars};
+use elements::{COLLOCATION, Element, Integrals};
 pub use kelvin::Kelvin;
 pub use kernel::Kernel;
 pub use lekhnitskii::Lekhnitskii;
+pub use melan::Melan;
 pub use rock_mass::{JointSet, jointed_compliance, plane_strain_compliance};
 
-/// The far field's rock: isotropic (Kelvin's kernels) or anisotropic (Lekhnitskii's, a jointed
-/// rock mass as an equivalent continuum).
+/// The far field's rock: isotropic (Kelvin's kernels), anisotropic (Lekhnitskii's, a jointed
+/// rock mass as an equivalent continuum), or an isotropic half-plane under a free surface
+/// (Melan's).
 #[derive(Debug, Clone, PartialEq)]
 pub enum Medium {
     Isotropic(Kelvin),
     Anisotropic(Box<Lekhnitskii>),
+    HalfPlane(Melan),
 }
 
 impl Medium {
@@ -58,24 +62,35 @@ impl Medium {
 }
 
 impl Kernel for Medium {
-    fn displacement(&self, d: [f64; 2]) -> [[f64; 2]; 2] {
+    fn displacement_at(&self, x: [f64; 2], xi: [f64; 2]) -> [[f64; 2]; 2] {
         match self {
-            Self::Isotropic(m) => m.displacement(d),
-            Self::Anisotropic(m) => m.displacement(d),
+            Self::Isotropic(m) => m.displacement_at(x, xi),
+            Self::Anisotropic(m) => m.displacement_at(x, xi),
+            Self::HalfPlane(m) => m.displacement_at(x, xi),
         }
     }
 
-    fn traction(&self, d: [f64; 2], n: [f64; 2]) -> [[f64; 2]; 2] {
+    fn traction_at(&self, x: [f64; 2], xi: [f64; 2], n: [f64; 2]) -> [[f64; 2]; 2] {
         match self {
-            Self::Isotropic(m) => m.traction(d, n),
-            Self::Anisotropic(m) => m.traction(d, n),
+            Self::Isotropic(m) => m.traction_at(x, xi, n),
+            Self::Anisotropic(m) => m.traction_at(x, xi, n),
+            Self::HalfPlane(m) => m.traction_at(x, xi, n),
         }
     }
 
-    fn own(&self, t: [f64; 2], n: [f64; 2], s: &[OwnScalars; 2]) -> Integrals {
+    fn own(&self, el: &Element, c: usize) -> Integrals {
         match self {
-            Self::Isotropic(m) => m.own(t, n, s),
-            Self::Anisotropic(m) => m.own(t, n, s),
+            Self::Isotropic(m) => m.own(el, c),
+            Self::Anisotropic(m) => m.own(el, c),
+            Self::HalfPlane(m) => m.own(el, c),
+        }
+    }
+
+    fn nearest_singularity(&self, xi: [f64; 2], el: &Element) -> f64 {
+        match self {
+            Self::Isotropic(m) => m.nearest_singularity(xi, el),
+            Self::Anisotropic(m) => m.nearest_singularity(xi, el),
+            Self::HalfPlane(m) => m.nearest_singularity(xi, el),
         }
     }
 
@@ -83,6 +98,7 @@ impl Kernel for Medium {
         match self {
             Self::Isotropic(m) => m.stretch(),
             Self::Anisotropic(m) => m.stretch(),
+            Self::HalfPlane(m) => m.stretch(),
         }
     }
 }
@@ -155,10 +171,16 @@ pub fn interface_stiffness_chains(
     check(points, chains, &medium)?;
     let n = points.len();
     let ends = |c: &Vec<usize>| (points[c[0]], points[c[c.len() - 1]]);
+    // Twice the signed area the elements enclose; a half-plane's interface is open, closed by
+    // the surface, which adds nothing to it about a point of the surface.
+    let lift = match &medium {
+        Medium::HalfPlane(m) => m.surface,
+        _ => 0.0,
+    };
     let area2: f64 = (chains.iter())
         .map(|c| {
             let (p, q) = ends(c);
-            p[0] * q[1] - q[0] * p[1]
+            p[0] * (q[1] - lift) - q[0] * (p[1] - lift)
         })
         .sum();
     // The far field's outward normal points into the curve: left of a counter-clockwise edge.
@@ -354,7 +376,7 @@ fn fractions(points: &[[f64; 2]], chain: &[usize], element: &Element) -> Vec<f64
 
 /// The reasons `interface_stiffness_chains` refuses its input.
 fn check(points: &[[f64; 2]], chains: &[Vec<usize>], m: &Medium) -> Result<(), String> {
-    if let Medium::Isotropic(m) = m {
+    if let Medium::Isotropic(m) | Medium::HalfPlane(Melan { kelvin: m, .. }) = m {
         if !(m.shear > 0.0 && m.shear.is_finite()) {
             return Err(format!(
                 "far field: shear modulus {} Pa is not positive",

@@ -276,10 +276,22 @@ fn nodal_forces_of(
     forces: &[([f64; 2], [f64; 2])],
 ) -> Vec<[f64; 2]> {
     let n = points.len();
-    let mut out = vec![[0.0; 2]; n];
+    let edges: Vec<[usize; 2]> = (0..n).map(|a| [a, (a + 1) % n]).collect();
+    nodal_forces_on(m, points, &edges, forces)
+}
+
+/// `nodal_forces_of` on the edges `edges` (each from its first point to its second, the medium
+/// to their right).
+fn nodal_forces_on(
+    m: &Medium,
+    points: &[[f64; 2]],
+    edges: &[[usize; 2]],
+    forces: &[([f64; 2], [f64; 2])],
+) -> Vec<[f64; 2]> {
+    let mut out = vec![[0.0; 2]; points.len()];
     let steps = 400;
-    for a in 0..n {
-        let (p, q) = (points[a], points[(a + 1) % n]);
+    for &[a, b] in edges {
+        let (p, q) = (points[a], points[b]);
         let len = (q[0] - p[0]).hypot(q[1] - p[1]);
         let normal = [-(q[1] - p[1]) / len, (q[0] - p[0]) / len];
         for s in 0..steps {
@@ -287,7 +299,7 @@ fn nodal_forces_of(
             let x = [p[0] + w * (q[0] - p[0]), p[1] + w * (q[1] - p[1])];
             let mut t = [0.0; 2];
             for (xi, e) in forces {
-                let k = m.traction([x[0] - xi[0], x[1] - xi[1]], normal);
+                let k = m.traction_at(x, *xi, normal);
                 for (i, ei) in e.iter().enumerate() {
                     for (j, tj) in t.iter_mut().enumerate() {
                         *tj += ei * k[i][j];
@@ -296,7 +308,7 @@ fn nodal_forces_of(
             }
             for d in 0..2 {
                 out[a][d] += (1.0 - w) * t[d] * len / steps as f64;
-                out[(a + 1) % n][d] += w * t[d] * len / steps as f64;
+                out[b][d] += w * t[d] * len / steps as f64;
             }
         }
     }
@@ -307,7 +319,7 @@ fn nodal_forces_of(
 fn displacement_of(m: &Medium, x: [f64; 2], forces: &[([f64; 2], [f64; 2])]) -> [f64; 2] {
     let mut u = [0.0; 2];
     for (xi, e) in forces {
-        let k = m.displacement([x[0] - xi[0], x[1] - xi[1]]);
+        let k = m.displacement_at(x, *xi);
         for (i, ei) in e.iter().enumerate() {
             for (j, uj) in u.iter_mut().enumerate() {
                 *uj += ei * k[i][j];
@@ -428,4 +440,50 @@ fn random_rock_masses_take_the_tractions_of_an_exact_field() {
             "case {case}: stretch {stretch}, {errors:?}"
         );
     }
+}
+
+/// A half-plane's far field on an open interface, a half-circle below the surface from one
+/// surface point to the other (the near field the half-disc inside, the rest of the surface
+/// free): given the exact displacement of two pairs of opposite forces in the half-disc (Melan's
+/// field, which leaves the surface free), K returns their tractions, within 1 % of the largest at
+/// 64 elements and ever closer (measured 6.8e-3, 1.8e-3 and 4.4e-4 at 64, 128 and 256: h²).
+#[test]
+fn a_half_plane_far_field_takes_the_tractions_of_an_exact_field() {
+    let surface = 3.0;
+    let m = Medium::HalfPlane(Melan {
+        kelvin: Kelvin {
+            shear: SHEAR,
+            poisson: 0.3,
+        },
+        surface,
+    });
+    let forces = [
+        ([0.25, surface - 0.5], [1.0, 0.0]),
+        ([-0.25, surface - 0.4], [-1.0, 0.0]),
+        ([0.1, surface - 0.3], [0.0, 1.0]),
+        ([-0.1, surface - 0.6], [0.0, -1.0]),
+    ];
+    let mut errors = Vec::new();
+    for count in [64, 128, 256] {
+        // From (−1, surface) under the centre to (1, surface): count elements, count + 1 nodes.
+        let points: Vec<[f64; 2]> = (0..=count)
+            .map(|k| {
+                let a = std::f64::consts::PI * (1.0 + k as f64 / count as f64);
+                [a.cos(), surface + a.sin()]
+            })
+            .collect();
+        let edges: Vec<[usize; 2]> = (0..count).map(|i| [i, i + 1]).collect();
+        let k = interface_stiffness_on(&points, &edges, m.clone()).unwrap();
+        let u: Vec<[f64; 2]> = points
+            .iter()
+            .map(|&p| displacement_of(&m, p, &forces))
+            .collect();
+        let expected = nodal_forces_on(&m, &points, &edges, &forces);
+        errors.push(worst(&k, &u, &expected));
+    }
+    eprintln!("half-plane: 64, 128, 256 elements: {errors:?}");
+    assert!(
+        errors[0] < 1e-2 && errors[1] < errors[0] && errors[2] < errors[1],
+        "{errors:?}"
+    );
 }
