@@ -222,6 +222,11 @@ pub struct FarFieldSpec {
     /// continuum).
     #[serde(default)]
     pub rock_mass: RockMass,
+    /// The ground surface's height, m (default: none, the far field is the whole plane): the far
+    /// field is the half-plane below y = surface, free beyond the region (Melan's solution), and
+    /// the region's edges on the surface are free too.
+    #[serde(default)]
+    pub surface: Option<f64>,
 }
 
 /// `region.far_field.rock_mass`.

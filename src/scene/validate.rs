@@ -625,6 +625,57 @@ impl Scene {
 }
 
 impl Scene {
+    /// `region.far_field.surface`: finite, an intact far field (Melan's half-plane is
+    /// isotropic), the region below it, and an in-situ stress that leaves it free (σ_yy and σ_xy
+    /// zero there, to a millionth of the stress's size): else the far field could not hold the
+    /// model at rest.
+    fn validate_surface(&self, surface: f64, rock_mass: super::RockMass) -> Result<(), SceneError> {
+        let field = "region.far_field.surface";
+        if !surface.is_finite() {
+            return Err(invalid(field, "must be finite"));
+        }
+        if rock_mass == super::RockMass::Jointed {
+            return Err(invalid(
+                field,
+                "a half-plane far field is isotropic: rock_mass \"jointed\" cannot be taken with it",
+            ));
+        }
+        let span =
+            (self.region.polygon.iter().flatten()).fold(surface.abs(), |m, v| m.max(v.abs()));
+        if let Some(p) =
+            (self.region.polygon.iter()).find(|p| p[1] > surface + 1e-9 * span.max(1.0))
+        {
+            return Err(invalid(
+                field,
+                format!(
+                    "region.polygon's vertex ({}, {}) m lies above the surface y = {} m",
+                    Num(p[0]),
+                    Num(p[1]),
+                    Num(surface)
+                ),
+            ));
+        }
+        let s = &self.in_situ;
+        let syy = s.syy + s.gradient.syy * (surface - s.y_ref);
+        let depth = (self.region.polygon.iter()).fold(0.0f64, |m, p| m.max(surface - p[1]));
+        let size = (s.sxx.abs() + s.syy.abs() + s.sxy.abs())
+            .max((s.gradient.syy.abs() + s.gradient.sxx.abs()) * depth);
+        if syy.abs() > 1e-6 * size + 1e-3 || s.sxy.abs() > 1e-6 * size + 1e-3 {
+            return Err(invalid(
+                field,
+                format!(
+                    "the in-situ stress loads the surface (σyy = {} Pa, σxy = {} Pa at y = {} m): \
+                     a half-plane's surface is free, so in_situ must give σyy = σxy = 0 there \
+                     (with gravity, syy and its gradient vanishing at the surface)",
+                    Num(syy),
+                    Num(s.sxy),
+                    Num(surface)
+                ),
+            ));
+        }
+        Ok(())
+    }
+
     /// `region.far_field`: its constants in range; a static model (the far field is a
     /// stiffness, radiating no waves); no load of the boundary conditions on the region's outer
     /// boundary, which the far field loads itself (fixities stay allowed: a point fixed holds
@@ -646,6 +697,9 @@ impl Scene {
                 "region.far_field.poisson",
                 format!("must lie in (−1, 0.5), got {}", Num(nu)),
             ));
+        }
+        if let Some(surface) = f.surface {
+            self.validate_surface(surface, f.rock_mass)?;
         }
         if f.rock_mass == super::RockMass::Jointed && self.joint_sets.is_empty() {
             return Err(invalid(

@@ -11,8 +11,8 @@ use adit_meshing::{BoundaryEdge, EdgeKind};
 use super::boundary::traction_loads;
 use super::plan::{Boundary, InSituField};
 use crate::far_field::{
-    FarField, JointSet, Kernel, Medium, interface_stiffness_chains, jointed_compliance,
-    plane_strain_compliance,
+    FarField, JointSet, Kelvin, Kernel, Medium, Melan, interface_stiffness_chains,
+    jointed_compliance, plane_strain_compliance,
 };
 use crate::model::{Model, traction};
 use crate::scene::{RockMass, Scene};
@@ -39,8 +39,15 @@ pub fn far_field(
         spec.young.unwrap_or(rock.young),
         spec.poisson.unwrap_or(rock.poisson),
     );
+    let shear = young / (2.0 * (1.0 + poisson));
     let medium = match spec.rock_mass {
-        RockMass::Intact => Medium::isotropic(young / (2.0 * (1.0 + poisson)), poisson),
+        RockMass::Intact => match spec.surface {
+            None => Medium::isotropic(shear, poisson),
+            Some(surface) => Medium::HalfPlane(Melan {
+                kelvin: Kelvin { shear, poisson },
+                surface,
+            }),
+        },
         RockMass::Jointed => {
             let sets: Vec<JointSet> = (0..scene.joint_sets.len())
                 .map(|i| {
@@ -61,8 +68,15 @@ pub fn far_field(
                 .map_err(|e| anyhow::anyhow!("region.far_field.rock_mass: {e}"))?
         }
     };
+    // The region's outer edges, but those on a half-plane's surface, which stay free.
+    let span = (model.nodes.pos.iter().flatten()).fold(1.0f64, |m, v| m.max(v.abs()));
+    let on_surface = |e: &BoundaryEdge| {
+        spec.surface.is_some_and(|s| {
+            (e.nodes.iter()).all(|&n| (model.nodes.pos[n as usize][1] - s).abs() <= 1e-9 * span)
+        })
+    };
     let outer: Vec<&BoundaryEdge> = (boundary.edges.iter())
-        .filter(|e| matches!(e.kind, EdgeKind::Region(_)))
+        .filter(|e| matches!(e.kind, EdgeKind::Region(_)) && !on_surface(e))
         .collect();
     anyhow::ensure!(
         outer.len() <= 2 * MOST_ELEMENTS,
