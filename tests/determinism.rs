@@ -36,6 +36,7 @@ fn one_and_three_threads_agree_bit_for_bit() {
         ("jointed_tunnel.json", BlockMode::Simple),
         ("jointed_tunnel.json", BlockMode::Rigid),
         ("jointed_tunnel_bem.json", BlockMode::Deformable),
+        ("shallow_tunnel_bem.json", BlockMode::Deformable),
     ] {
         let (a, b) = (run_on(model, mode, 1), run_on(model, mode, 3));
         assert!(

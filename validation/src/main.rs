@@ -68,6 +68,7 @@ fn main() -> anyhow::Result<()> {
             "models/jointed_tunnel.json",
             "models/jointed_tunnel_mixed.json",
             "models/jointed_tunnel_bem.json",
+            "models/shallow_tunnel_bem.json",
         ];
         let mut rows: Vec<readme::ModelRow> = sections
             .iter()

@@ -192,10 +192,12 @@ impl Case for FarField {
             described.join("; ")
         );
         md.push_str(&jointed.markdown);
+        let (shallow, shallow_model) = super::shallow::shallow_tunnel(&cx.root)?;
+        md.push_str(&shallow);
         Ok(Section {
             markdown: md,
             rows,
-            models: vec![jointed.model],
+            models: vec![jointed.model, shallow_model],
             ..Default::default()
         })
     }

@@ -24,6 +24,7 @@ mod recovery;
 mod rotation;
 mod salencon;
 mod scale;
+mod shallow;
 mod slivers;
 mod softening;
 mod stiff_joints;
