@@ -1,6 +1,6 @@
-//! Part of the far-field section (issue 18's half-plane): `models/shallow_tunnel_bem.json` (a 2 m tunnel 6 m below a
-//! free surface, 10 MPa horizontal stress) against large boxes of zones, and the same near field
-//! truncated.
+//! Part of the far-field section (issue 18's half-plane): `models/shallow_tunnel_bem.json` (a
+//! 2 m tunnel 6 m below a free surface, 10 MPa horizontal stress) against large boxes of zones,
+//! and the same near field truncated.
 
 use std::fmt::Write as _;
 use std::time::Instant;
