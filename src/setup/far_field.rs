@@ -135,10 +135,11 @@ pub fn far_field(
     }))
 }
 
-/// The outer boundary's edges `outer` (material on their left, so in a loop) grouped into
-/// elements of about `size` (m): the loop is cut into runs at the region's corners and where a
-/// joint reaches it (an edge's end node starts no edge: the next starts at its twin, the other
-/// block's node at the same place), and each run of length L into max(1, round(L / size))
+/// The outer boundary's edges `outer` (material on their left, so in a loop, or in an open curve
+/// from surface to surface under a half-plane) grouped into elements of about `size` (m): the
+/// loop is cut into runs at the region's corners, where a joint reaches it (an edge's end node
+/// starts no edge: the next starts at its twin, the other block's node at the same place) and
+/// where the curve ends, and each run of length L into max(1, round(L / size))
 /// elements (at most one per edge), each ending at the edge end nearest its share of L. Each
 /// element is its chain of nodes from start to end.
 fn element_chains(outer: &[&BoundaryEdge], pos: &[[f64; 2]], size: f64) -> Vec<Vec<u32>> {
@@ -147,41 +148,56 @@ fn element_chains(outer: &[&BoundaryEdge], pos: &[[f64; 2]], size: f64) -> Vec<V
         .collect();
     let at = |n: u32| pos[n as usize];
     let gap = |a: [f64; 2], b: [f64; 2]| (a[0] - b[0]).hypot(a[1] - b[1]);
-    // The edge after each, by its end node, or else the one starting nearest its end.
-    let next: Vec<usize> = (outer.iter())
+    // The edge after each: the one starting at its end node, or else at the same place (a
+    // joint's twin node); none where the interface ends (a half-plane's surface).
+    let span = (outer.iter())
+        .flat_map(|e| e.nodes.iter().flat_map(|&n| at(n)))
+        .fold(1.0f64, |m, v| m.max(v.abs()));
+    let next: Vec<Option<usize>> = (outer.iter())
         .map(|e| match by_start.get(&e.nodes[1]) {
-            Some(&j) => j,
+            Some(&j) => Some(j),
             None => (0..outer.len())
-                .min_by(|&a, &b| {
-                    let end = at(e.nodes[1]);
-                    gap(at(outer[a].nodes[0]), end).total_cmp(&gap(at(outer[b].nodes[0]), end))
-                })
-                .unwrap_or(0),
+                .find(|&j| gap(at(outer[j].nodes[0]), at(e.nodes[1])) <= 1e-9 * span),
         })
         .collect();
-    let breaks_after = |i: usize| {
-        let j = next[i];
-        outer[i].kind != outer[j].kind || outer[i].nodes[1] != outer[j].nodes[0]
+    let breaks_after = |i: usize| match next[i] {
+        None => true,
+        Some(j) => outer[i].kind != outer[j].kind || outer[i].nodes[1] != outer[j].nodes[0],
     };
-    let Some(first) = (0..outer.len()).find(|&i| breaks_after(i)).map(|i| next[i]) else {
-        return outer.iter().map(|e| e.nodes.to_vec()).collect();
-    };
-    // The runs, edge by edge from a break.
-    let mut runs: Vec<Vec<usize>> = vec![Vec::new()];
-    let mut i = first;
-    for _ in 0..outer.len() {
-        runs.last_mut().expect("a run").push(i);
-        if breaks_after(i) {
-            runs.push(Vec::new());
+    // The runs, walked from the interface's open ends first, then from each break.
+    let mut has_previous = vec![false; outer.len()];
+    for j in next.iter().flatten() {
+        has_previous[*j] = true;
+    }
+    let starts: Vec<usize> = (0..outer.len())
+        .filter(|&i| !has_previous[i])
+        .chain(
+            (0..outer.len())
+                .filter(|&i| breaks_after(i))
+                .filter_map(|i| next[i]),
+        )
+        .collect();
+    let mut visited = vec![false; outer.len()];
+    let mut runs: Vec<Vec<usize>> = Vec::new();
+    for start in starts {
+        let (mut run, mut i) = (Vec::new(), start);
+        while !visited[i] {
+            visited[i] = true;
+            run.push(i);
+            if breaks_after(i) {
+                runs.push(std::mem::take(&mut run));
+            }
+            match next[i] {
+                Some(j) => i = j,
+                None => break,
+            }
         }
-        i = next[i];
-        if i == first {
-            break;
+        if !run.is_empty() {
+            runs.push(run);
         }
     }
-    runs.retain(|r| !r.is_empty());
-    // A walk that missed edges (the loop not closing through them) keeps one element per edge.
-    if runs.iter().map(Vec::len).sum::<usize>() != outer.len() {
+    // A loop without a break, or edges the walks missed, keep one element per edge.
+    if runs.is_empty() || visited.contains(&false) {
         return outer.iter().map(|e| e.nodes.to_vec()).collect();
     }
     let mut chains = Vec::new();
