@@ -91,6 +91,18 @@ pub fn assembly_cost(elements: usize) -> anyhow::Result<(f64, f64)> {
     ))
 }
 
+/// Up to how many interface elements a far field stays cheaper than the box of zones it
+/// replaces, in words: condensing n elements costs about `per_cube` n³ s, and the box's run
+/// takes `saved` s more than the near field's.
+pub fn crossover(per_cube: f64, saved: f64, replaced: &str) -> String {
+    format!(
+        "Condensing n elements takes about {per_cube:.1e} n³ s (the cost table), and the {replaced} \
+         ran {saved:.2} s longer than the near field with its far field, so here the far field \
+         stays the cheaper up to about {:.0} interface elements.",
+        (saved.max(0.0) / per_cube).cbrt()
+    )
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -114,11 +114,16 @@ impl Case for FarField {
                 Ok((half, f.nodes.len(), f.assemble_s))
             })
             .collect::<anyhow::Result<_>>()?;
-        let jointed = jointed_tunnel(&cx.root)?;
         let costs: Vec<(usize, f64, f64)> = ELEMENTS
             .iter()
             .map(|&n| assembly_cost(n).map(|(s, b)| (n, s, b)))
             .collect::<anyhow::Result<_>>()?;
+        // Condensing's seconds per element cubed, from the largest row.
+        let per_cube = {
+            let (n, s, _) = costs[costs.len() - 1];
+            s / (n as f64).powi(3)
+        };
+        let jointed = jointed_tunnel(&cx.root, per_cube)?;
 
         let mut md = String::new();
         let _ = writeln!(md, "\n## Far field by boundary elements (issue 18)\n");
@@ -192,7 +197,7 @@ impl Case for FarField {
             described.join("; ")
         );
         md.push_str(&jointed.markdown);
-        let (shallow, shallow_model) = super::shallow::shallow_tunnel(&cx.root)?;
+        let (shallow, shallow_model) = super::shallow::shallow_tunnel(&cx.root, per_cube)?;
         md.push_str(&shallow);
         Ok(Section {
             markdown: md,
@@ -238,7 +243,7 @@ fn jointed_box(
 /// Issue 18's jointed tunnel: the shipped ±25 m box, boxes of ±50 m and ±100 m (the reference:
 /// the rock mass all but infinite), near fields of ±6 m and ±9 m with the intact and the jointed
 /// far field, and `models/jointed_tunnel_bem.json` by both methods.
-fn jointed_tunnel(root: &std::path::Path) -> anyhow::Result<JointedTunnel> {
+fn jointed_tunnel(root: &std::path::Path, per_cube: f64) -> anyhow::Result<JointedTunnel> {
     let shipped = adit::Scene::load(&root.join("models/jointed_tunnel.json"))?;
     let mut runs = Vec::new();
     for half in [25.0, 50.0, 100.0] {
@@ -333,6 +338,15 @@ fn jointed_tunnel(root: &std::path::Path) -> anyhow::Result<JointedTunnel> {
         small.zones,
         100.0 * change(&runs[3]).0,
         100.0 * change(&runs[5]).0,
+    );
+    let _ = writeln!(
+        md,
+        "{}\n",
+        crate::far_field::crossover(
+            per_cube,
+            reference.wall_s - shipped_bem.wall_s,
+            "±100 m box"
+        )
     );
     let model = ModelRow {
         file: "models/jointed_tunnel_bem.json".into(),

@@ -69,7 +69,7 @@ fn boxed(shipped: &Scene, half: f64, depth: f64) -> anyhow::Result<Scene> {
 }
 
 /// The section's text and the shipped model's row of the README's table.
-pub fn shallow_tunnel(root: &std::path::Path) -> anyhow::Result<(String, ModelRow)> {
+pub fn shallow_tunnel(root: &std::path::Path, per_cube: f64) -> anyhow::Result<(String, ModelRow)> {
     let shipped = Scene::load(&root.join("models/shallow_tunnel_bem.json"))?;
     let mut runs = vec![run(
         &shipped,
@@ -144,6 +144,15 @@ pub fn shallow_tunnel(root: &std::path::Path) -> anyhow::Result<(String, ModelRo
         100.0 * runs[0].zones as f64 / runs[5].zones as f64,
         runs[5].zones,
         100.0 * change(&runs[3].figures)[0]
+    );
+    let _ = writeln!(
+        md,
+        "{}\n",
+        crate::far_field::crossover(
+            per_cube,
+            runs[5].seconds - runs[1].seconds,
+            "±100 m box (implicit)"
+        )
     );
     let model = ModelRow {
         file: "models/shallow_tunnel_bem.json".into(),
