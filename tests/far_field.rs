@@ -340,8 +340,9 @@ fn a_shallow_tunnel_under_a_free_surface_converges_as_in_a_large_box() {
     }
 }
 
-/// A half-plane far field refuses a surface below the region, a jointed rock mass (Melan's
-/// half-plane is isotropic) and an in-situ stress that loads the surface, naming the field.
+/// A half-plane far field refuses a surface below the region or absurdly far above it, a jointed
+/// rock mass (Melan's half-plane is isotropic) and an in-situ stress that loads the surface,
+/// naming the field.
 #[test]
 fn what_a_half_plane_cannot_take_is_refused() {
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
@@ -358,6 +359,10 @@ fn what_a_half_plane_cannot_take_is_refused() {
         (
             text.replace(r#""syy": 0"#, r#""syy": -2e6"#),
             "loads the surface",
+        ),
+        (
+            text.replace(r#""surface": 0"#, r#""surface": 1e300"#),
+            "a million times",
         ),
     ];
     for (scene, reason) in cases {

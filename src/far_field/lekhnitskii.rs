@@ -72,7 +72,7 @@ impl Lekhnitskii {
         loop {
             let mu = roots(&b);
             if (mu[0] - mu[1]).norm() >= SPLIT * (mu[0].norm() + mu[1].norm()) {
-                return Ok(Self::with_roots(b, mu));
+                return Self::with_roots(b, mu);
             }
             if nudge > 1e-2 {
                 return Err("far field: the compliance's characteristic roots do not split".into());
@@ -82,7 +82,9 @@ impl Lekhnitskii {
         }
     }
 
-    fn with_roots(b: [[f64; 3]; 3], mu: [C; 2]) -> Self {
+    /// The constants for the roots `mu`; an error where round-off leaves their conditions
+    /// singular or the constants not finite (a compliance of extreme anisotropy).
+    fn with_roots(b: [[f64; 3]; 3], mu: [C; 2]) -> Result<Self, String> {
         let p = mu.map(|m| m * m * b[0][0] + b[0][1] - m * b[0][2]);
         let q = mu.map(|m| m * b[0][1] + b[1][1] / m - b[1][2]);
         let row = |v: [C; 2]| [v[0], v[1], -v[0].conj(), -v[1].conj()];
@@ -95,26 +97,38 @@ impl Lekhnitskii {
         ]);
         let lu = m.lu();
         let tau = 2.0 * std::f64::consts::PI;
-        let solve = |rhs: Vector4<C>| lu.solve(&rhs).expect("distinct roots: M is regular");
+        let singular = || {
+            "far field: the compliance is too anisotropic for its kernels (their force conditions \
+             are singular to round-off)"
+                .to_string()
+        };
+        let solve = |rhs: Vector4<C>| lu.solve(&rhs).ok_or_else(singular);
         // Unit forces along x and along y.
         let ax = solve(Vector4::new(
             C::new(0.0, 0.0),
             C::new(0.0, 1.0 / tau),
             C::new(0.0, 0.0),
             C::new(0.0, 0.0),
-        ));
+        ))?;
         let ay = solve(Vector4::new(
             C::new(0.0, -1.0 / tau),
             C::new(0.0, 0.0),
             C::new(0.0, 0.0),
             C::new(0.0, 0.0),
-        ));
-        Self {
+        ))?;
+        let finite = |z: &C| z.re.is_finite() && z.im.is_finite();
+        let all = [
+            ax[0], ax[1], ay[0], ay[1], mu[0], mu[1], p[0], p[1], q[0], q[1],
+        ];
+        if !all.iter().all(finite) {
+            return Err(singular());
+        }
+        Ok(Self {
             compliance: b,
             mu,
             pq: [p, q],
             a: [[ax[0], ay[0]], [ax[1], ay[1]]],
-        }
+        })
     }
 
     /// The roots μ₁, μ₂.

@@ -626,9 +626,9 @@ impl Scene {
 
 impl Scene {
     /// `region.far_field.surface`: finite, an intact far field (Melan's half-plane is
-    /// isotropic), the region below it, and an in-situ stress that leaves it free (σ_yy and σ_xy
-    /// zero there, to a millionth of the stress's size): else the far field could not hold the
-    /// model at rest.
+    /// isotropic), the region below it but not a million times its size below, and an in-situ
+    /// stress that leaves it free (σ_yy and σ_xy zero there, to a millionth of the stress's size):
+    /// else the far field could not hold the model at rest.
     fn validate_surface(&self, surface: f64, rock_mass: super::RockMass) -> Result<(), SceneError> {
         let field = "region.far_field.surface";
         if !surface.is_finite() {
@@ -655,12 +655,29 @@ impl Scene {
                 ),
             ));
         }
+        let (lo, hi) = (self.region.polygon.iter()).fold((f64::MAX, f64::MIN), |(lo, hi), p| {
+            (lo.min(p[1]), hi.max(p[1]))
+        });
+        let width = (self.region.polygon.iter()).fold(0.0f64, |m, p| {
+            (self.region.polygon.iter()).fold(m, |m, q| m.max((p[0] - q[0]).abs()))
+        });
+        let size = (hi - lo).max(width);
+        if surface - hi > 1e6 * size {
+            return Err(invalid(
+                field,
+                format!(
+                    "lies {} m above the region, over a million times its size: the half-plane is \
+                     the whole plane there (leave surface out)",
+                    Num(surface - hi)
+                ),
+            ));
+        }
         let s = &self.in_situ;
         let syy = s.syy + s.gradient.syy * (surface - s.y_ref);
         let depth = (self.region.polygon.iter()).fold(0.0f64, |m, p| m.max(surface - p[1]));
-        let size = (s.sxx.abs() + s.syy.abs() + s.sxy.abs())
+        let stress = (s.sxx.abs() + s.syy.abs() + s.sxy.abs())
             .max((s.gradient.syy.abs() + s.gradient.sxx.abs()) * depth);
-        if syy.abs() > 1e-6 * size + 1e-3 || s.sxy.abs() > 1e-6 * size + 1e-3 {
+        if syy.abs() > 1e-6 * stress + 1e-3 || s.sxy.abs() > 1e-6 * stress + 1e-3 {
             return Err(invalid(
                 field,
                 format!(
