@@ -169,12 +169,12 @@ fn tunnel_closure(sc: &Scene, name: &str) -> (f64, usize) {
     )
 }
 
-/// `models/jointed_tunnel_bem.json`, a ±6 m near field of the jointed tunnel with the jointed
+/// `models/jointed_tunnel_bem.json`, a ±9 m near field of the jointed tunnel with the jointed
 /// rock mass beyond as an anisotropic far field (`rock_mass: jointed`), closes as the jointed
 /// rock in a box of ±100 m under the in-situ traction, within 2 % (mean wall closure) with a
-/// sixteenth of its zones, by either method (measured +0.3 % explicit, +1.3 % implicit). The
-/// intact far field on the same near field closes more than 5 % less (−8.5 %): the joints beyond
-/// the near field soften the rock mass. (The shipped ±25 m box closes 2.7 % more than the ±100 m
+/// twelfth of its zones, by either method (measured +0.3 % explicit, +1.4 % implicit). The
+/// intact far field on the same near field closes more than 2 % less (−3.8 %; −8.5 % on ±6 m):
+/// the joints beyond the near field soften the rock mass. (The shipped ±25 m box closes 2.7 % more than the ±100 m
 /// one, its traction boundary too near.)
 #[test]
 fn a_jointed_far_field_stands_for_the_jointed_rock_beyond() {
@@ -210,10 +210,10 @@ fn a_jointed_far_field_stands_for_the_jointed_rock_beyond() {
             "{name}: {zones} zones, closure {closure:.4e} m, {change:+.4} against ±100 m ({big_zones} zones, {reference:.4e} m)"
         );
         if name == "intact" {
-            assert!(change < -0.05, "{change}");
+            assert!(change < -0.02, "{change}");
         } else {
             assert!(
-                change.abs() < 0.02 && 16 * zones <= big_zones,
+                change.abs() < 0.02 && 12 * zones <= big_zones,
                 "{name}: {change}"
             );
         }
