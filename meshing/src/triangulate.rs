@@ -456,14 +456,24 @@ fn graded_rings(block: &Block, excavations: &[Polygon], z: &Zoning) -> Vec<Point
     let (lo, hi) = block.outer.bounds();
     let reach = distance(lo, hi);
     let rings: Vec<&Polygon> = std::iter::once(&block.outer).chain(&block.holes).collect();
+    // Each ring's centre and radius (every vertex within it of the centre): a point farther
+    // than d + radius from the centre is at least d from the ring, and outside a hole, so the
+    // exact distances and containments below are taken only where that bound cannot decide.
+    let circle = |q: &Polygon| {
+        let c = q.centroid();
+        (
+            c,
+            q.vertices
+                .iter()
+                .map(|&v| distance(v, c))
+                .fold(0.0, f64::max),
+        )
+    };
+    let ring_circles: Vec<(Point, f64)> = rings.iter().map(|q| circle(q)).collect();
     let mut out = Vec::new();
+    let mut distances = vec![0.0; excavations.len()];
     for (j, hole) in excavations.iter().enumerate() {
-        let c = hole.centroid();
-        let r0 = hole
-            .vertices
-            .iter()
-            .map(|&v| distance(v, c))
-            .fold(0.0, f64::max);
+        let (c, r0) = circle(hole);
         let mut d = 0.0;
         let mut ring = 0;
         loop {
@@ -483,22 +493,30 @@ fn graded_rings(block: &Block, excavations: &[Polygon], z: &Zoning) -> Vec<Point
                 if p[0] < lo[0] || p[0] > hi[0] || p[1] < lo[1] || p[1] > hi[1] {
                     continue;
                 }
-                if !block.outer.contains(p) || block.holes.iter().any(|h| h.contains(p)) {
+                let in_hole = (block.holes.iter().zip(&ring_circles[1..]))
+                    .any(|(h, (hc, hr))| distance(p, *hc) <= *hr && h.contains(p));
+                if !block.outer.contains(p) || in_hole {
                     continue;
                 }
-                let hp = target_size(excavations, z, p);
-                let own = hole.boundary_distance(p);
-                let nearest_other = excavations
-                    .iter()
-                    .enumerate()
+                for (dist, h) in distances.iter_mut().zip(excavations) {
+                    *dist = h.boundary_distance(p);
+                }
+                // `target_size`, from the distances just taken.
+                let nearest = distances.iter().copied().fold(f64::INFINITY, f64::min);
+                let hp = if nearest.is_finite() {
+                    (z.h_excavation + z.grading * nearest).min(z.h_far)
+                } else {
+                    z.h_far
+                };
+                let own = distances[j];
+                let nearest_other = (distances.iter().enumerate())
                     .filter(|&(i, _)| i != j)
-                    .map(|(_, h)| h.boundary_distance(p))
+                    .map(|(_, &v)| v)
                     .fold(f64::INFINITY, f64::min);
-                let clearance = rings
-                    .iter()
-                    .map(|q| q.boundary_distance(p))
-                    .fold(f64::INFINITY, f64::min);
-                if nearest_other < own || clearance < 0.6 * hp {
+                let near_ring = (rings.iter().zip(&ring_circles)).any(|(q, (qc, qr))| {
+                    distance(p, *qc) - qr < 0.6 * hp && q.boundary_distance(p) < 0.6 * hp
+                });
+                if nearest_other < own || near_ring {
                     continue;
                 }
                 out.push(p);
