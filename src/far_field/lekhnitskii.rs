@@ -28,8 +28,8 @@
 
 use nalgebra::{Complex, Matrix4, Vector4};
 
-use super::elements::{Element, Integrals, OwnScalars};
-use super::kernel::Kernel;
+use super::elements::{Integrals, OwnScalars};
+use super::kernel::Translational;
 
 type C = Complex<f64>;
 
@@ -153,15 +153,15 @@ impl Lekhnitskii {
             })
         })
     }
+}
 
-    /// U_ij for `d` = x − ξ (m, non-zero), m/N per m of line.
-    pub fn displacement(&self, d: [f64; 2]) -> [[f64; 2]; 2] {
+impl Translational for Lekhnitskii {
+    fn displacement(&self, d: [f64; 2]) -> [[f64; 2]; 2] {
         let w = self.mu.map(|m| (m * d[1] + d[0]).ln());
         self.sum(&self.pq, w)
     }
 
-    /// T_ij for `d` = x − ξ (m, non-zero) on the normal `n`, 1/m.
-    pub fn traction(&self, d: [f64; 2], n: [f64; 2]) -> [[f64; 2]; 2] {
+    fn traction(&self, d: [f64; 2], n: [f64; 2]) -> [[f64; 2]; 2] {
         let w = self.mu.map(|m| (m * d[1] + d[0]).inv());
         self.sum(&self.traction_factors(n), w)
     }
@@ -169,9 +169,7 @@ impl Lekhnitskii {
     /// Along the element z_k − z_k⁰ = (s − s₀) ω_k, ω_k = t_x + μ_k t_y: ln(z_k − z_k⁰) is
     /// ln|s − s₀| + ln ω_k after the point and ln|s − s₀| + ln(−ω_k) before it (principal
     /// logarithms), and 1/(z_k − z_k⁰) = 1/((s − s₀) ω_k).
-    /// The own-element integrals on an element of unit tangent `t` and normal `n` from its
-    /// scalar integrals `s`.
-    pub fn own_on(&self, t: [f64; 2], n: [f64; 2], s: &[OwnScalars; 2]) -> Integrals {
+    fn own_on(&self, t: [f64; 2], n: [f64; 2], s: &[OwnScalars; 2]) -> Integrals {
         let omega = self.mu.map(|m| m * t[1] + t[0]);
         let tf = self.traction_factors(n);
         let (mut h, mut g) = ([[[0.0; 2]; 2]; 2], [[[0.0; 2]; 2]; 2]);
@@ -181,20 +179,6 @@ impl Lekhnitskii {
             h[k] = self.sum(&tf, omega.map(|o| o.inv() * s.pv));
         }
         (h, g)
-    }
-}
-
-impl Kernel for Lekhnitskii {
-    fn displacement_at(&self, x: [f64; 2], xi: [f64; 2]) -> [[f64; 2]; 2] {
-        self.displacement([x[0] - xi[0], x[1] - xi[1]])
-    }
-
-    fn traction_at(&self, x: [f64; 2], xi: [f64; 2], n: [f64; 2]) -> [[f64; 2]; 2] {
-        self.traction([x[0] - xi[0], x[1] - xi[1]], n)
-    }
-
-    fn own(&self, el: &Element, c: usize) -> Integrals {
-        self.own_on(el.tangent(), el.n, &el.own_scalars(c))
     }
 
     /// The largest condition number of the maps (x, y) ↦ z_k = x + μ_k y: the kernels vary with
