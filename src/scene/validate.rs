@@ -655,20 +655,21 @@ impl Scene {
                 ),
             ));
         }
-        let (lo, hi) = (self.region.polygon.iter()).fold((f64::MAX, f64::MIN), |(lo, hi), p| {
-            (lo.min(p[1]), hi.max(p[1]))
-        });
-        let width = (self.region.polygon.iter()).fold(0.0f64, |m, p| {
-            (self.region.polygon.iter()).fold(m, |m, q| m.max((p[0] - q[0]).abs()))
-        });
-        let size = (hi - lo).max(width);
-        if surface - hi > 1e6 * size {
+        let (lo, hi) =
+            (self.region.polygon.iter()).fold(([f64::MAX; 2], [f64::MIN; 2]), |(lo, hi), p| {
+                (
+                    [lo[0].min(p[0]), lo[1].min(p[1])],
+                    [hi[0].max(p[0]), hi[1].max(p[1])],
+                )
+            });
+        let size = (hi[1] - lo[1]).max(hi[0] - lo[0]);
+        if surface - hi[1] > 1e6 * size {
             return Err(invalid(
                 field,
                 format!(
                     "lies {} m above the region, over a million times its size: the half-plane is \
                      the whole plane there (leave surface out)",
-                    Num(surface - hi)
+                    Num(surface - hi[1])
                 ),
             ));
         }
