@@ -1,10 +1,13 @@
 //! An elastic far field by boundary elements (issue 18; the seed book's chapter 7 and Lorig &
 //! Brady's HYDEBE, 1984): the infinite plane-strain medium outside a closed polygon (the
 //! interface, whose inside is the near field of zones and blocks) condensed into a stiffness on
-//! the polygon's nodes.
+//! the polygon's nodes; or the half-plane below a free surface outside an open curve from the
+//! surface to the surface.
 //!
-//! Direct boundary element method (Brebbia & Dominguez 1992, ch. 5) with Kelvin's fundamental
-//! solution (`kelvin`) on straight discontinuous linear elements, one per polygon edge or one
+//! Direct boundary element method (Brebbia & Dominguez 1992, ch. 5) with a fundamental solution
+//! (`kernel::Kernel`: Kelvin's for intact rock, `kelvin`; Lekhnitskii's for a jointed rock mass,
+//! `lekhnitskii` and `rock_mass`; Melan's for a half-plane, `melan`) on straight discontinuous
+//! linear elements, one per polygon edge or one
 //! per straight run of several (`elements`): at each collocation point ξ,
 //! c_ij u_j(ξ) + ∫_Γ T_ij u_j dΓ = ∫_Γ U_ij t_j dΓ + C_i, over the interface alone, with C the
 //! displacement at infinity and the tractions carrying no net force, ∫_Γ t dΓ = 0 (the exterior
