@@ -96,7 +96,7 @@ impl Element {
                 let eta = start + 0.5 * width * (x + 1.0);
                 let weight = w * 0.5 * width * 0.5 * len;
                 let x = self.at(eta);
-                let (t, u) = (m.traction_at(x, xi, self.n), m.displacement_at(x, xi));
+                let (t, u) = m.kernels_at(x, xi, self.n);
                 let phi = shape(eta);
                 for k in 0..2 {
                     for i in 0..2 {
@@ -109,12 +109,6 @@ impl Element {
             }
         }
         (h, g)
-    }
-
-    /// The integrals of T (principal value, without the free term) and U times each shape
-    /// function for the element's own collocation point `c` (0 or 1), analytically.
-    pub fn own(&self, m: &impl Kernel, c: usize) -> Integrals {
-        m.own(self, c)
     }
 
     /// The distance from `p` to the element, m.
@@ -187,7 +181,7 @@ mod tests {
         let len = e.length();
         let count = 200_000;
         for (c, &eta) in COLLOCATION.iter().enumerate() {
-            let (h, g) = e.own(m, c);
+            let (h, g) = m.own(&e, c);
             let xi = e.at(eta);
             let s0 = 0.5 * len * (eta + 1.0);
             // T φ_k and U φ_k at arc length s.

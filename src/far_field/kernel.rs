@@ -16,6 +16,12 @@ pub trait Kernel {
     /// c_ij u_j + ∫ T_ij u_j = ∫ U_ij t_j for the force along i).
     fn traction_at(&self, x: [f64; 2], xi: [f64; 2], n: [f64; 2]) -> [[f64; 2]; 2];
 
+    /// T_ij on the normal `n` and U_ij together (quadrature wants both at each point): a kernel
+    /// whose two share their work computes it once.
+    fn kernels_at(&self, x: [f64; 2], xi: [f64; 2], n: [f64; 2]) -> ([[f64; 2]; 2], [[f64; 2]; 2]) {
+        (self.traction_at(x, xi, n), self.displacement_at(x, xi))
+    }
+
     /// ∫ T_ij φ_k ds (principal value, without the free term) and ∫ U_ij φ_k ds over the
     /// element `el` for its own collocation point `c`.
     fn own(&self, el: &Element, c: usize) -> Integrals;

@@ -77,27 +77,32 @@ impl Melan {
         )
     }
 
-    /// The complementary part of U_ij, m/N per m.
-    pub fn complementary_displacement(&self, x: [f64; 2], xi: [f64; 2]) -> [[f64; 2]; 2] {
+    /// The complementary parts of T_ij on the normal `n` (1/m) and of U_ij (m/N per m).
+    pub fn complementary_at(
+        &self,
+        x: [f64; 2],
+        xi: [f64; 2],
+        n: [f64; 2],
+    ) -> ([[f64; 2]; 2], [[f64; 2]; 2]) {
         let (z, z0) = self.local(x, xi);
         let two_g = 2.0 * self.kelvin.shear;
-        std::array::from_fn(|i| {
-            let u = self.complementary(z, z0, i).3 / two_g;
-            [u.re, u.im]
-        })
-    }
-
-    /// The complementary part of T_ij on the normal `n`, 1/m.
-    pub fn complementary_traction(&self, x: [f64; 2], xi: [f64; 2], n: [f64; 2]) -> [[f64; 2]; 2] {
-        let (z, z0) = self.local(x, xi);
-        std::array::from_fn(|i| {
-            let (dphi, ddphi, dpsi, _) = self.complementary(z, z0, i);
+        let (mut t, mut u) = ([[0.0; 2]; 2], [[0.0; 2]; 2]);
+        for i in 0..2 {
+            let (dphi, ddphi, dpsi, two_g_u) = self.complementary(z, z0, i);
             let p = 4.0 * dphi.re;
             let q = (z.conj() * ddphi + dpsi) * 2.0;
             let (sxx, syy, sxy) = (0.5 * (p - q.re), 0.5 * (p + q.re), 0.5 * q.im);
-            [sxx * n[0] + sxy * n[1], sxy * n[0] + syy * n[1]]
-        })
+            t[i] = [sxx * n[0] + sxy * n[1], sxy * n[0] + syy * n[1]];
+            let ui = two_g_u / two_g;
+            u[i] = [ui.re, ui.im];
+        }
+        (t, u)
     }
+}
+
+/// The sum of two kernels' values.
+fn sum(a: [[f64; 2]; 2], b: [[f64; 2]; 2]) -> [[f64; 2]; 2] {
+    std::array::from_fn(|i| std::array::from_fn(|j| a[i][j] + b[i][j]))
 }
 
 /// The complementary part alone, as a kernel regular at the source, for quadrature over the
@@ -106,11 +111,15 @@ struct Complementary<'a>(&'a Melan);
 
 impl Kernel for Complementary<'_> {
     fn displacement_at(&self, x: [f64; 2], xi: [f64; 2]) -> [[f64; 2]; 2] {
-        self.0.complementary_displacement(x, xi)
+        self.0.complementary_at(x, xi, [0.0, 0.0]).1
     }
 
     fn traction_at(&self, x: [f64; 2], xi: [f64; 2], n: [f64; 2]) -> [[f64; 2]; 2] {
-        self.0.complementary_traction(x, xi, n)
+        self.0.complementary_at(x, xi, n).0
+    }
+
+    fn kernels_at(&self, x: [f64; 2], xi: [f64; 2], n: [f64; 2]) -> ([[f64; 2]; 2], [[f64; 2]; 2]) {
+        self.0.complementary_at(x, xi, n)
     }
 
     fn own(&self, el: &Element, c: usize) -> Integrals {
@@ -124,33 +133,31 @@ impl Kernel for Complementary<'_> {
 
 impl Kernel for Melan {
     fn displacement_at(&self, x: [f64; 2], xi: [f64; 2]) -> [[f64; 2]; 2] {
-        let (k, c) = (
-            self.kelvin.displacement_at(x, xi),
-            self.complementary_displacement(x, xi),
-        );
-        std::array::from_fn(|i| std::array::from_fn(|j| k[i][j] + c[i][j]))
+        let c = self.complementary_at(x, xi, [0.0, 0.0]).1;
+        sum(self.kelvin.displacement_at(x, xi), c)
     }
 
     fn traction_at(&self, x: [f64; 2], xi: [f64; 2], n: [f64; 2]) -> [[f64; 2]; 2] {
-        let (k, c) = (
+        sum(
             self.kelvin.traction_at(x, xi, n),
-            self.complementary_traction(x, xi, n),
+            self.complementary_at(x, xi, n).0,
+        )
+    }
+
+    fn kernels_at(&self, x: [f64; 2], xi: [f64; 2], n: [f64; 2]) -> ([[f64; 2]; 2], [[f64; 2]; 2]) {
+        let ((kt, ku), (ct, cu)) = (
+            self.kelvin.kernels_at(x, xi, n),
+            self.complementary_at(x, xi, n),
         );
-        std::array::from_fn(|i| std::array::from_fn(|j| k[i][j] + c[i][j]))
+        (sum(kt, ct), sum(ku, cu))
     }
 
     fn own(&self, el: &Element, c: usize) -> Integrals {
-        let (mut h, mut g) = self.kelvin.own(el, c);
-        let (hc, gc) = Complementary(self).own(el, c);
-        for k in 0..2 {
-            for i in 0..2 {
-                for j in 0..2 {
-                    h[k][i][j] += hc[k][i][j];
-                    g[k][i][j] += gc[k][i][j];
-                }
-            }
-        }
-        (h, g)
+        let ((h, g), (hc, gc)) = (self.kelvin.own(el, c), Complementary(self).own(el, c));
+        (
+            std::array::from_fn(|k| sum(h[k], hc[k])),
+            std::array::from_fn(|k| sum(g[k], gc[k])),
+        )
     }
 
     fn nearest_singularity(&self, xi: [f64; 2], el: &Element) -> f64 {

@@ -81,6 +81,14 @@ impl Kernel for Medium {
         }
     }
 
+    fn kernels_at(&self, x: [f64; 2], xi: [f64; 2], n: [f64; 2]) -> ([[f64; 2]; 2], [[f64; 2]; 2]) {
+        match self {
+            Self::Isotropic(m) => m.kernels_at(x, xi, n),
+            Self::Anisotropic(m) => m.kernels_at(x, xi, n),
+            Self::HalfPlane(m) => m.kernels_at(x, xi, n),
+        }
+    }
+
     fn own(&self, el: &Element, c: usize) -> Integrals {
         match self {
             Self::Isotropic(m) => m.own(el, c),
@@ -212,7 +220,7 @@ pub fn interface_stiffness_chains(
             let row = 2 * (2 * e + c);
             for (f, other) in elements.iter().enumerate() {
                 let (hi, gi) = if f == e {
-                    other.own(&medium, c)
+                    medium.own(other, c)
                 } else {
                     other.regular(&medium, xi)
                 };
