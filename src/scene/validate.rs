@@ -640,11 +640,17 @@ impl Scene {
                 "a half-plane far field is isotropic: rock_mass \"jointed\" cannot be taken with it",
             ));
         }
-        let span =
-            (self.region.polygon.iter().flatten()).fold(surface.abs(), |m, v| m.max(v.abs()));
-        if let Some(p) =
-            (self.region.polygon.iter()).find(|p| p[1] > surface + 1e-9 * span.max(1.0))
-        {
+        // The region's extent, from which the tolerances and the depth follow.
+        let (lo, hi) =
+            (self.region.polygon.iter()).fold(([f64::MAX; 2], [f64::MIN; 2]), |(lo, hi), p| {
+                (
+                    [lo[0].min(p[0]), lo[1].min(p[1])],
+                    [hi[0].max(p[0]), hi[1].max(p[1])],
+                )
+            });
+        let span = (lo.iter().chain(&hi)).fold(surface.abs(), |m, v| m.max(v.abs()));
+        let above = surface + 1e-9 * span.max(1.0);
+        if let Some(p) = (self.region.polygon.iter()).find(|p| p[1] > above) {
             return Err(invalid(
                 field,
                 format!(
@@ -655,13 +661,6 @@ impl Scene {
                 ),
             ));
         }
-        let (lo, hi) =
-            (self.region.polygon.iter()).fold(([f64::MAX; 2], [f64::MIN; 2]), |(lo, hi), p| {
-                (
-                    [lo[0].min(p[0]), lo[1].min(p[1])],
-                    [hi[0].max(p[0]), hi[1].max(p[1])],
-                )
-            });
         let size = (hi[1] - lo[1]).max(hi[0] - lo[0]);
         if surface - hi[1] > 1e6 * size {
             return Err(invalid(
@@ -675,7 +674,7 @@ impl Scene {
         }
         let s = &self.in_situ;
         let syy = s.syy + s.gradient.syy * (surface - s.y_ref);
-        let depth = (self.region.polygon.iter()).fold(0.0f64, |m, p| m.max(surface - p[1]));
+        let depth = (surface - lo[1]).max(0.0);
         let stress = (s.sxx.abs() + s.syy.abs() + s.sxy.abs())
             .max((s.gradient.syy.abs() + s.gradient.sxx.abs()) * depth);
         if syy.abs() > 1e-6 * stress + 1e-3 || s.sxy.abs() > 1e-6 * stress + 1e-3 {
