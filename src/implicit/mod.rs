@@ -59,6 +59,7 @@ use crate::model::Model;
 use crate::scene::{SolveMethod, SolveMode, SolveSpec};
 use crate::solve::{HistoryRow, Observer, Solution, Status};
 use anderson::Anderson;
+pub use anderson::DEPTH as ANDERSON_DEPTH;
 use assemble::{Dofs, stiffness};
 use commit::Committed;
 pub use drive::Drive;

@@ -158,7 +158,7 @@ impl Case for Implicit {
              Cholesky, each iteration solving K Δu = R for the out-of-balance force of the explicit \
              force stages and moving the model through the same laws, to the same unbalanced-force \
              ratio; yielding zones and slipping joints converge by the initial-stiffness method \
-             accelerated by Anderson mixing of the last five iterates. The zones' and the joints' \
+             accelerated by Anderson mixing of the last {depth} iterates. The zones' and the joints' \
              laws and the bolts' grout slip and yield are evaluated from the load step's start and \
              the whole increment since (trial and commit: a zone's Mohr–Coulomb stress returns to \
              its yield surface, at its edges and corners too, a joint's shear stress to its \
@@ -212,6 +212,7 @@ impl Case for Implicit {
              and setting up.\n",
             ramp = bundled::QUASI_STATIC_RAMP,
             steps = bundled::QUASI_STATIC_STEPS,
+            depth = adit::implicit::ANDERSON_DEPTH,
             block_ramp = modes::QUASI_STATIC_RAMP,
             block_steps = modes::QUASI_STATIC_STEPS,
         );
