@@ -34,6 +34,7 @@ fn a_tunnel_in_a_small_box_closes_as_in_the_infinite_medium() {
         let n = r.built.model.far_field.as_ref().unwrap().nodes.len();
         assert!(far.interface_nodes == n && n > 8, "{far:?}");
         assert_eq!(far.stiffness_bytes, 8 * 4 * n * n);
+        assert_eq!(far.stretch, 1.0, "intact rock stretches nothing");
         let json = std::fs::read_to_string(out.join("summary.json")).unwrap();
         assert!(json.contains("\"interface_nodes\""), "{json}");
         let closure: Vec<f64> = (r.summary.stages.iter())

@@ -402,6 +402,10 @@ pub struct FarFieldSummary {
     pub condense_seconds: f64,
     /// Bytes of its stiffness K, (2n)² values (the condensing took (4e + 2)² twice for e elements).
     pub stiffness_bytes: usize,
+    /// How many times faster the far-field rock's field varies along the interface than an
+    /// intact rock's (1 for intact rock; a jointed rock mass's, `Kernel::stretch`): K's error
+    /// grows about as its square, and over 3 the run warns.
+    pub stretch: f64,
 }
 
 impl FarFieldSummary {
@@ -410,6 +414,7 @@ impl FarFieldSummary {
             interface_nodes: f.nodes.len(),
             condense_seconds: f.assemble_s,
             stiffness_bytes: f.stiffness.k.len() * std::mem::size_of::<f64>(),
+            stretch: f.stretch,
         }
     }
 }
