@@ -171,8 +171,8 @@ pub fn interface_stiffness_on(
 
 /// `interface_stiffness_on` with elements longer than the edges between nodes: each element is
 /// the straight chain of nodes `chains[e]` (point indices from its start to its end, in order
-/// along it), whose nodes all move it (its collocation points take their displacement from the
-/// two nodes about them) and all carry its traction (through their hat functions along the
+/// along it), whose nodes all move it (its linear displacement the L2 projection of the chain's
+/// piecewise-linear field) and all carry its traction (through their hat functions along the
 /// chain). An error besides for a chain of fewer than 2 points, not straight, or out of order.
 pub fn interface_stiffness_chains(
     points: &[[f64; 2]],
@@ -262,17 +262,6 @@ pub fn interface_stiffness_chains(
     solve_dense(a, rhs.as_mut())?;
     let h = rhs;
     // K = P X Q.
-    // The collocation point at η (the fraction w = (1 + η)/2 along the element) moves with the
-    // two chain nodes about it, linearly.
-    let q = |e: usize, c: usize| -> [(usize, f64); 2] {
-        let (f, chain) = (&places[e], &chains[e]);
-        let w = 0.5 * (1.0 + COLLOCATION[c]);
-        let i = (0..f.len() - 1)
-            .find(|&i| w <= f[i + 1])
-            .unwrap_or(f.len() - 2);
-        let t = (w - f[i]) / (f[i + 1] - f[i]);
-        [(chain[i], 1.0 - t), (chain[i + 1], t)]
-    };
     // ∫ N_a φ_k ds over element e for each chain node a: its hat function against φ₁ = 3/2 − 2w,
     // φ₂ = 2w − 1/2 (L·[5, 1; 1, 5]/12 for a chain of its two ends), by Simpson's rule on each
     // piece of the hat (exact: the product is quadratic).
@@ -297,12 +286,36 @@ pub fn interface_stiffness_chains(
             })
             .collect()
     };
+    // The element's linear displacement at its collocation point c, from the chain's nodes: the
+    // L2 projection of the chain's piecewise-linear field onto the element's linear functions,
+    // ũ = M⁻¹ Pᵀ u with M = ∫ φ_k φ_l ds = L·[7, −1; −1, 7]/12, M⁻¹ = [7, 1; 1, 7]/(4L). So
+    // K = P X M⁻¹ Pᵀ does work only through what the element can carry, and its symmetric part
+    // is positive semi-definite as the one-edge elements' is. For a chain of its two ends the
+    // projection is the field itself, ũ(η) = (1 − w) u₀ + w u₁ at w = (1 + η)/2 ([3, 1; 1, 3]/4),
+    // taken so. Sampling the chain's field at the collocation points instead gave a chain of 3 or
+    // more edges a symmetric part with eigenvalues down to −23 % of the largest (a square of 80
+    // edges in elements of 3 to 10 edges), which no zoning's stiffness covers: the implicit
+    // factorization broke down (NonPositivePivot).
+    let q = |e: usize, c: usize| -> Vec<(usize, f64)> {
+        let chain = &chains[e];
+        if chain.len() == 2 {
+            let w = 0.5 * (1.0 + COLLOCATION[c]);
+            return vec![(chain[0], 1.0 - w), (chain[1], w)];
+        }
+        let len = elements[e].length();
+        let m_inv = |k: usize, l: usize| (if k == l { 7.0 } else { 1.0 }) / (4.0 * len);
+        let (p0, p1) = (p(e, 0), p(e, 1));
+        (p0.iter().zip(&p1))
+            .map(|(&(node, a), &(_, b))| (node, m_inv(c, 0) * a + m_inv(c, 1) * b))
+            .collect()
+    };
+    let q: Vec<[Vec<(usize, f64)>; 2]> = (0..elements.len()).map(|e| [q(e, 0), q(e, 1)]).collect();
     // X Q first (size × 2n; X the first `size` rows of the solution), then P (X Q) (2n × 2n).
     let mut xq = vec![0.0; size * 2 * n];
     for row in 0..size {
-        for f in 0..elements.len() {
-            for c in 0..2 {
-                for (node, w) in q(f, c) {
+        for (f, q) in q.iter().enumerate() {
+            for (c, q) in q.iter().enumerate() {
+                for &(node, w) in q {
                     for j in 0..2 {
                         xq[row * 2 * n + 2 * node + j] += h[(row, 2 * (2 * f + c) + j)] * w;
                     }

@@ -137,8 +137,9 @@ impl Case for FarField {
              displacement. Kirsch's hole (the shipped zoning, p = (10, 20) MPa) on square boxes of \
              half-width 3a and 5a, and Lamé's (Kirsch's under hydrostatic stress, the wall \
              released moving by p a / 2G): with the far field, one element per boundary edge of \
-             the zones and (Kirsch's) elements of 1 m over several edges (`element_size`, whose \
-             less symmetric K takes the implicit iterations a few more); with the exact Kirsch \
+             the zones and (Kirsch's) elements of 1 m over several edges (`element_size`, each \
+             moving with the L2 projection of its nodes' field; its K, less symmetric, takes the \
+             implicit iterations a few more); with the exact Kirsch \
              traction on the same \
              boundary (the zones' own error, the reference); with the in-situ traction alone \
              (the truncated box); and the shipped 40 m box with the in-situ traction. The stress \
