@@ -48,7 +48,7 @@ struct Candidate {
 }
 
 /// The Mohr–Coulomb criterion in principal stresses with the elastic matrix it returns through.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub(super) struct Surface {
     /// Nφ = (1 + sin φ)/(1 − sin φ).
     pub n_phi: f64,

@@ -51,6 +51,10 @@ pub struct MohrCoulomb {
     /// Softening table: (e^ps, c in Pa, φ in rad), e^ps ascending and above 0; the strength at
     /// e^ps = 0 is (`cohesion`, `friction`), linear in between, constant beyond the last point.
     pub softening: Vec<(f64, f64, f64)>,
+    /// The criterion at (`cohesion`, `friction`), made once by `new`: without softening every
+    /// zone's return takes it as it is, where making it anew (two sines and a tangent) cost each
+    /// zone and cycle about as much as the rest of its update.
+    intact: Surface,
 }
 
 impl MohrCoulomb {
@@ -68,14 +72,17 @@ impl MohrCoulomb {
         } else {
             f64::INFINITY
         };
-        MohrCoulomb {
+        let mut law = MohrCoulomb {
             elastic,
             cohesion,
             friction,
             dilation: dilation_deg.to_radians(),
             tension: tension.min(apex),
             softening: Vec::new(),
-        }
+            intact: Surface::default(),
+        };
+        law.intact = law.surface(cohesion, friction);
+        law
     }
 
     /// Cohesion (Pa) and friction (rad) at plastic shear strain `eps`.
@@ -115,14 +122,13 @@ impl MohrCoulomb {
         }
     }
 
-    /// Return principal stresses `p` (ascending, Pa) to the yield surface of cohesion `c` (Pa) and
-    /// friction `phi` (rad); the state bits set now and the plastic shear strain increment. The
-    /// single-plane return above; with `corners`, where it leaves the stress outside the criterion
-    /// (a corner), the multi-surface return of [`Surface::corner_return`] from the same trial.
-    fn correct(&self, p: &mut [f64; 3], c: f64, phi: f64, corners: bool) -> (u8, f64) {
-        let surface = self.surface(c, phi);
+    /// Return principal stresses `p` (ascending, Pa) to the yield `surface`; the state bits set
+    /// now and the plastic shear strain increment. The single-plane return above; with
+    /// `corners`, where it leaves the stress outside the criterion (a corner), the multi-surface
+    /// return of [`Surface::corner_return`] from the same trial.
+    fn correct(surface: &Surface, p: &mut [f64; 3], corners: bool) -> (u8, f64) {
         let trial = *p;
-        let single = single_plane_return(&surface, p);
+        let single = single_plane_return(surface, p);
         if !corners || surface.admits(p, surface.tolerance(&trial)) {
             return single;
         }
@@ -157,12 +163,15 @@ impl MohrCoulomb {
         let mut v = [(c - r, 0u8), (c + r, 1), (s[2], 2)];
         v.sort_by(|a, b| a.0.total_cmp(&b.0));
         let mut p = [v[0].0, v[1].0, v[2].0];
-        let (c, phi) = if self.softening.is_empty() {
-            (self.cohesion, self.friction)
+        let softened;
+        let surface = if self.softening.is_empty() {
+            &self.intact
         } else {
-            self.strength(*plastic)
+            let (c, phi) = self.strength(*plastic);
+            softened = self.surface(c, phi);
+            &softened
         };
-        let (now, eps) = self.correct(&mut p, c, phi, corners);
+        let (now, eps) = Self::correct(surface, &mut p, corners);
         *plastic += eps;
         *state = (*state & (SHEAR_PAST | TENSION_PAST))
             | now
