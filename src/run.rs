@@ -11,7 +11,7 @@ use crate::model::bodies::BodyMode;
 use crate::output::atomic::write_atomic;
 use crate::output::{FarFieldSummary, OutputWriter, StageSummary, Summary, measured};
 use crate::scene::Scene;
-use crate::scene::SolveMethod;
+use crate::scene::{SolveMethod, SolveMode};
 use crate::setup::{Plan, Setup, setup};
 use crate::solve::{HistoryRow, Observer, Solution, Solver, Status};
 use crate::stage::Staging;
@@ -301,6 +301,11 @@ fn build_solve_write(
             final_ratio: measured(solution.final_ratio),
             support_fraction: staging.support_fraction(),
             closure: staging.closures(model, plan),
+            moving: (solution.status == Status::Converged && spec.mode == SolveMode::Static)
+                .then(|| {
+                    crate::cycle::drift::still_moving(model, solution.cycles, solver.params.dt)
+                })
+                .flatten(),
         });
         let t = Instant::now();
         let failed = matches!(solution.status, Status::Failed(_));
@@ -397,7 +402,12 @@ fn build_solve_write(
         critical_block: solver.step.limiting_block,
         critical_limiter: solver.step.describe(),
         min_zone_angle: built.mesh.min_angle_deg,
-        warnings: [built.warnings.clone(), plot_warnings].concat(),
+        warnings: [
+            built.warnings.clone(),
+            moving_warnings(&stage_summaries, built.plan.staged),
+            plot_warnings,
+        ]
+        .concat(),
         stages: if built.plan.staged {
             stage_summaries
         } else {
@@ -414,4 +424,19 @@ fn build_solve_write(
         summary,
         out_dir: writer.dir.clone(),
     })
+}
+
+/// The stages' blocks still moving at convergence (`cycle::drift`) as warnings, each named by
+/// its stage in a `staged` run.
+fn moving_warnings(stages: &[StageSummary], staged: bool) -> Vec<String> {
+    (stages.iter())
+        .filter_map(|s| {
+            let moving = s.moving.as_ref()?;
+            Some(if staged {
+                format!("stage '{}': {moving}", s.name)
+            } else {
+                moving.clone()
+            })
+        })
+        .collect()
 }

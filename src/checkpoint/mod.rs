@@ -23,8 +23,9 @@ use crate::model::Model;
 use crate::output::StageSummary;
 use crate::solve::HistoryRow;
 
-/// The format's version: a checkpoint of another version is refused.
-pub const VERSION: u32 = 1;
+/// The format's version: a checkpoint of another version is refused. 2: each stage's summary
+/// holds the block still moving at its convergence (`StageSummary::moving`).
+pub const VERSION: u32 = 2;
 
 const MAGIC: &[u8; 8] = b"ADITCKPT";
 
@@ -135,6 +136,7 @@ impl Codec for StageSummary {
         put(out, &self.support_fraction);
         let closure: Vec<(String, f64)> = self.closure.clone().into_iter().collect();
         put(out, &closure);
+        put(out, &self.moving);
     }
     fn get(r: &mut Reader) -> anyhow::Result<Self> {
         let name = String::get(r)?;
@@ -143,6 +145,7 @@ impl Codec for StageSummary {
         let final_ratio = Option::<f64>::get(r)?;
         let support_fraction = f64::get(r)?;
         let closure: Vec<(String, f64)> = Codec::get(r)?;
+        let moving = Option::<String>::get(r)?;
         Ok(StageSummary {
             name,
             cycles,
@@ -150,6 +153,7 @@ impl Codec for StageSummary {
             final_ratio,
             support_fraction,
             closure: closure.into_iter().collect::<BTreeMap<_, _>>(),
+            moving,
         })
     }
 }

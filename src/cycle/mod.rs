@@ -4,6 +4,7 @@
 
 mod bodies;
 mod contacts;
+pub mod drift;
 mod far_field;
 pub use contacts::JointCommit;
 pub(crate) use contacts::contact_normal;

@@ -337,6 +337,10 @@ pub struct StageSummary {
     /// positive, displacement since the start of the run): with `support_fraction`, the ground
     /// reaction curve.
     pub closure: std::collections::BTreeMap<String, f64>,
+    /// The block still sliding when the stage's explicit solve converged, named with its speed
+    /// (`cycle::drift`); absent when none is.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub moving: Option<String>,
 }
 
 /// Contents of `summary.json`.
@@ -493,6 +497,7 @@ mod tests {
             final_ratio: measured(f64::INFINITY),
             support_fraction: 0.0,
             closure: Default::default(),
+            moving: None,
         };
         let json = serde_json::to_string(&stage).unwrap();
         assert!(
