@@ -85,6 +85,7 @@ impl Staging {
         if stage.reset_displacements {
             model.nodes.origin.clone_from(&model.nodes.disp);
         }
+        carry_net_load(model);
     }
 
     /// Replace the boundary conditions in force by those with `effect`: fixities only the old
@@ -211,4 +212,61 @@ pub fn remove_fill(model: &mut Model, fill: &[u32], j: u32) {
     model.contacts = model
         .contacts
         .kept(&keep, model.nodes.len(), &model.blocks.edges);
+}
+
+/// Let the far field, if any, carry the near field's net external load (its nodes' loads, its
+/// rigid and simple blocks' weights and the far field's in-situ loads F⁰; `FarField::carry`):
+/// nonzero once an excavation under gravity has taken its weight away. The line force acts at
+/// the centroid of the excavated zones (of all zones before any), moved to the nearest zone's
+/// centroid so that it lies inside the interface; a net load below 1e-9 of the loads' magnitudes
+/// is rounding and carried as none.
+fn carry_net_load(model: &mut Model) {
+    let Some(far) = &model.far_field else {
+        return;
+    };
+    let loads = (model.nodes.applied.iter())
+        .chain(&model.bodies.weight)
+        .chain(&far.in_situ);
+    let (mut net, mut magnitude) = ([0.0; 2], 0.0);
+    for f in loads {
+        net = [net[0] + f[0], net[1] + f[1]];
+        magnitude += f[0].hypot(f[1]);
+    }
+    if net[0].hypot(net[1]) <= 1e-9 * magnitude {
+        net = [0.0; 2];
+    }
+    let zones = &model.zones;
+    let centroid = |z: usize| {
+        let c = zones.nodes[z].map(|n| model.nodes.pos[n as usize]);
+        [
+            (c[0][0] + c[1][0] + c[2][0]) / 3.0,
+            (c[0][1] + c[1][1] + c[2][1]) / 3.0,
+        ]
+    };
+    let excavated: Vec<usize> = (0..zones.len())
+        .filter(|&z| Some(zones.material[z]) == model.materials.null)
+        .collect();
+    let chosen: Vec<usize> = if excavated.is_empty() {
+        (0..zones.len()).collect()
+    } else {
+        excavated
+    };
+    let area: f64 = chosen.iter().map(|&z| zones.area[z]).sum();
+    let mean = chosen.iter().fold([0.0; 2], |m, &z| {
+        let c = centroid(z);
+        [
+            m[0] + zones.area[z] * c[0] / area,
+            m[1] + zones.area[z] * c[1] / area,
+        ]
+    });
+    let at = (0..zones.len())
+        .map(centroid)
+        .min_by(|a, b| {
+            let d = |p: &[f64; 2]| (p[0] - mean[0]).hypot(p[1] - mean[1]);
+            d(a).total_cmp(&d(b))
+        })
+        .unwrap_or(mean);
+    if let Some(far) = &mut model.far_field {
+        far.carry(net, at);
+    }
 }

@@ -25,6 +25,7 @@
 //! K is not symmetric (collocation); its symmetric part is what the implicit path can factorize.
 
 mod attached;
+mod carried;
 mod elements;
 mod kelvin;
 mod kernel;

@@ -359,6 +359,72 @@ fn elements_of_any_length_store_no_negative_work() {
     }
 }
 
+/// The net load a far field carries (`FarField::carry`): the field of a line force N at a point
+/// inside the interface loads the interface's nodes by −N in all (to 1e-6, the hats' quadrature),
+/// with no moment about the point (to 1e-4 of N times the radius), and moves them by the
+/// medium's displacement there; in intact rock and in a half-plane (a circle below the surface),
+/// the point off the centre. No load, no change.
+#[test]
+fn a_far_field_carries_a_net_load_as_a_line_force() {
+    let surface = 10.0;
+    let media = [
+        medium(0.25),
+        Medium::HalfPlane(Melan {
+            kelvin: Kelvin {
+                shear: SHEAR,
+                poisson: 0.3,
+            },
+            surface,
+        }),
+    ];
+    for m in media {
+        let (radius, centre) = (3.0, [1.0, 2.0]);
+        let points = circle(96, radius, centre);
+        let n = points.len();
+        let mut far = FarField {
+            nodes: (0..n as u32).collect(),
+            stiffness: interface_stiffness(&points, m.clone()).unwrap(),
+            in_situ: vec![[0.0; 2]; n],
+            attached: vec![[0.0; 2]; n],
+            assemble_s: 0.0,
+            stretch: 1.0,
+            medium: m.clone(),
+            positions: points.clone(),
+            edges: (0..n).map(|i| [i, (i + 1) % n]).collect(),
+            carried: vec![[0.0; 2]; n],
+            carried_disp: vec![[0.0; 2]; n],
+        };
+        let (net, at) = ([3e5, -2e5], [1.8, 1.1]);
+        far.carry(net, at);
+        let total = far
+            .carried
+            .iter()
+            .fold([0.0; 2], |s, f| [s[0] + f[0], s[1] + f[1]]);
+        let size = net[0].hypot(net[1]);
+        assert!(
+            (total[0] + net[0]).hypot(total[1] + net[1]) < 1e-6 * size,
+            "{total:?} against {net:?}"
+        );
+        let moment: f64 = (points.iter().zip(&far.carried))
+            .map(|(p, f)| (p[0] - at[0]) * f[1] - (p[1] - at[1]) * f[0])
+            .sum();
+        assert!(moment.abs() < 1e-4 * size * radius, "{moment}");
+        let g = m.displacement_at(points[7], at);
+        let u = [
+            net[0] * g[0][0] + net[1] * g[1][0],
+            net[0] * g[0][1] + net[1] * g[1][1],
+        ];
+        assert_eq!(far.carried_disp[7], u);
+        far.carry([0.0; 2], at);
+        assert!(
+            far.carried
+                .iter()
+                .chain(&far.carried_disp)
+                .all(|v| *v == [0.0; 2])
+        );
+    }
+}
+
 /// The same interface gives the same K, bit for bit, on one thread and on two (the dense solve
 /// runs on the calling thread; the forces' rows each sum in order).
 #[test]

@@ -113,8 +113,9 @@ pub fn far_field(
         .collect();
     let points: Vec<[f64; 2]> = nodes.iter().map(|&n| model.nodes.pos[n as usize]).collect();
     let stretch = medium.stretch();
-    let stiffness = interface_stiffness_chains(&points, &chains, medium)
+    let stiffness = interface_stiffness_chains(&points, &chains, medium.clone())
         .map_err(|e| anyhow::anyhow!("region.{e}"))?;
+    let edges = (outer.iter()).map(|e| e.nodes.map(|n| local[&n])).collect();
     let mut loads = vec![[0.0; 2]; model.nodes.len()];
     let region_edges = (boundary.edges.iter()).filter(|e| matches!(e.kind, EdgeKind::Region(_)));
     traction_loads(&model.nodes.pos, &mut loads, region_edges, |p, n| {
@@ -132,6 +133,11 @@ pub fn far_field(
         attached,
         assemble_s: start.elapsed().as_secs_f64(),
         stretch,
+        medium,
+        carried: vec![[0.0; 2]; points.len()],
+        carried_disp: vec![[0.0; 2]; points.len()],
+        positions: points,
+        edges,
     }))
 }
 
