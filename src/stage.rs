@@ -217,9 +217,9 @@ pub fn remove_fill(model: &mut Model, fill: &[u32], j: u32) {
 /// Let the far field, if any, carry the near field's net external load (its nodes' loads, its
 /// rigid and simple blocks' weights and the far field's in-situ loads F⁰; `FarField::carry`):
 /// nonzero once an excavation under gravity has taken its weight away. The line force acts at
-/// the centroid of the excavated zones (of all zones before any), moved to the nearest zone's
-/// centroid so that it lies inside the interface; a net load below 1e-9 of the loads' magnitudes
-/// is rounding and carried as none.
+/// the area centroid of the excavated zones and bodies (of all of them before any), moved to the
+/// nearest zone's or body's centroid so that it lies inside the interface; a net load below 1e-9
+/// of the loads' magnitudes is rounding and carried as none.
 fn carry_net_load(model: &mut Model) {
     let Some(far) = &model.far_field else {
         return;
@@ -235,37 +235,33 @@ fn carry_net_load(model: &mut Model) {
     if net[0].hypot(net[1]) <= 1e-9 * magnitude {
         net = [0.0; 2];
     }
-    let zones = &model.zones;
-    let centroid = |z: usize| {
-        let c = zones.nodes[z].map(|n| model.nodes.pos[n as usize]);
-        [
-            (c[0][0] + c[1][0] + c[2][0]) / 3.0,
-            (c[0][1] + c[1][1] + c[2][1]) / 3.0,
-        ]
-    };
-    let excavated: Vec<usize> = (0..zones.len())
-        .filter(|&z| Some(zones.material[z]) == model.materials.null)
-        .collect();
-    let chosen: Vec<usize> = if excavated.is_empty() {
-        (0..zones.len()).collect()
-    } else {
-        excavated
-    };
-    let area: f64 = chosen.iter().map(|&z| zones.area[z]).sum();
-    let mean = chosen.iter().fold([0.0; 2], |m, &z| {
-        let c = centroid(z);
-        [
-            m[0] + zones.area[z] * c[0] / area,
-            m[1] + zones.area[z] * c[1] / area,
-        ]
-    });
-    let at = (0..zones.len())
-        .map(centroid)
-        .min_by(|a, b| {
-            let d = |p: &[f64; 2]| (p[0] - mean[0]).hypot(p[1] - mean[1]);
-            d(a).total_cmp(&d(b))
+    // The zones' and the bodies' centroids (m), areas (m²) and whether they were excavated.
+    let (zones, bodies, pos) = (&model.zones, &model.bodies, &model.nodes.pos);
+    let null = model.materials.null;
+    let parts = (0..zones.len())
+        .map(|z| {
+            let c = zones.nodes[z].map(|n| pos[n as usize]);
+            let centre = [
+                (c[0][0] + c[1][0] + c[2][0]) / 3.0,
+                (c[0][1] + c[1][1] + c[2][1]) / 3.0,
+            ];
+            (centre, zones.area[z], Some(zones.material[z]) == null)
         })
-        .unwrap_or(mean);
+        .chain((0..bodies.len()).map(|k| {
+            let removed = model.blocks.is_removed(bodies.block[k] as usize);
+            (bodies.centroid[k], bodies.area[k], removed)
+        }));
+    let parts: Vec<([f64; 2], f64, bool)> = parts.collect();
+    let any_excavated = parts.iter().any(|p| p.2);
+    let chosen = parts.iter().filter(|p| p.2 || !any_excavated);
+    let (moment, area) = chosen.fold(([0.0; 2], 0.0), |(m, a), (c, w, _)| {
+        ([m[0] + w * c[0], m[1] + w * c[1]], a + w)
+    });
+    let mean = [moment[0] / area, moment[1] / area];
+    let gap = |p: &[f64; 2]| (p[0] - mean[0]).hypot(p[1] - mean[1]);
+    let Some(&(at, _, _)) = parts.iter().min_by(|a, b| gap(&a.0).total_cmp(&gap(&b.0))) else {
+        return;
+    };
     if let Some(far) = &mut model.far_field {
         far.carry(net, at);
     }

@@ -315,3 +315,46 @@ fn what_a_half_plane_cannot_take_is_refused() {
         );
     }
 }
+
+/// An excavation under gravity in a half-plane far field, the rock cut by a joint set, in every
+/// block mode: the far field carries the weight taken away (`FarField::carry`, the line force
+/// at the excavated zones' or bodies' centroid), and each run converges to finite closures.
+#[test]
+fn a_far_field_carries_an_excavation_s_weight_in_every_block_mode() {
+    for mode in ["deformable", "simple", "rigid"] {
+        let text = format!(
+            r#"{{
+            "name": "gravity-{mode}",
+            "materials": {{ "rock": {{ "density": 2500, "young": 10e9, "poisson": 0.25 }} }},
+            "region": {{ "polygon": [[-6, -12], [6, -12], [6, 0], [-6, 0]], "material": "rock",
+                        "far_field": {{ "kind": "boundary_elements", "surface": 0 }} }},
+            "excavations": [{{ "name": "tunnel", "circle": {{ "center": [0, -6], "radius": 2, "segments": 32 }} }}],
+            "zoning": {{ "edge_at_excavation": 0.4, "edge_far": 1.5 }},
+            "joint_materials": {{ "j": {{ "normal_stiffness": 1e11, "shear_stiffness": 1e10, "friction": 40, "cohesion": 1e6 }} }},
+            "joint_sets": [{{ "dip": 30, "spacing": 3, "material": "j" }}],
+            "blocks": {{ "mode": "{mode}" }},
+            "gravity": [0, -9.81],
+            "in_situ": {{ "y_ref": 0, "gradient": {{ "syy": 24525, "sxx": 12262.5, "szz": 12262.5 }} }},
+            "boundary": [{{ "at": [0, -12], "fix": "xy" }}, {{ "at": [6, -12], "fix": "y" }}],
+            "solve": {{ "ratio": 1e-6, "method": "implicit" }},
+            "stages": [{{ "name": "in-situ" }}, {{ "name": "dig", "excavate": ["tunnel"] }}]
+        }}"#
+        );
+        let sc = adit::Scene::from_json(&text, "gravity").unwrap();
+        let out = std::env::temp_dir().join(format!("adit-test-far-gravity-{mode}"));
+        let _ = std::fs::remove_dir_all(&out);
+        let r = adit::run_scene(&sc, &out, &mut Quiet).unwrap();
+        let _ = std::fs::remove_dir_all(&out);
+        assert_eq!(r.summary.status, "converged", "{mode}");
+        let far = r.built.model.far_field.as_ref().unwrap();
+        let carried = far.carried.iter().fold(0.0, |s, f| s + f[1]);
+        // The tunnel's weight, ρ g π r² with the 32-gon's area, carried downward on the interface.
+        let weight = 2500.0 * 9.81 * 16.0 * 2.0f64.powi(2) * (std::f64::consts::PI / 16.0).sin();
+        assert!(
+            (carried + weight).abs() < 0.05 * weight,
+            "{mode}: carried {carried} N/m against the tunnel's weight {weight} N/m"
+        );
+        let closure = r.summary.stages[1].closure["tunnel"];
+        assert!(closure.is_finite(), "{mode}: {closure}");
+    }
+}
