@@ -25,6 +25,31 @@ struct Run {
     figures: [f64; 3],
 }
 
+impl Run {
+    /// The run's row of a table: its figures in mm to `digits` decimals and their change from
+    /// `reference` (m).
+    fn row(&self, reference: &[f64; 3], digits: usize) -> String {
+        let c: [f64; 3] = std::array::from_fn(|i| 100.0 * (self.figures[i] / reference[i] - 1.0));
+        let f = self.figures.map(|v| 1e3 * v);
+        format!(
+            "| {} | {} | {} | {:.*} | {:.*} | {:.*} | {:+.2} %, {:+.2} %, {:+.2} % | {:.2} |",
+            self.label,
+            self.zones,
+            self.cycles,
+            digits,
+            f[0],
+            digits,
+            f[1],
+            digits,
+            f[2],
+            c[0],
+            c[1],
+            c[2],
+            self.seconds
+        )
+    }
+}
+
 fn run(sc: &Scene, label: &str) -> anyhow::Result<Run> {
     let start = Instant::now();
     let mut b = setup(sc)?;
@@ -108,21 +133,7 @@ pub fn shallow_tunnel(root: &std::path::Path, per_cube: f64) -> anyhow::Result<(
     );
     let change = |f: &[f64; 3]| -> [f64; 3] { std::array::from_fn(|i| f[i] / reference[i] - 1.0) };
     for r in &runs {
-        let c = change(&r.figures);
-        let _ = writeln!(
-            md,
-            "| {} | {} | {} | {:.4} | {:.4} | {:.4} | {:+.2} %, {:+.2} %, {:+.2} % | {:.2} |",
-            r.label,
-            r.zones,
-            r.cycles,
-            1e3 * r.figures[0],
-            1e3 * r.figures[1],
-            1e3 * r.figures[2],
-            100.0 * c[0],
-            100.0 * c[1],
-            100.0 * c[2],
-            r.seconds
-        );
+        let _ = writeln!(md, "{}", r.row(&reference, 4));
     }
     let _ = writeln!(
         md,
@@ -274,21 +285,7 @@ fn under_gravity(shipped: &Scene) -> anyhow::Result<String> {
          |---|---:|---:|---:|---:|---:|---|---:|"
     );
     for r in &runs {
-        let c: [f64; 3] = std::array::from_fn(|i| r.figures[i] / reference[i] - 1.0);
-        let _ = writeln!(
-            md,
-            "| {} | {} | {} | {:.5} | {:.5} | {:.5} | {:+.2} %, {:+.2} %, {:+.2} % | {:.2} |",
-            r.label,
-            r.zones,
-            r.cycles,
-            1e3 * r.figures[0],
-            1e3 * r.figures[1],
-            1e3 * r.figures[2],
-            100.0 * c[0],
-            100.0 * c[1],
-            100.0 * c[2],
-            r.seconds
-        );
+        let _ = writeln!(md, "{}", r.row(&reference, 5));
     }
     let _ = writeln!(md);
     Ok(md)
