@@ -51,9 +51,10 @@ pub struct MohrCoulomb {
     /// Softening table: (e^ps, c in Pa, φ in rad), e^ps ascending and above 0; the strength at
     /// e^ps = 0 is (`cohesion`, `friction`), linear in between, constant beyond the last point.
     pub softening: Vec<(f64, f64, f64)>,
-    /// The criterion at (`cohesion`, `friction`), made once by `new`: without softening every
-    /// zone's return takes it as it is, where making it anew (two sines and a tangent) cost each
-    /// zone and cycle about as much as the rest of its update.
+    /// The criterion at (`cohesion`, `friction`), made once by `new` (so a law is made by `new`,
+    /// not by changing its strength afterwards): without softening every zone's return takes it
+    /// as it is, where making it anew (two sines and a tangent) cost each zone and cycle about as
+    /// much as the rest of its update.
     intact: Surface,
 }
 
