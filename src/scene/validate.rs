@@ -748,9 +748,24 @@ impl Scene {
                     .map(|b| (format!("stages[{i}].boundary"), b))
             }),
         );
+        // A half-plane's region edges on its surface stay free of the far field: a load there (a
+        // surcharge) is the near field's, whose net force the far field carries.
+        let poly = &self.region.polygon;
+        let span = (poly.iter().flatten()).fold(1.0f64, |m, v| m.max(v.abs()));
+        let on_surface: Vec<String> = (self.edge_names().into_iter().enumerate())
+            .filter(|(i, _)| {
+                f.surface.is_some_and(|s| {
+                    [poly[*i], poly[(i + 1) % poly.len()]]
+                        .iter()
+                        .all(|v| (v[1] - s).abs() <= 1e-9 * span)
+                })
+            })
+            .map(|(_, name)| name)
+            .collect();
         for (path, list) in lists {
             for (j, bc) in list.iter().enumerate() {
-                let on_outer = bc.part.as_ref().is_some_and(|p| outer.contains(p));
+                let on_outer = (bc.part.as_ref())
+                    .is_some_and(|p| outer.contains(p) && !on_surface.contains(p));
                 if on_outer && bc.load_kinds() > 0 {
                     return Err(invalid(
                         format!("{path}[{j}]"),

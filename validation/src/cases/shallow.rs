@@ -166,6 +166,7 @@ pub fn shallow_tunnel(root: &std::path::Path, per_cube: f64) -> anyhow::Result<(
         )
     );
     md.push_str(&under_gravity(&shipped)?);
+    md.push_str(&strip_table(&shipped)?);
     let model = ModelRow {
         file: "models/shallow_tunnel_bem.json".into(),
         zones: runs[0].zones,
@@ -291,6 +292,108 @@ fn under_gravity(shipped: &Scene) -> anyhow::Result<String> {
     Ok(md)
 }
 
+/// The strip load's paragraph and table (`strip_load`, zones of 0.5 m).
+fn strip_table(shipped: &Scene) -> anyhow::Result<String> {
+    let start = Instant::now();
+    let rows = strip_load(shipped, 0.5)?;
+    let seconds = start.elapsed().as_secs_f64();
+    let mut md = String::new();
+    let _ = writeln!(
+        md,
+        "A strip load on the surface: the shipped near field unexcavated and unstressed, {:.0} MPa \
+         on its whole top edge (12 m wide), zones of 0.5 m, solved implicitly ({seconds:.2} s). A \
+         load on the half-plane's surface is the near field's; its net force the far field \
+         carries, as an excavation's weight. The stresses under the strip's centre (the zones \
+         within 0.5 m of the point) against the closed form σ_yy = −(q/π)(2θ + sin 2θ), \
+         σ_xx = −(q/π)(2θ − sin 2θ), θ = atan(b/z) (Poulos & Davis 1974), errors in % of q:\n\n\
+         | depth, m | σ_yy, MPa | closed form | error | σ_xx, MPa | closed form | error |\n\
+         |---:|---:|---:|---:|---:|---:|---:|",
+        STRIP_PRESSURE / 1e6
+    );
+    for (z, got, exact) in rows {
+        let e = |i: usize| 100.0 * (got[i] - exact[i]) / STRIP_PRESSURE;
+        let _ = writeln!(
+            md,
+            "| {z} | {:.4} | {:.4} | {:+.2} % | {:.4} | {:.4} | {:+.2} % |",
+            got[0] / 1e6,
+            exact[0] / 1e6,
+            e(0),
+            got[1] / 1e6,
+            exact[1] / 1e6,
+            e(1)
+        );
+    }
+    let _ = writeln!(md);
+    Ok(md)
+}
+
+/// A depth below the strip's centre (m), the zones' (σ_yy, σ_xx) there and the closed form's
+/// (Pa).
+type StripPoint = (f64, [f64; 2], [f64; 2]);
+
+/// Pressure of the strip load, Pa (compressive).
+const STRIP_PRESSURE: f64 = 1e6;
+
+/// Depths below the strip's centre where its stresses are compared, m.
+const STRIP_DEPTHS: [f64; 4] = [1.5, 3.0, 6.0, 9.0];
+
+/// A strip load on the half-plane: the shipped near field (±6 m × 12 m) unexcavated and
+/// unstressed, `STRIP_PRESSURE` on its whole top edge (a surcharge 12 m wide on the free
+/// surface, whose net force the far field carries), zoned to `edge` m, solved implicitly. Its
+/// zones' stresses under the centre against the closed form of a strip of half-width b (Poulos &
+/// Davis 1974, table 3.1; Jaeger, Cook & Zimmerman §8.5): σ_yy = −(q/π)(2θ + sin 2θ) and
+/// σ_xx = −(q/π)(2θ − sin 2θ) with θ = atan(b/z). Each figure is the area-weighted mean of the
+/// zones within `edge` of the point; the errors are relative to q.
+fn strip_load(shipped: &Scene, edge: f64) -> anyhow::Result<Vec<StripPoint>> {
+    let mut sc = shipped.clone();
+    sc.excavations.clear();
+    sc.in_situ = Default::default();
+    sc.zoning.edge_far = edge;
+    sc.zoning.edge_at_excavation = edge;
+    sc.boundary = serde_json::from_str(&format!(
+        r#"[{{ "part": "top", "normal_stress": {} }}, {{ "at": [0, -12], "fix": "xy" }}]"#,
+        -STRIP_PRESSURE
+    ))?;
+    sc.solve.method = SolveMethod::Implicit;
+    sc.solve.ratio = 1e-8;
+    sc.validate()?;
+    let out = std::env::temp_dir().join(format!("adit-validation-strip-{edge}"));
+    let r = adit::run_scene(&sc, &out, &mut adit::solve::Quiet)?;
+    let _ = std::fs::remove_dir_all(&out);
+    anyhow::ensure!(
+        r.summary.status == "converged",
+        "strip load: {}",
+        r.summary.status
+    );
+    let m = &r.built.model;
+    let b = 6.0;
+    Ok(STRIP_DEPTHS
+        .iter()
+        .map(|&z| {
+            let (mut sum, mut area) = ([0.0; 2], 0.0);
+            for k in 0..m.zones.len() {
+                let c = m.zones.nodes[k].map(|n| m.nodes.pos[n as usize]);
+                let centre = [
+                    (c[0][0] + c[1][0] + c[2][0]) / 3.0,
+                    (c[0][1] + c[1][1] + c[2][1]) / 3.0,
+                ];
+                if centre[0].hypot(centre[1] + z) <= edge {
+                    let (a, st) = (m.zones.area[k], m.zones.stress[k]);
+                    sum = [sum[0] + a * st[1], sum[1] + a * st[0]];
+                    area += a;
+                }
+            }
+            let theta = (b / z).atan();
+            let q = STRIP_PRESSURE / std::f64::consts::PI;
+            let exact = [
+                -q * (2.0 * theta + (2.0 * theta).sin()),
+                -q * (2.0 * theta - (2.0 * theta).sin()),
+            ];
+            (z, [sum[0] / area, sum[1] / area], exact)
+        })
+        .collect())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -328,6 +431,24 @@ mod tests {
             );
         }
         assert!(truncated[0] > 1.5 * reference[0] && truncated[1] > 1.2 * reference[1]);
+    }
+
+    /// Coarse twin of the section's strip load: a surcharge on the half-plane's surface, whose
+    /// net force the far field carries, stresses the rock under its centre as the closed form,
+    /// σ_yy and σ_xx within 1 % of q at depths of 1.5 to 9 m (measured at most 0.34 %; with the
+    /// load left to the fixity under the near field, up to 81 %).
+    #[test]
+    fn a_strip_load_on_the_half_plane_stresses_it_as_the_closed_form() {
+        let root = crate::repository_root();
+        let shipped = Scene::load(&root.join("models/shallow_tunnel_bem.json")).unwrap();
+        for (z, got, exact) in strip_load(&shipped, 0.5).unwrap() {
+            let errors = [
+                (got[0] - exact[0]) / STRIP_PRESSURE,
+                (got[1] - exact[1]) / STRIP_PRESSURE,
+            ];
+            eprintln!("z {z}: {got:?} against {exact:?}: {errors:?}");
+            assert!(errors.iter().all(|e| e.abs() < 0.01), "z {z}: {errors:?}");
+        }
     }
 
     /// Coarse twin of the section's gravity table: the shipped near field under gravity,
