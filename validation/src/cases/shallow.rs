@@ -221,14 +221,13 @@ fn gravity_scene(shipped: &Scene, half: f64, far: bool) -> anyhow::Result<Scene>
     Ok(sc)
 }
 
-/// A staged run of `sc`: its zones and seconds and the figures of `run`, measured from the
-/// excavation's start.
-fn staged(sc: &Scene, label: &str) -> anyhow::Result<Run> {
-    let start = Instant::now();
+/// `sc` run as `adit run` runs it (stages and all), in a scratch folder named after `label`,
+/// which it removes; an error naming `label` unless it converged.
+fn converged(sc: &Scene, label: &str) -> anyhow::Result<adit::RunResult> {
     let tag: String = (label.chars())
         .map(|c| if c.is_ascii_alphanumeric() { c } else { '-' })
         .collect();
-    let out = std::env::temp_dir().join(format!("adit-validation-gravity-{tag}"));
+    let out = std::env::temp_dir().join(format!("adit-validation-shallow-{tag}"));
     let r = adit::run_scene(sc, &out, &mut adit::solve::Quiet)?;
     let _ = std::fs::remove_dir_all(&out);
     anyhow::ensure!(
@@ -236,6 +235,14 @@ fn staged(sc: &Scene, label: &str) -> anyhow::Result<Run> {
         "{label}: {}",
         r.summary.status
     );
+    Ok(r)
+}
+
+/// A staged run of `sc`: its zones and seconds and the figures of `run`, measured from the
+/// excavation's start.
+fn staged(sc: &Scene, label: &str) -> anyhow::Result<Run> {
+    let start = Instant::now();
+    let r = converged(sc, label)?;
     let m = &r.built.model;
     let at = |p: [f64; 2]| {
         let gap = |i: &usize| (m.nodes.pos[*i][0] - p[0]).hypot(m.nodes.pos[*i][1] - p[1]);
@@ -357,14 +364,7 @@ fn strip_load(shipped: &Scene, edge: f64) -> anyhow::Result<Vec<StripPoint>> {
     sc.solve.method = SolveMethod::Implicit;
     sc.solve.ratio = 1e-8;
     sc.validate()?;
-    let out = std::env::temp_dir().join(format!("adit-validation-strip-{edge}"));
-    let r = adit::run_scene(&sc, &out, &mut adit::solve::Quiet)?;
-    let _ = std::fs::remove_dir_all(&out);
-    anyhow::ensure!(
-        r.summary.status == "converged",
-        "strip load: {}",
-        r.summary.status
-    );
+    let r = converged(&sc, &format!("strip load, zones of {edge} m"))?;
     let m = &r.built.model;
     let b = 6.0;
     Ok(STRIP_DEPTHS
