@@ -240,11 +240,7 @@ fn carry_net_load(model: &mut Model) {
     let null = model.materials.null;
     let parts = (0..zones.len())
         .map(|z| {
-            let c = zones.nodes[z].map(|n| pos[n as usize]);
-            let centre = [
-                (c[0][0] + c[1][0] + c[2][0]) / 3.0,
-                (c[0][1] + c[1][1] + c[2][1]) / 3.0,
-            ];
+            let centre = zones.centroid(z, pos);
             (centre, zones.area[z], Some(zones.material[z]) == null)
         })
         .chain((0..bodies.len()).map(|k| {

@@ -11,7 +11,7 @@
 //! F⁰_a + F^N_a − Σ_b K_ab (u_b − u⁰_b − u^N_b), F^N_a = ∫ N_a σ_N·ν dΓ, the hats N_a integrated
 //! by Gauss–Legendre on pieces a third of P's distance long.
 
-use super::elements::GAUSS;
+use super::elements::{GAUSS, distance_to_segment};
 use super::{FarField, Kernel};
 
 /// Most pieces an interface edge is split into for the net load's nodal forces.
@@ -40,7 +40,7 @@ impl FarField {
             // The material is on the edge's left: the medium's normal (out of the far field)
             // points left, ν = −n to the right.
             let n_medium = [-d[1] / len, d[0] / len];
-            let distance = segment_distance(at, pa, pb).max(1e-12 * len);
+            let distance = distance_to_segment(at, pa, pb).max(1e-12 * len);
             let pieces = ((3.0 * len / distance).ceil() as usize).clamp(1, MOST_PIECES);
             for p in 0..pieces {
                 for &(g, w) in &GAUSS {
@@ -61,16 +61,4 @@ impl FarField {
             }
         }
     }
-}
-
-/// The distance (m) from `p` to the segment from `a` to `b`.
-fn segment_distance(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
-    let d = [b[0] - a[0], b[1] - a[1]];
-    let l2 = d[0] * d[0] + d[1] * d[1];
-    let t = if l2 > 0.0 {
-        (((p[0] - a[0]) * d[0] + (p[1] - a[1]) * d[1]) / l2).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    (p[0] - a[0] - t * d[0]).hypot(p[1] - a[1] - t * d[1])
 }

@@ -56,23 +56,35 @@ fn run(sc: &Scene, label: &str) -> anyhow::Result<Run> {
     let (_, sol, _) = crate::solve_by_method(&mut b.model, &sc.solve);
     anyhow::ensure!(sol.status == Status::Converged, "{label}: {:?}", sol.status);
     let m = &b.model;
-    let at = |p: [f64; 2]| {
-        let gap = |i: &usize| (m.nodes.pos[*i][0] - p[0]).hypot(m.nodes.pos[*i][1] - p[1]);
-        let i = (0..m.nodes.pos.len()).min_by(|a, b| gap(a).total_cmp(&gap(b)));
-        m.nodes.disp[i.expect("nodes")]
-    };
     Ok(Run {
         label: label.into(),
         zones: m.zones.len(),
         blocks: m.blocks.len(),
         cycles: sol.cycles,
         seconds: start.elapsed().as_secs_f64(),
-        figures: [
-            at([0.0, -4.0])[1] - at([0.0, -8.0])[1],
-            at([-2.0, -6.0])[0] - at([2.0, -6.0])[0],
-            at([0.0, 0.0])[1] - at([6.0, 0.0])[1],
-        ],
+        figures: figures(m),
     })
+}
+
+/// The tunnel's vertical convergence (crown less invert), horizontal convergence (left less
+/// right springline) and the surface's trough (above the tunnel less 6 m to the side), m, from
+/// the displacements since their origin (the run's start, or the stage that reset them) at the
+/// nodes nearest those points.
+fn figures(m: &adit::model::Model) -> [f64; 3] {
+    let at = |p: [f64; 2]| {
+        let gap = |i: &usize| (m.nodes.pos[*i][0] - p[0]).hypot(m.nodes.pos[*i][1] - p[1]);
+        let i = (0..m.nodes.pos.len()).min_by(|a, b| gap(a).total_cmp(&gap(b)));
+        let i = i.expect("nodes");
+        [
+            m.nodes.disp[i][0] - m.nodes.origin[i][0],
+            m.nodes.disp[i][1] - m.nodes.origin[i][1],
+        ]
+    };
+    [
+        at([0.0, -4.0])[1] - at([0.0, -8.0])[1],
+        at([-2.0, -6.0])[0] - at([2.0, -6.0])[0],
+        at([0.0, 0.0])[1] - at([6.0, 0.0])[1],
+    ]
 }
 
 /// The shipped scene in a box of half-width `half` and depth `depth` (m) with the in-situ
@@ -244,26 +256,13 @@ fn staged(sc: &Scene, label: &str) -> anyhow::Result<Run> {
     let start = Instant::now();
     let r = converged(sc, label)?;
     let m = &r.built.model;
-    let at = |p: [f64; 2]| {
-        let gap = |i: &usize| (m.nodes.pos[*i][0] - p[0]).hypot(m.nodes.pos[*i][1] - p[1]);
-        let i = (0..m.nodes.pos.len()).min_by(|a, b| gap(a).total_cmp(&gap(b)));
-        let i = i.expect("nodes");
-        [
-            m.nodes.disp[i][0] - m.nodes.origin[i][0],
-            m.nodes.disp[i][1] - m.nodes.origin[i][1],
-        ]
-    };
     Ok(Run {
         label: label.into(),
         zones: m.zones.len(),
         blocks: m.blocks.len(),
         cycles: r.summary.cycles,
         seconds: start.elapsed().as_secs_f64(),
-        figures: [
-            at([0.0, -4.0])[1] - at([0.0, -8.0])[1],
-            at([-2.0, -6.0])[0] - at([2.0, -6.0])[0],
-            at([0.0, 0.0])[1] - at([6.0, 0.0])[1],
-        ],
+        figures: figures(m),
     })
 }
 
@@ -372,11 +371,7 @@ fn strip_load(shipped: &Scene, edge: f64) -> anyhow::Result<Vec<StripPoint>> {
         .map(|&z| {
             let (mut sum, mut area) = ([0.0; 2], 0.0);
             for k in 0..m.zones.len() {
-                let c = m.zones.nodes[k].map(|n| m.nodes.pos[n as usize]);
-                let centre = [
-                    (c[0][0] + c[1][0] + c[2][0]) / 3.0,
-                    (c[0][1] + c[1][1] + c[2][1]) / 3.0,
-                ];
+                let centre = m.zones.centroid(k, &m.nodes.pos);
                 if centre[0].hypot(centre[1] + z) <= edge {
                     let (a, st) = (m.zones.area[k], m.zones.stress[k]);
                     sum = [sum[0] + a * st[1], sum[1] + a * st[0]];
