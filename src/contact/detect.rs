@@ -815,15 +815,11 @@ mod tests {
         assert_eq!((after.edge[i], after.state[i].normal), (7, -1e6));
     }
 
-    /// A wedge's tip pressed into the block across its joint, near that block's corner on a free
-    /// face at a shallow angle to the joint (18°), stays on the joint: the free face is nearer and
-    /// faced too, and choosing it would push the tip along the free face's normal, out of the
-    /// model (a realization of the tunnel model ran away so). The free face runs on in the
-    /// wedge's own free face (both on x = 0), so it is no contact for the tip even when detection
-    /// starts afresh; it was, until the tip's earlier edge was preferred.
-    #[test]
-    fn a_pressed_wedge_tip_keeps_its_joint() {
-        let mut x = vec![
+    /// A wedge (block 0: tip, node 0, at the origin, its free face down x = 0) against the block
+    /// across its joint (block 1: the joint from its node 4 at the origin to (1, −3) m, its free
+    /// face up x = 0 from the origin), m.
+    fn wedge_and_block() -> Vec<[f64; 2]> {
+        vec![
             [0.0, 0.0],
             [0.0, -3.0],
             [0.5, -3.0],
@@ -832,7 +828,18 @@ mod tests {
             [1.0, -3.0],
             [3.0, -3.0],
             [0.0, 3.0],
-        ];
+        ]
+    }
+
+    /// A wedge's tip pressed into the block across its joint, near that block's corner on a free
+    /// face at a shallow angle to the joint (18°), stays on the joint: the free face is nearer and
+    /// faced too, and choosing it would push the tip along the free face's normal, out of the
+    /// model (a realization of the tunnel model ran away so). The free face runs on in the
+    /// wedge's own free face (both on x = 0), so it is no contact for the tip even when detection
+    /// starts afresh; it was, until the tip's earlier edge was preferred.
+    #[test]
+    fn a_pressed_wedge_tip_keeps_its_joint() {
+        let mut x = wedge_and_block();
         let blocks = two_quadrilaterals(EdgeKind::Joint(0));
         let fresh = |_: &Touch| JointState::default();
         let tip = |c: &Contacts| {
@@ -856,16 +863,7 @@ mod tests {
     /// joint's in-situ stress along the boundary.
     #[test]
     fn a_node_where_a_joint_meets_the_boundary_keeps_its_joint() {
-        let mut x = vec![
-            [0.0, 0.0],
-            [0.0, -3.0],
-            [0.5, -3.0],
-            [1.0, -3.0],
-            [0.0, 0.0],
-            [1.0, -3.0],
-            [3.0, -3.0],
-            [0.0, 3.0],
-        ];
+        let mut x = wedge_and_block();
         let blocks = two_quadrilaterals(EdgeKind::Joint(0));
         let loaded = |_: &Touch| JointState {
             normal: -1e6,

@@ -62,8 +62,9 @@ impl Unsupported {
         } else {
             format!(
                 "With nothing installed the last stage finds no equilibrium: block {} (centroid \
-                 ({:.2}, {:.2}) m) falls into the tunnel, {:.2} m when the stage stops at its cycle \
-                 limit, the wall's mean closure then {:.0} mm; the supports hold it.",
+                 ({:.2}, {:.2}) m) has moved {:.2} m and is still moving when the stage stops at \
+                 its cycle limit, the wall's mean closure then {:.0} mm; installed, the supports \
+                 hold it.",
                 self.block,
                 self.at[0],
                 self.at[1],
@@ -78,7 +79,7 @@ impl Unsupported {
         if self.converged {
             format!("{:.2} mm with nothing installed", 1e3 * self.closure)
         } else {
-            format!("with nothing installed block {} falls in", self.block)
+            format!("with nothing installed block {} does not stop", self.block)
         }
     }
 }
