@@ -229,6 +229,21 @@ pub struct FarFieldSpec {
     pub surface: Option<f64>,
 }
 
+impl FarFieldSpec {
+    /// Whether a half-plane far field's surface holds all of `points` (m): each within 1e-9 of
+    /// `span` (m, the largest coordinate's size, at least 1) of y = surface. A region edge there
+    /// stays free of the far field.
+    pub fn on_surface(&self, points: &[[f64; 2]], span: f64) -> bool {
+        (self.surface).is_some_and(|s| points.iter().all(|p| (p[1] - s).abs() <= 1e-9 * span))
+    }
+}
+
+/// The size of the largest coordinate of `points` (m), at least 1: what position tolerances are
+/// relative to.
+pub fn coordinate_span<'a>(points: impl IntoIterator<Item = &'a [f64; 2]>) -> f64 {
+    (points.into_iter().flatten()).fold(1.0f64, |m, v| m.max(v.abs()))
+}
+
 /// `region.far_field.rock_mass`.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Deserialize)]
 #[serde(rename_all = "snake_case")]

@@ -751,15 +751,9 @@ impl Scene {
         // A half-plane's region edges on its surface stay free of the far field: a load there (a
         // surcharge) is the near field's, whose net force the far field carries.
         let poly = &self.region.polygon;
-        let span = (poly.iter().flatten()).fold(1.0f64, |m, v| m.max(v.abs()));
+        let span = super::coordinate_span(poly);
         let on_surface: Vec<String> = (self.edge_names().into_iter().enumerate())
-            .filter(|(i, _)| {
-                f.surface.is_some_and(|s| {
-                    [poly[*i], poly[(i + 1) % poly.len()]]
-                        .iter()
-                        .all(|v| (v[1] - s).abs() <= 1e-9 * span)
-                })
-            })
+            .filter(|(i, _)| f.on_surface(&[poly[*i], poly[(i + 1) % poly.len()]], span))
             .map(|(_, name)| name)
             .collect();
         for (path, list) in lists {

@@ -69,12 +69,9 @@ pub fn far_field(
         }
     };
     // The region's outer edges, but those on a half-plane's surface, which stay free.
-    let span = (model.nodes.pos.iter().flatten()).fold(1.0f64, |m, v| m.max(v.abs()));
-    let on_surface = |e: &BoundaryEdge| {
-        spec.surface.is_some_and(|s| {
-            (e.nodes.iter()).all(|&n| (model.nodes.pos[n as usize][1] - s).abs() <= 1e-9 * span)
-        })
-    };
+    let span = crate::scene::coordinate_span(&model.nodes.pos);
+    let on_surface =
+        |e: &BoundaryEdge| spec.on_surface(&e.nodes.map(|n| model.nodes.pos[n as usize]), span);
     let outer: Vec<&BoundaryEdge> = (boundary.edges.iter())
         .filter(|e| matches!(e.kind, EdgeKind::Region(_)) && !on_surface(e))
         .collect();
@@ -156,9 +153,9 @@ fn element_chains(outer: &[&BoundaryEdge], pos: &[[f64; 2]], size: f64) -> Vec<V
     let gap = |a: [f64; 2], b: [f64; 2]| (a[0] - b[0]).hypot(a[1] - b[1]);
     // The edge after each: the one starting at its end node, or else at the same place (a
     // joint's twin node); none where the interface ends (a half-plane's surface).
-    let span = (outer.iter())
-        .flat_map(|e| e.nodes.iter().flat_map(|&n| at(n)))
-        .fold(1.0f64, |m, v| m.max(v.abs()));
+    let span = crate::scene::coordinate_span(
+        (outer.iter()).flat_map(|e| e.nodes.iter().map(|&n| &pos[n as usize])),
+    );
     let next: Vec<Option<usize>> = (outer.iter())
         .map(|e| match by_start.get(&e.nodes[1]) {
             Some(&j) => Some(j),
