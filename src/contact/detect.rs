@@ -388,8 +388,9 @@ fn facing_edge(
 /// too, but that face runs under the edge, not past its end.)
 fn runs_on(d: &Detection, n: &Node, xi: f64, pj: [f64; 2], t: [f64; 2], normal: [f64; 2]) -> bool {
     let own = d.blocks.node_edges[n.id as usize];
-    own.iter().filter(|&&e| e != NO_EDGE).any(|&e| {
-        if dot(edge_normal(d, e), normal) <= SAME_FACE {
+    let mut faces = own.iter().filter(|&&e| e != NO_EDGE).zip(n.normals());
+    faces.any(|(&e, &o)| {
+        if dot(o, normal) <= SAME_FACE {
             return false;
         }
         let [a, b] = d.blocks.edges[e as usize];

@@ -117,21 +117,12 @@ fn held(model: &Model, b: usize) -> bool {
 
 /// The reason a stage stops on `steady` blocks after `iterations`.
 pub fn describe(model: &Model, steady: &[(usize, f64)], iterations: u64) -> String {
-    let starts = &model.blocks.node_start;
     let named: Vec<String> = steady
         .iter()
         .take(5)
         .map(|&(b, moved)| {
-            let nodes = starts[b] as usize..starts[b + 1] as usize;
-            let count = nodes.len().max(1) as f64;
-            let (sx, sy) = model.nodes.pos[nodes]
-                .iter()
-                .fold((0.0, 0.0), |(x, y), p| (x + p[0], y + p[1]));
-            format!(
-                "block {b} near ({:.3}, {:.3}) m moves {moved:.2e} m per iteration",
-                sx / count,
-                sy / count
-            )
+            let [x, y] = model.blocks.node_mean(b, &model.nodes.pos);
+            format!("block {b} near ({x:.3}, {y:.3}) m moves {moved:.2e} m per iteration")
         })
         .collect();
     format!(

@@ -55,4 +55,11 @@ impl Blocks {
     pub fn block_of_node(&self, n: u32) -> usize {
         self.node_start.partition_point(|&s| s <= n) - 1
     }
+
+    /// The mean of block `b`'s node positions `pos` (m): where a message places the block.
+    pub fn node_mean(&self, b: usize, pos: &[[f64; 2]]) -> [f64; 2] {
+        let nodes = &pos[self.node_start[b] as usize..self.node_start[b + 1] as usize];
+        let count = nodes.len().max(1) as f64;
+        [0, 1].map(|d| nodes.iter().map(|p| p[d]).sum::<f64>() / count)
+    }
 }

@@ -36,10 +36,7 @@ impl Unsupported {
             .map(|(n, u)| (n, u[0].hypot(u[1])))
             .fold((0, 0.0), |best, c| if c.1 > best.1 { c } else { best });
         let block = m.blocks.block_of_node(node as u32);
-        let starts = &m.blocks.node_start;
-        let nodes = &m.nodes.pos[starts[block] as usize..starts[block + 1] as usize];
-        let count = nodes.len().max(1) as f64;
-        let at = [0, 1].map(|d| nodes.iter().map(|p| p[d]).sum::<f64>() / count);
+        let at = m.blocks.node_mean(block, &m.nodes.pos);
         Unsupported {
             closure: last
                 .and_then(|s| s.closure.values().next().copied())
