@@ -45,30 +45,51 @@ pub fn centre(blocks: &Blocks, x: &impl Fn(u32) -> [f64; 2], n: u32, d: f64) -> 
 }
 
 /// Rounding radius of each node, m: `d` at the convex corners of the blocks `rounded(b)` selects,
-/// reduced where needed so that the arc's tangent points stay within a quarter of each edge
-/// (tangent length d / tan(θ/2)); 0 elsewhere (deformable blocks, straight and reflex corners).
+/// reduced where needed (`radius_at`); 0 elsewhere (deformable blocks, straight and reflex corners).
 pub fn radii(blocks: &Blocks, x: &[[f64; 2]], d: f64, rounded: impl Fn(usize) -> bool) -> Vec<f64> {
     let at = |v: u32| x[v as usize];
     let mut r = vec![0.0; x.len()];
     for b in (0..blocks.len()).filter(|&b| rounded(b)) {
         for e in blocks.edge_range(b) {
             let n = blocks.edges[e][0];
-            let Some((e1, e2)) = edge_directions(blocks, &at, n) else {
-                continue;
-            };
-            let sin_turn = e1[0] * e2[1] - e1[1] * e2[0];
-            if sin_turn <= 1e-6 {
-                continue;
-            }
-            let tan_half = (1.0 + e1[0] * e2[0] + e1[1] * e2[1]) / sin_turn;
-            let [inc, out] = blocks.node_edges[n as usize].map(|e| {
-                let [a, c] = blocks.edges[e as usize].map(at);
-                (c[0] - a[0]).hypot(c[1] - a[1])
-            });
-            r[n as usize] = d.min(0.25 * inc.min(out) * tan_half);
+            r[n as usize] = radius_at(blocks, &at, n, d);
         }
     }
     r
+}
+
+/// Rounding radius at node `n` for a requested `d`, m: d at a convex corner, reduced where needed
+/// so that the arc's tangent points stay within a quarter of each edge (tangent length
+/// d / tan(θ/2)); 0 at straight and reflex corners and at the ends of open chains.
+fn radius_at(blocks: &Blocks, at: &impl Fn(u32) -> [f64; 2], n: u32, d: f64) -> f64 {
+    let Some((e1, e2)) = edge_directions(blocks, at, n) else {
+        return 0.0;
+    };
+    let sin_turn = e1[0] * e2[1] - e1[1] * e2[0];
+    if sin_turn <= 1e-6 {
+        return 0.0;
+    }
+    let tan_half = (1.0 + e1[0] * e2[0] + e1[1] * e2[1]) / sin_turn;
+    let [inc, out] = blocks.node_edges[n as usize].map(|e| {
+        let [a, c] = blocks.edges[e as usize].map(at);
+        (c[0] - a[0]).hypot(c[1] - a[1])
+    });
+    d.min(0.25 * inc.min(out) * tan_half)
+}
+
+/// The arc a corner-to-corner contact at node `n` meets along the line of centres: its centre (m)
+/// and radius (m), the node's rounding, or at a sharp node (round 0) the arc its corner would have
+/// if rounded by `Blocks::sharp_round` (`radius_at`; none, the node itself, where straight or
+/// reflex). Sharp corners so meet corners as rounded ones do (a normal along the line of centres,
+/// turning smoothly as they pass each other; a gap between the arcs) while their faces stay sharp.
+pub fn contact_arc(blocks: &Blocks, x: &impl Fn(u32) -> [f64; 2], n: u32) -> ([f64; 2], f64) {
+    let r = blocks.round_of(n);
+    let r = if r > 0.0 {
+        r
+    } else {
+        radius_at(blocks, x, n, blocks.sharp_round)
+    };
+    (centre(blocks, x, n, r), r)
 }
 
 #[cfg(test)]
@@ -86,6 +107,7 @@ mod tests {
             edge_kind: vec![adit_meshing::EdgeKind::Region(0); 4],
             node_edges: vec![[3, 0], [0, 1], [1, 2], [2, 3]],
             round: vec![],
+            sharp_round: 0.0,
             removed: vec![],
         };
         (blocks, x)

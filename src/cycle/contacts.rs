@@ -30,8 +30,8 @@ impl Cycle {
     }
 
     /// Contact stage: relative velocity of the node against the point ξ of the edge, projected on the
-    /// edge's normal n (outward of the edge's block; for two rounded corners, the unit vector
-    /// between their rounding centres) and tangent t, gives the increments
+    /// edge's normal n (outward of the edge's block; for corner against corner, the unit vector
+    /// between their arcs' centres) and tangent t, gives the increments
     /// Δun = v_rel·n Δt, Δus = v_rel·t Δt; the joint law returns the stresses, and the force
     /// F = −L(σn n + τ t) acts on the node while −(1 − ξ)F and −ξF act on the edge's nodes, so
     /// momentum is conserved exactly. With stiffness-proportional Rayleigh damping σn and τ take
@@ -143,8 +143,8 @@ pub struct JointCommit<'a> {
 }
 
 /// The unit normal of contact (node `i`, edge `e`) at positions `x`: the edge's outward normal
-/// (material on its left), or for two rounded corners (`corner`) the unit vector from the edge's
-/// first node's rounding centre to the node's.
+/// (material on its left), or for corner against corner (`corner`) the unit vector from the
+/// arc centre of the edge's first node to the node's (`rounding::contact_arc`).
 pub(crate) fn contact_normal(
     blocks: &Blocks,
     x: &impl Fn(u32) -> [f64; 2],
@@ -154,9 +154,9 @@ pub(crate) fn contact_normal(
 ) -> [f64; 2] {
     let [j, k] = blocks.edges[e as usize];
     if corner {
-        // Rounded corner against rounded corner: along the line of the centres.
-        let ci = rounding::centre(blocks, x, i, blocks.round_of(i));
-        let cj = rounding::centre(blocks, x, j, blocks.round_of(j));
+        // Corner against corner: along the line of the centres.
+        let (ci, _) = rounding::contact_arc(blocks, x, i);
+        let (cj, _) = rounding::contact_arc(blocks, x, j);
         let (dx, dy) = (ci[0] - cj[0], ci[1] - cj[1]);
         let l = (dx * dx + dy * dy).sqrt();
         [dx / l, dy / l]

@@ -251,6 +251,7 @@ pub fn setup_meshed(scene: &Scene, meshed: Meshed) -> anyhow::Result<Setup> {
         .contacts
         .tolerance
         .unwrap_or(0.05 * scene.zoning.edge_at_excavation);
+    blocks.sharp_round = contact_tolerance;
     let contacts = if blocks.len() > 1 {
         let d = Detection {
             blocks: &blocks,

@@ -8,6 +8,7 @@ pub mod cases;
 pub mod corners;
 pub mod direct_shear;
 pub mod drop;
+pub mod equivalent;
 pub mod far_field;
 pub mod flutter;
 pub mod glued;

@@ -5,6 +5,7 @@ mod column;
 mod corners;
 mod detection;
 mod direct_shear;
+mod equivalent;
 mod far_field;
 mod glued;
 mod grains;
@@ -59,6 +60,7 @@ pub fn all() -> Vec<Box<dyn Case>> {
         Box::new(random_scenes::RandomScenes),
         Box::new(unstable::Unstable),
         Box::new(glued::Glued),
+        Box::new(equivalent::Equivalent),
         Box::new(incline::Incline),
         Box::new(direct_shear::DirectShear),
         Box::new(modes::Modes),
