@@ -154,15 +154,17 @@ pub(crate) fn contact_normal(
 ) -> [f64; 2] {
     let [j, k] = blocks.edges[e as usize];
     if corner {
-        // Corner against corner: along the line of the centres.
+        // Corner against corner: along the line of the centres (unless they coincide, a node
+        // deep in the other block, where the edge's normal stands).
         let (ci, _) = rounding::contact_arc(blocks, x, i);
         let (cj, _) = rounding::contact_arc(blocks, x, j);
         let (dx, dy) = (ci[0] - cj[0], ci[1] - cj[1]);
         let l = (dx * dx + dy * dy).sqrt();
-        [dx / l, dy / l]
-    } else {
-        let (pj, pk) = (x(j), x(k));
-        let l = ((pk[0] - pj[0]).powi(2) + (pk[1] - pj[1]).powi(2)).sqrt();
-        [(pk[1] - pj[1]) / l, -(pk[0] - pj[0]) / l]
+        if l > 0.0 {
+            return [dx / l, dy / l];
+        }
     }
+    let (pj, pk) = (x(j), x(k));
+    let l = ((pk[0] - pj[0]).powi(2) + (pk[1] - pj[1]).powi(2)).sqrt();
+    [(pk[1] - pj[1]) / l, -(pk[0] - pj[0]) / l]
 }

