@@ -50,9 +50,9 @@ impl Case for Equivalent {
              error of the mean strain's components, (1/A)∮ sym(u ⊗ n) ds over the square's sides, over \
              the largest exact component. Where joints cross, the corners of the diagonal blocks meet at \
              a point: they meet as rounded corners (`docs/theory.md`, \"Sharp corners\"), 2d(1/sin(θ/2) − 1) \
-             apart (d the contact tolerance), and carry nothing until they close that gap (a contact on \
-             an edge of the other corner, as adit made before, held them together and stiffened the \
-             mass). Released at once, the explicit solve slips a few joints by the fixed corner in its \
+             apart (d the contact tolerance, capped at a quarter of each edge as rounding is), and carry \
+             nothing until they close that gap (a contact on an edge of the other corner, as adit took \
+             before, held them together and stiffened the mass). Released at once, the explicit solve slips a few joints by the fixed corner in its \
              transient, which the static solve does not.\n"
         );
         table(&mut md, &runs);
