@@ -22,9 +22,9 @@ pub struct Blocks {
     /// Corner rounding radius of each node, m (`contact::rounding`; 0 but at the convex corners of
     /// rigid and simple blocks; empty: no rounding).
     pub round: Vec<f64>,
-    /// Radius of the arc a sharp convex corner (round 0) would have, m, used only for the normal of
-    /// its corner-to-corner contacts (`contact::rounding::contact_centre`): the contact tolerance;
-    /// 0, sharp corners meet edges only.
+    /// Radius of the arc a sharp convex corner (round 0) would have, m, used only by its
+    /// corner-to-corner contacts, for their normal and gap (`contact::rounding::contact_arc`): the
+    /// contact tolerance; 0, sharp corners meet edges only.
     pub sharp_round: f64,
     /// Blocks removed by an excavation stage (empty: none).
     pub(crate) removed: Vec<bool>,
