@@ -66,6 +66,23 @@ pub struct Blocking {
     pub slivers: Vec<usize>,
     /// The vertices the cutter moved onto another within the tolerance.
     pub merges: Merges,
+    /// Joints the cutter laid onto a wall, one entry per joint feature, in feature order.
+    pub onto_walls: Vec<OntoWall>,
+}
+
+/// Joint traces of one feature (a joint set or line) that lay along a wall (a region edge or an
+/// excavation's) within the tolerance, off it by more than a thousandth of it: merging moved their
+/// vertices onto the wall's, and the pieces then ran along the wall and were dropped, so there the
+/// joint is the wall and carries no joint law.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct OntoWall {
+    pub kind: EdgeKind,
+    /// Length of the pieces dropped, m.
+    pub length: f64,
+    /// The largest distance of a dropped piece's midpoint from its joint trace, m, and that
+    /// midpoint.
+    pub offset: f64,
+    pub at: Point,
 }
 
 /// Vertices merged into another one within the tolerance by more than a thousandth of it (a
@@ -77,6 +94,45 @@ pub struct Merges {
     /// The largest move, m, and where it went.
     pub largest: f64,
     pub at: Point,
+}
+
+/// The joints laid onto walls so far, by feature.
+#[derive(Default)]
+struct OntoWalls(Vec<OntoWall>);
+
+impl OntoWalls {
+    /// Note that the piece a–b (m) of joint segment `s` lies along a wall, if merging moved it
+    /// there (its midpoint off `s` by more than a thousandth of `tol`).
+    fn note(&mut self, s: &Segment, a: Point, b: Point, tol: f64) {
+        let mid = [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])];
+        let offset = segment_distance(mid, s.a, s.b);
+        if offset <= 1e-3 * tol {
+            return;
+        }
+        let i = match self.0.iter().position(|o| o.kind == s.kind) {
+            Some(i) => i,
+            None => {
+                let (kind, at) = (s.kind, mid);
+                self.0.push(OntoWall {
+                    kind,
+                    length: 0.0,
+                    offset,
+                    at,
+                });
+                self.0.len() - 1
+            }
+        };
+        let o = &mut self.0[i];
+        o.length += distance(a, b);
+        if offset > o.offset {
+            (o.offset, o.at) = (offset, mid);
+        }
+    }
+
+    fn into_sorted(mut self) -> Vec<OntoWall> {
+        self.0.sort_by_key(|o| o.kind);
+        self.0
+    }
 }
 
 /// Merges points closer than the tolerance (uniform hash grid). A point merges into the nearest
@@ -229,6 +285,9 @@ pub fn cut_blocks_filled(
         pool.insert(s.a, true);
     }
     let mut edges: Map<(u32, u32), EdgeKind> = Map::default();
+    // The joint segment each joint edge came from first (how far merging moved it).
+    let mut source: Map<(u32, u32), u32> = Map::default();
+    let mut onto_walls = OntoWalls::default();
     let mut params = Vec::new();
     let grid = SegmentGrid::new(&segs, tol);
     let mut near = Vec::new();
@@ -255,6 +314,14 @@ pub fn cut_blocks_filled(
             if let Some(u) = prev.filter(|&u| u != v) {
                 let key = (u.min(v), u.max(v));
                 let kind = edges.entry(key).or_insert(s.kind);
+                if matches!(s.kind, EdgeKind::Joint(_)) {
+                    if matches!(kind, EdgeKind::Joint(_)) {
+                        source.entry(key).or_insert(i as u32);
+                    } else {
+                        let (a, b) = (pool.pts[u as usize], pool.pts[v as usize]);
+                        onto_walls.note(s, a, b, tol);
+                    }
+                }
                 *kind = (*kind).min(s.kind);
             }
             prev = Some(v);
@@ -282,8 +349,13 @@ pub fn cut_blocks_filled(
             segment_distance(m, w.a, w.b) <= eps
         })
     };
-    edges.retain(|&(u, v), k| {
-        !matches!(k, EdgeKind::Joint(_)) || !along_wall(pts[u as usize], pts[v as usize])
+    edges.retain(|&(u, v), &mut kind| {
+        let (a, b) = (pts[u as usize], pts[v as usize]);
+        if !matches!(kind, EdgeKind::Joint(_)) || !along_wall(a, b) {
+            return true;
+        }
+        onto_walls.note(&segs[source[&(u, v)] as usize], a, b, tol);
+        false
     });
 
     // Prune free joint ends until every vertex has degree ≥ 2: from each vertex of degree 1, along
@@ -334,7 +406,11 @@ pub fn cut_blocks_filled(
 
     let faces = trace_faces(&pts, &edges);
     let blocking = assemble_blocks(domain, &in_rock, &pts, faces, tol, absorbed)?;
-    Ok(Blocking { merges, ..blocking })
+    Ok(Blocking {
+        merges,
+        onto_walls: onto_walls.into_sorted(),
+        ..blocking
+    })
 }
 
 /// A closed cycle of the arrangement: its vertices and edge kinds, face on the left.
@@ -528,6 +604,7 @@ fn assemble_blocks(
         absorbed_joint_length,
         slivers,
         merges: Merges::default(),
+        onto_walls: Vec::new(),
     })
 }
 
@@ -777,6 +854,43 @@ mod tests {
                 "corner {c:?} moved"
             );
         }
+    }
+
+    /// A joint along a side within the tolerance is merged into the side and reported with its
+    /// length and how far it was off; one on the side, or beyond the tolerance, is not.
+    #[test]
+    fn a_joint_merged_into_a_wall_is_reported() {
+        let d = square(10.0);
+        let cut = |y: f64| {
+            let joints = [
+                Segment {
+                    a: [-1.0, y],
+                    b: [11.0, y],
+                    kind: EdgeKind::Joint(0),
+                },
+                Segment {
+                    a: [5.0, -1.0],
+                    b: [5.0, 11.0],
+                    kind: EdgeKind::Joint(1),
+                },
+            ];
+            cut_blocks(&d, &joints, 0.1).unwrap()
+        };
+        let b = cut(0.05);
+        assert_eq!(b.blocks.len(), 2, "the joint 0.05 m off the side is gone");
+        assert_eq!(b.onto_walls.len(), 1);
+        let o = b.onto_walls[0];
+        assert_eq!(o.kind, EdgeKind::Joint(0));
+        assert_relative_eq!(o.length, 10.0, max_relative = 1e-12);
+        assert_relative_eq!(o.offset, 0.05, max_relative = 1e-9);
+        assert_relative_eq!(o.at[1], 0.0);
+        assert!(
+            cut(0.0).onto_walls.is_empty(),
+            "a joint on the side is the side"
+        );
+        let beyond = cut(0.2);
+        assert_eq!(beyond.blocks.len(), 4);
+        assert!(beyond.onto_walls.is_empty());
     }
 
     #[test]

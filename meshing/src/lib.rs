@@ -13,7 +13,7 @@ pub mod triangulate;
 pub mod union_find;
 pub mod voronoi;
 
-pub use blocks::{Block, Blocking, Merges, cut_blocks, cut_blocks_filled};
+pub use blocks::{Block, Blocking, Merges, OntoWall, cut_blocks, cut_blocks_filled};
 pub use domain::{Domain, Hole};
 pub use error::MeshError;
 pub use geometry::{Point, Polygon};

@@ -216,7 +216,7 @@ fn field_of(scene: &Scene, err: &MeshError) -> String {
 
 /// The scene field a block edge of `kind` comes from: a region edge, an excavation wall, a joint
 /// set, an explicit joint or the Voronoi grains.
-fn edge_source(scene: &Scene, kind: EdgeKind) -> String {
+pub(super) fn edge_source(scene: &Scene, kind: EdgeKind) -> String {
     let sets = scene.joint_sets.len();
     match kind {
         EdgeKind::Region(i) => format!("region.polygon edge {i}"),
@@ -338,6 +338,7 @@ fn cut_and_zone(
             absorbed_joint_length: 0.0,
             slivers: vec![],
             merges: Default::default(),
+            onto_walls: Vec::new(),
         }
     } else {
         cut_blocks_filled(&domain, &filled, joints, tol)?

@@ -1,5 +1,5 @@
 //! What setting up a scene found worth saying: sliver and thin blocks, repairs, refinement that
-//! did not reach its angle, merged vertices, absorbed joints; and the one mesh fault that is an
+//! did not reach its angle, merged vertices, joints merged into walls, absorbed joints; and the one mesh fault that is an
 //! error, a zone sharper than the scene accepts.
 
 use super::geometry::Meshed;
@@ -96,6 +96,20 @@ pub(super) fn warnings(scene: &Scene, meshed: &Meshed) -> anyhow::Result<Vec<Str
             merges.count, meshed.merge_tolerance, merges.largest, merges.at[0], merges.at[1]
         ));
     }
+    for o in &meshed.blocking.onto_walls {
+        warnings.push(format!(
+            "{}: {:.3} m of its traces lay along a wall within zoning.merge_tolerance = {:.4} m \
+             (up to {:.4} m off it, near ({:.3}, {:.3}) m) and were merged into the wall, which \
+             stands for the joint there (to keep it a joint, move it off the wall or lower \
+             zoning.merge_tolerance)",
+            super::geometry::edge_source(scene, o.kind),
+            o.length,
+            meshed.merge_tolerance,
+            o.offset,
+            o.at[0],
+            o.at[1]
+        ));
+    }
     if meshed.blocking.absorbed_joint_length > 0.0 {
         warnings.push(format!(
             "{:.3} m of joint traces end inside blocks and were absorbed into them",
@@ -103,4 +117,32 @@ pub(super) fn warnings(scene: &Scene, meshed: &Meshed) -> anyhow::Result<Vec<Str
         ));
     }
     Ok(warnings)
+}
+
+#[cfg(test)]
+mod tests {
+    /// A set's joint 0.1 m inside a side (tolerance 0.3 m) is merged into it: the warning names
+    /// the set and the whole 20 m.
+    #[test]
+    fn a_joint_merged_into_a_side_is_named() {
+        let text = r#"{ "name": "w", "materials": { "rock": { "density": 2600, "young": 2e10, "poisson": 0.25 } },
+          "region": { "polygon": [[-10, -10], [10, -10], [10, 10], [-10, 10]], "material": "rock" },
+          "zoning": { "edge_at_excavation": 1.0, "edge_far": 1.0 },
+          "joint_materials": { "j": { "normal_stiffness": 2e10, "shear_stiffness": 1e10, "friction": 35 } },
+          "joint_sets": [
+            { "dip": 0, "spacing": 4, "origin": [0, -9.9], "material": "j" },
+            { "dip": 70, "spacing": 5, "origin": [0.3, 0], "material": "j" }],
+          "boundary": [{ "at": [-10, -10], "fix": "xy" }] }"#;
+        let scene = crate::Scene::from_json(text, "w").unwrap();
+        let built = crate::setup::setup(&scene).unwrap();
+        let merged: Vec<&String> = (built.warnings.iter())
+            .filter(|w| w.contains("merged into the wall"))
+            .collect();
+        assert_eq!(merged.len(), 1, "{:?}", built.warnings);
+        assert!(
+            merged[0].starts_with("joint_sets[0]: 20.000 m") && merged[0].contains("0.1000 m off"),
+            "{}",
+            merged[0]
+        );
+    }
 }
