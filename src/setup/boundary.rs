@@ -2,6 +2,7 @@
 
 use std::collections::BTreeMap;
 
+use adit_meshing::geometry::segment_distance;
 use adit_meshing::{BoundaryEdge, Domain, EdgeKind};
 
 use super::plan::{Boundary, InSituField};
@@ -68,12 +69,8 @@ pub fn boundary_effect(
 ) -> anyhow::Result<BoundaryEffect> {
     let mut scratch = Nodes::at(pos.to_vec());
     for (k, bc) in conditions.iter().enumerate() {
-        apply_condition(
-            bc.condition(&format!("{path}[{k}]"))?,
-            boundary,
-            in_situ,
-            &mut scratch,
-        )?;
+        let path = format!("{path}[{k}]");
+        apply_condition(bc.condition(&path)?, &path, boundary, in_situ, &mut scratch)?;
     }
     Ok((scratch.fixed, scratch.applied))
 }
@@ -86,9 +83,11 @@ fn fix_flags(f: Fix) -> u8 {
     }
 }
 
-/// Apply one boundary condition: fixities on nodes, tractions as consistent nodal loads.
+/// Apply one boundary condition, the scene's `path`: fixities on nodes, tractions as consistent
+/// nodal loads.
 fn apply_condition(
     condition: Condition,
+    path: &str,
     boundary: &Boundary,
     in_situ: &InSituField,
     nodes: &mut Nodes,
@@ -101,6 +100,7 @@ fn apply_condition(
                 let p = nodes.pos[n as usize];
                 (p[0] - at[0]).powi(2) + (p[1] - at[1]).powi(2)
             };
+            refuse_far_point(path, at, &nodes.pos, boundary)?;
             if let Some(&n) = all.iter().min_by(|&&a, &&b| d2(a).total_cmp(&d2(b))) {
                 nodes.fixed[n as usize] |= fix_flags(fix);
             }
@@ -132,6 +132,36 @@ fn apply_condition(
     Ok(())
 }
 
+/// A point fixity at `at` (m) holds the boundary node nearest it: an error naming `path` when the
+/// point is farther from the nearest wall or region edge than that edge is long (the point is off
+/// the boundary, and the node taken may be on another wall than the one meant: inside a box, a
+/// point took the tunnel's wall).
+fn refuse_far_point(
+    path: &str,
+    at: [f64; 2],
+    pos: &[[f64; 2]],
+    boundary: &Boundary,
+) -> anyhow::Result<()> {
+    let nearest = (boundary.edges.iter())
+        .filter(|e| !matches!(e.kind, EdgeKind::Joint(_)))
+        .map(|e| {
+            let [a, b] = e.nodes.map(|n| pos[n as usize]);
+            let length = (a[0] - b[0]).hypot(a[1] - b[1]);
+            (segment_distance(at, a, b), length)
+        })
+        .min_by(|x, y| x.0.total_cmp(&y.0));
+    if let Some((d, length)) = nearest.filter(|&(d, length)| d > length) {
+        anyhow::bail!(
+            "{path}.at: ({}, {}) m is {d:.3} m from the boundary, farther than its edge there is \
+             long ({length:.3} m): a point fixity holds the node of the region's or an \
+             excavation's boundary nearest it; give a point on that boundary",
+            at[0],
+            at[1]
+        );
+    }
+    Ok(())
+}
+
 /// Add the consistent nodal loads of a traction t(p, n) (Pa, at point p with outward unit normal
 /// n) over boundary edges (material on the left of each edge): for t varying linearly along an
 /// edge of length L, (2tₐ + t_b)L/6 to its first node and (tₐ + 2t_b)L/6 to its second.
@@ -160,6 +190,37 @@ pub fn traction_loads<'a>(
         for d in 0..2 {
             loads[a][d] += (2.0 * ta[d] + tb[d]) * len / 6.0;
             loads[b][d] += (ta[d] + 2.0 * tb[d]) * len / 6.0;
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    fn scene(at: [f64; 2]) -> crate::Scene {
+        let text = format!(
+            r#"{{ "name": "p", "materials": {{ "rock": {{ "density": 2600, "young": 2e10, "poisson": 0.25 }} }},
+              "region": {{ "polygon": [[-10, -10], [10, -10], [10, 10], [-10, 10]], "material": "rock" }},
+              "excavations": [{{ "name": "t", "circle": {{ "center": [0, 0], "radius": 1, "segments": 32 }} }}],
+              "zoning": {{ "edge_at_excavation": 0.5, "edge_far": 2 }},
+              "boundary": [{{ "part": "outer", "stress": {{ "sxx": -1e6, "syy": -1e6, "sxy": 0 }} }},
+                           {{ "at": [{}, {}], "fix": "xy" }}] }}"#,
+            at[0], at[1]
+        );
+        crate::Scene::from_json(&text, "p").unwrap()
+    }
+
+    /// A point fixity inside the rock, 4 m from the tunnel's wall and 5 m from the box's side, is
+    /// refused, naming the condition; points on the side, or off it by less than an edge, hold
+    /// the node nearest them.
+    #[test]
+    fn a_point_fixity_off_the_boundary_is_refused() {
+        let e = crate::setup::setup(&scene([5.0, 0.0])).err().unwrap();
+        let e = format!("{e:#}");
+        assert!(e.contains("boundary[1].at: (5, 0) m is 4.0"), "{e}");
+        for at in [[10.0, 0.3], [10.2, -10.1], [-1.0, 0.05]] {
+            let built = crate::setup::setup(&scene(at)).unwrap();
+            let fixed = built.model.nodes.fixed.iter().filter(|&&f| f != 0).count();
+            assert_eq!(fixed, 1, "at {at:?}");
         }
     }
 }

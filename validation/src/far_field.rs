@@ -33,14 +33,18 @@ impl Outside {
 }
 
 /// The shipped Kirsch scene `kirsch` cut to a square box of half-width `half` hole radii, its
-/// outer boundary loaded as `outside` says. The point fixities stay (the nearest boundary nodes
-/// to them, on the box): with the far field they hold the near field against translation, which
-/// costs the infinite medium nothing.
+/// outer boundary loaded as `outside` says. The point fixities move onto the box along their
+/// rays from the centre (the shipped ones, at the sides' midpoints, to the box's): with the far
+/// field they hold the near field against translation, which costs the infinite medium nothing.
 pub fn box_scene(kirsch: &Scene, half: f64, outside: Outside) -> Scene {
     let mut s = kirsch.clone();
     let a = s.excavations[0].circle.as_ref().map_or(1.0, |c| c.radius);
     let h = half * a;
     s.region.polygon = vec![[-h, -h], [h, -h], [h, h], [-h, h]];
+    for at in s.boundary.iter_mut().filter_map(|b| b.at.as_mut()) {
+        let onto = h / at[0].abs().max(at[1].abs());
+        *at = [onto * at[0], onto * at[1]];
+    }
     if outside == Outside::FarField {
         s.boundary.retain(|b| b.part.is_none());
         s.region.far_field =
