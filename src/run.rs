@@ -235,13 +235,14 @@ fn build_solve_write(
             error: None,
             offset: cycles,
         };
-        let mut handed_over = None;
+        let (mut handed_over, mut implicit_moving) = (None, None);
         let solution = match method {
             Method::Implicit => {
                 let implicit::Solved {
                     solution,
                     cost,
                     sound,
+                    moving,
                 } = implicit::solve_driven(
                     model,
                     &mut solver.cycle,
@@ -253,6 +254,7 @@ fn build_solve_write(
                 );
                 seconds.implicit += cost.seconds();
                 implicit_cost = Some(implicit_cost.map_or(cost, |c| c.plus(cost)));
+                implicit_moving = moving;
                 match hand_over(spec.method, &solution, sound) {
                     // `auto`: what the iterations could not settle, explicit cycling relaxes from
                     // where they left the model.
@@ -301,11 +303,18 @@ fn build_solve_write(
             final_ratio: measured(solution.final_ratio),
             support_fraction: staging.support_fraction(),
             closure: staging.closures(model, plan),
-            moving: (solution.status == Status::Converged && spec.mode == SolveMode::Static)
-                .then(|| {
+            moving: match (&solution.status, spec.mode) {
+                (Status::Converged, SolveMode::Static) => {
                     crate::cycle::drift::still_moving(model, solution.cycles, solver.params.dt)
-                })
-                .flatten(),
+                }
+                // Explicit cycling ran last: its velocities say what moves.
+                (Status::CycleLimit, _) if method != Method::Implicit || handed_over.is_some() => {
+                    let (cycles, dt) = (solution.cycles, solver.params.dt);
+                    crate::cycle::drift::fastest_at_limit(model, cycles, dt)
+                }
+                (Status::CycleLimit, _) => implicit_moving,
+                _ => None,
+            },
         });
         let t = Instant::now();
         let failed = matches!(solution.status, Status::Failed(_));
@@ -426,7 +435,7 @@ fn build_solve_write(
     })
 }
 
-/// The stages' blocks still moving at convergence (`cycle::drift`) as warnings, each named by
+/// The stages' blocks still moving at convergence or at a cycle limit (`cycle::drift`) as warnings, each named by
 /// its stage in a `staged` run.
 fn moving_warnings(stages: &[StageSummary], staged: bool) -> Vec<String> {
     (stages.iter())

@@ -458,3 +458,36 @@ fn a_wedge_still_sliding_at_convergence_is_named() {
     assert!(named(&implicit, "implicit").is_empty());
     assert!(named(&deformable, "deformable").is_empty());
 }
+
+/// A solve stopped at its cycle limit names its fastest block, what a user needs to find a wedge
+/// falling into a tunnel: the jointed tunnel in rigid blocks released at once, stopped after 200
+/// cycles (`cycle::drift::fastest_at_limit`), and solved implicitly in at most 5 iterations a
+/// step, its cuts spent (`implicit::moving::fastest`).
+#[test]
+fn a_solve_at_its_cycle_limit_names_its_fastest_block() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut rigid = Scene::load(&root.join("models/jointed_tunnel.json")).unwrap();
+    rigid.blocks.mode = adit::scene::BlockMode::Rigid;
+    rigid.solve.max_cycles = 200;
+    let mut implicit = Scene::load(&root.join("models/jointed_tunnel.json")).unwrap();
+    implicit.solve.method = adit::scene::SolveMethod::Implicit;
+    implicit.solve.max_iterations = 5;
+    for (sc, name, words) in [
+        (rigid, "explicit", "at the cycle limit block "),
+        (
+            implicit,
+            "implicit",
+            "at the iteration limit (25 iterations) block ",
+        ),
+    ] {
+        let out = std::env::temp_dir().join(format!("adit-test-fastest-at-limit-{name}"));
+        let r = adit::run_scene(&sc, &out, &mut Quiet).unwrap();
+        let _ = std::fs::remove_dir_all(&out);
+        assert_eq!(r.summary.status, "cycle_limit", "{name}");
+        let named: Vec<&String> = (r.summary.warnings.iter())
+            .filter(|w| w.starts_with(words))
+            .collect();
+        assert_eq!(named.len(), 1, "{name}: {:?}", r.summary.warnings);
+        assert!(named[0].contains("moves"), "{}", named[0]);
+    }
+}

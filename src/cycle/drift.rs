@@ -3,7 +3,9 @@
 //! falls freely, carries no unbalanced force, and local damping (which acts on force, not
 //! velocity) leaves it the speed the release gave it, as in UDEC. Its displacement then depends
 //! on when the run stopped, not on the problem. Such a run stays `converged` (its other answers
-//! are equilibrium), and says which block moves (`StageSummary::moving`).
+//! are equilibrium), and says which block moves (`StageSummary::moving`). A solve that stops at
+//! its cycle limit names its fastest block as well (`fastest_at_limit`): a wedge falling into a
+//! tunnel is the usual reason, and nothing else in the summary says where it is.
 
 use crate::model::Model;
 
@@ -20,6 +22,39 @@ pub const DRIFT: f64 = 0.25;
 /// many cycles again, which changes no contact: an in-situ stage, where nothing moves but
 /// rounding (displacements of 1e-6 m), has speeds of the same order relative to them.
 pub const NEGLIGIBLE: f64 = 0.01;
+
+/// The fastest node of `model` when a solve of `cycles` cycles of `dt` s stopped at its cycle
+/// limit, named with its block, speed and displacement, and whether it is still moving by
+/// `DRIFT` (the run's own length again would add that share of the largest displacement: a
+/// block finding no equilibrium) or settling; `None` when nothing moves.
+pub fn fastest_at_limit(model: &Model, cycles: u64, dt: f64) -> Option<String> {
+    let nodes = &model.nodes;
+    let length = |v: &[f64; 2]| v[0].hypot(v[1]);
+    let largest = nodes.disp.iter().map(length).fold(0.0, f64::max);
+    let (node, speed) =
+        (nodes.vel.iter().map(length).enumerate()).max_by(|a, b| a.1.total_cmp(&b.1))?;
+    if !(speed > 0.0 && speed.is_finite()) {
+        return None;
+    }
+    let p = nodes.pos[node];
+    let moving = speed * cycles as f64 * dt >= DRIFT * largest;
+    Some(format!(
+        "at the cycle limit block {} (node {node} at ({:.3}, {:.3}) m) moves fastest, {:.3e} m \
+         per {}, having moved {:.3e} m{}",
+        model.blocks.block_of_node(node as u32),
+        p[0],
+        p[1],
+        speed * dt,
+        if dt == 1.0 { "cycle" } else { "time step" },
+        length(&nodes.disp[node]),
+        if moving {
+            ": it finds no equilibrium (a block sliding or falling: a mechanism), or is still \
+             being released; more cycles (solve.max_cycles) tell which"
+        } else {
+            ", settling"
+        }
+    ))
+}
 
 /// The node of `model` still moving the most after a solve of `cycles` cycles of `dt` s, named
 /// with its block, speed and displacement, when its speed times the solve's duration reaches

@@ -32,7 +32,9 @@
 //!
 //! Mechanisms: a block nothing holds is named before any factorization (`support`); a block that
 //! slides or falls on its joints is named when the iterations run out and its corrections have
-//! not shrunk (`moving`). Neither ends as converged or at a bare iteration limit.
+//! not shrunk (`moving`). Neither ends as converged or at a bare iteration limit; a stage that
+//! ends at its iteration limit all the same names the block whose last correction was the
+//! largest (`moving::fastest`).
 //!
 //! Rigid and simple blocks bring their generalised displacements as unknowns (`bodies`).
 //!
@@ -230,6 +232,9 @@ pub struct Solved {
     /// interpenetration), true otherwise (converged, at the iteration limit, or stopped on a
     /// mechanism or a factorization before the state went wrong).
     pub sound: bool,
+    /// At the iteration limit, the block that moved most in the last iteration, in words
+    /// (`moving::fastest`).
+    pub moving: Option<String>,
 }
 
 /// Solve `model` to static equilibrium as `spec` asks: the ratio below `spec.ratio`, the stage's
@@ -282,6 +287,7 @@ pub fn solve_driven(
             solution,
             cost: Cost::default(),
             sound: true,
+            moving: None,
         };
     }
     // The zones take their laws' trial from the commit (`Cycle::displace`).
@@ -330,6 +336,7 @@ pub fn solve_driven(
     let mut x = vec![0.0; dofs.count];
     // The least unbalanced-force ratio since Anderson mixing last restarted.
     let mut least_ratio = f64::INFINITY;
+    let mut moving = None;
     let mut steps = LoadSteps::new(spec.load_steps, model, cycle, params);
     steps.apply(model);
     let mut committed = Committed::of(model, cycle.detections());
@@ -390,6 +397,7 @@ pub fn solve_driven(
             }
             // A step that does not converge is cut: back to the commit, half the step.
             if !steps.cut() {
+                moving = moving::fastest(model, &movement, iteration);
                 break Status::CycleLimit;
             }
             committed.restore(model);
@@ -411,7 +419,9 @@ pub fn solve_driven(
         llt.solve_in_place(&mut rhs);
         // Blocks still moving are judged on the plain correction K⁻¹R, which the residual of a
         // block the joints cannot hold keeps up; the accelerated one mixes in earlier iterates.
-        if window_start.is_some() {
+        // The step's last is recorded in any case: at the iteration limit it names the block
+        // that moves most (`moving::fastest`).
+        if window_start.is_some() || in_step + 1 == max_iterations {
             dofs.scatter(&rhs, &mut du);
             dofs.bodies.expand(&rhs, &mut dq);
             bodies::node_motion(&model.bodies, &model.nodes, &dq, &mut du);
@@ -472,5 +482,6 @@ pub fn solve_driven(
         solution,
         cost,
         sound,
+        moving,
     }
 }

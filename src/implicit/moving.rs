@@ -107,6 +107,24 @@ impl Movement {
     }
 }
 
+/// The block whose last recorded plain correction was the largest, with that correction (m), at
+/// the iteration limit of a solve that found no steady mover: named as where to look; `None`
+/// before any correction was recorded.
+pub fn fastest(model: &Model, movement: &Movement, iterations: u64) -> Option<String> {
+    let (b, moved) = (0..movement.now.len())
+        .filter(|&b| !model.blocks.is_removed(b))
+        .map(|b| (b, movement.now[b]))
+        .filter(|&(_, d)| d > 0.0)
+        .max_by(|x, y| x.1.total_cmp(&y.1).then(y.0.cmp(&x.0)))?;
+    let [x, y] = model.blocks.node_mean(b, &model.nodes.pos);
+    Some(format!(
+        "at the iteration limit ({iterations} iterations) block {b} near ({x:.3}, {y:.3}) m moves \
+         most, {moved:.3e} m in the last iteration (its plain correction K⁻¹R): slip or flow \
+         converging too slowly, or a block the joints do not hold; solve this stage explicitly \
+         to see it move"
+    ))
+}
+
 /// Whether block `b` has a fixed node (in either component; not a body's node, which its body
 /// holds).
 fn held(model: &Model, b: usize) -> bool {

@@ -337,8 +337,8 @@ pub struct StageSummary {
     /// positive, displacement since the start of the run): with `support_fraction`, the ground
     /// reaction curve.
     pub closure: std::collections::BTreeMap<String, f64>,
-    /// The block still sliding when the stage's explicit solve converged, named with its speed
-    /// (`cycle::drift`); absent when none is.
+    /// The block still sliding when the stage's explicit solve converged, or the fastest when it
+    /// stopped at its cycle limit, named with its speed (`cycle::drift`); absent when none is.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub moving: Option<String>,
 }

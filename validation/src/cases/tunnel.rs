@@ -18,7 +18,8 @@ const REALIZATIONS: u64 = 1000;
 const REALIZATIONS_RUN: u64 = 50;
 
 /// The tunnel's last stage with nothing installed: its mean wall closure (m), whether it reached
-/// equilibrium, and the block that moved most, with its largest node displacement (m).
+/// equilibrium, the block that moved most, with its largest node displacement (m), and what the
+/// run's summary says moves at the stage's end (`StageSummary::moving`).
 struct Unsupported {
     closure: f64,
     converged: bool,
@@ -26,6 +27,7 @@ struct Unsupported {
     /// The block's centroid at the start (its nodes' mean), m.
     at: [f64; 2],
     moved: f64,
+    moving: Option<String>,
 }
 
 impl Unsupported {
@@ -45,6 +47,7 @@ impl Unsupported {
             block,
             at,
             moved,
+            moving: last.and_then(|s| s.moving.clone()),
         }
     }
 
@@ -58,15 +61,16 @@ impl Unsupported {
             )
         } else {
             format!(
-                "With nothing installed the last stage finds no equilibrium: block {} (centroid \
-                 ({:.2}, {:.2}) m) has moved {:.2} m and is still moving when the stage stops at \
-                 its cycle limit, the wall's mean closure then {:.0} mm; installed, the supports \
-                 hold it.",
+                "With nothing installed the last stage stops at its cycle limit: block {} \
+                 (centroid ({:.2}, {:.2}) m at the start) has fallen {:.2} m into the tunnel, the \
+                 wall's mean closure then {:.0} mm; the run's summary says \"{}\". Installed, the \
+                 supports hold it.",
                 self.block,
                 self.at[0],
                 self.at[1],
                 self.moved,
-                1e3 * self.closure
+                1e3 * self.closure,
+                self.moving.as_deref().unwrap_or("nothing moves")
             )
         }
     }
@@ -76,7 +80,10 @@ impl Unsupported {
         if self.converged {
             format!("{:.2} mm with nothing installed", 1e3 * self.closure)
         } else {
-            format!("with nothing installed block {} does not stop", self.block)
+            format!(
+                "with nothing installed block {} falls into the tunnel",
+                self.block
+            )
         }
     }
 }
