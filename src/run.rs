@@ -177,7 +177,7 @@ fn build_solve_write(
     let mut staging = Staging::new(plan);
     let mut seconds = crate::cycle::StageSeconds::default();
     let mut output_seconds = 0.0;
-    let mut last: Option<(Solver, Solution)> = None;
+    let mut last: Option<(Solver, Solution, usize)> = None;
     // A stage asking the implicit path of a model it cannot solve is refused before any solve.
     for i in 0..plan.stages.len() {
         stage_method(plan, i, model)?;
@@ -338,13 +338,18 @@ fn build_solve_write(
             write_atomic(&path, |w| w.write_all(&bytes))?;
         }
         output_seconds += t.elapsed().as_secs_f64();
-        last = Some((solver, solution));
+        last = Some((solver, solution, i));
         if failed || interrupted {
             break;
         }
     }
-    let Some((solver, last_solution)) = last else {
+    let Some((solver, last_solution, last_stage)) = last else {
         anyhow::bail!("stages: the plan has no stage to solve");
+    };
+    // A failed stage's state may not be finite: its reactions are not reported.
+    let reactions = match last_solution.status {
+        Status::Failed(_) => Vec::new(),
+        _ => crate::output::reactions::reactions(scene, plan, model, &solver.cycle, last_stage)?,
     };
     let solution = Solution {
         status: last_solution.status,
@@ -424,6 +429,7 @@ fn build_solve_write(
         },
         methods,
         implicit: implicit_cost,
+        reactions,
         far_field: built.model.far_field.as_ref().map(FarFieldSummary::of),
     };
     writer.write_summary(&summary)?;

@@ -8,6 +8,7 @@ pub mod arrays;
 pub mod atomic;
 pub mod joints_vtu;
 pub mod plots;
+pub mod reactions;
 pub mod recovery;
 pub mod supports_vtu;
 pub mod vtu;
@@ -392,6 +393,10 @@ pub struct Summary {
     /// What the implicit solves cost, summed over the stages (absent when none ran).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub implicit: Option<crate::implicit::Cost>,
+    /// What each fixing boundary condition in force at the end holds (`reactions`); absent when
+    /// none fixes anything or the last stage failed.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub reactions: Vec<reactions::Reaction>,
     /// The far field's interface and what condensing it cost (absent without one).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub far_field: Option<FarFieldSummary>,
