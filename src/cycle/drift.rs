@@ -23,31 +23,68 @@ pub const DRIFT: f64 = 0.25;
 /// rounding (displacements of 1e-6 m), has speeds of the same order relative to them.
 pub const NEGLIGIBLE: f64 = 0.01;
 
+/// The fastest node of a model after a solve: the node, its speed (m/s), what it would move in
+/// as many cycles again (m) and its displacement (m), and the largest displacement of any node
+/// (m).
+struct Fastest {
+    node: usize,
+    speed: f64,
+    more: f64,
+    moved: f64,
+    largest: f64,
+}
+
+impl Fastest {
+    /// Of `model` after `cycles` cycles of `dt` s; `None` without nodes.
+    fn of(model: &Model, cycles: u64, dt: f64) -> Option<Fastest> {
+        let nodes = &model.nodes;
+        let length = |v: &[f64; 2]| v[0].hypot(v[1]);
+        let largest = nodes.disp.iter().map(length).fold(0.0, f64::max);
+        let (node, speed) =
+            (nodes.vel.iter().map(length).enumerate()).max_by(|a, b| a.1.total_cmp(&b.1))?;
+        Some(Fastest {
+            node,
+            speed,
+            more: speed * cycles as f64 * dt,
+            moved: length(&nodes.disp[node]),
+            largest,
+        })
+    }
+
+    /// "block B (node N at (x, y) m)".
+    fn named(&self, model: &Model) -> String {
+        let p = model.nodes.pos[self.node];
+        format!(
+            "block {} (node {} at ({:.3}, {:.3}) m)",
+            model.blocks.block_of_node(self.node as u32),
+            self.node,
+            p[0],
+            p[1]
+        )
+    }
+}
+
+/// "cycle" in a static solve (Δt = 1), else "time step".
+fn per(dt: f64) -> &'static str {
+    if dt == 1.0 { "cycle" } else { "time step" }
+}
+
 /// The fastest node of `model` when a solve of `cycles` cycles of `dt` s stopped at its cycle
 /// limit, named with its block, speed and displacement, and whether it is still moving by
 /// `DRIFT` (the run's own length again would add that share of the largest displacement: a
 /// block finding no equilibrium) or settling; `None` when nothing moves.
 pub fn fastest_at_limit(model: &Model, cycles: u64, dt: f64) -> Option<String> {
-    let nodes = &model.nodes;
-    let length = |v: &[f64; 2]| v[0].hypot(v[1]);
-    let largest = nodes.disp.iter().map(length).fold(0.0, f64::max);
-    let (node, speed) =
-        (nodes.vel.iter().map(length).enumerate()).max_by(|a, b| a.1.total_cmp(&b.1))?;
-    if !(speed > 0.0 && speed.is_finite()) {
+    let f = Fastest::of(model, cycles, dt)?;
+    if !(f.speed > 0.0 && f.speed.is_finite()) {
         return None;
     }
-    let p = nodes.pos[node];
-    let moving = speed * cycles as f64 * dt >= DRIFT * largest;
     Some(format!(
-        "at the cycle limit block {} (node {node} at ({:.3}, {:.3}) m) moves fastest, {:.3e} m \
-         per {}, having moved {:.3e} m{}",
-        model.blocks.block_of_node(node as u32),
-        p[0],
-        p[1],
-        speed * dt,
-        if dt == 1.0 { "cycle" } else { "time step" },
-        length(&nodes.disp[node]),
-        if moving {
+        "at the cycle limit {} moves fastest, {:.3e} m per {}, having moved {:.3e} m{}",
+        f.named(model),
+        f.speed * dt,
+        per(dt),
+        f.moved,
+        if f.more >= DRIFT * f.largest {
             ": it finds no equilibrium (a block sliding or falling: a mechanism), or is still \
              being released; more cycles (solve.max_cycles) tell which"
         } else {
@@ -61,29 +98,19 @@ pub fn fastest_at_limit(model: &Model, cycles: u64, dt: f64) -> Option<String> {
 /// `DRIFT` of the largest displacement and `NEGLIGIBLE` of the contact tolerance; `None`
 /// otherwise.
 pub fn still_moving(model: &Model, cycles: u64, dt: f64) -> Option<String> {
-    let nodes = &model.nodes;
-    let length = |v: &[f64; 2]| v[0].hypot(v[1]);
-    let largest = nodes.disp.iter().map(length).fold(0.0, f64::max);
-    let duration = cycles as f64 * dt;
-    let (node, speed) =
-        (nodes.vel.iter().map(length).enumerate()).max_by(|a, b| a.1.total_cmp(&b.1))?;
-    let more = speed * duration;
-    if !(more >= DRIFT * largest && more >= NEGLIGIBLE * model.contact_tolerance) {
+    let f = Fastest::of(model, cycles, dt)?;
+    if !(f.more >= DRIFT * f.largest && f.more >= NEGLIGIBLE * model.contact_tolerance) {
         return None;
     }
-    let p = nodes.pos[node];
     Some(format!(
-        "block {} (node {node} at ({:.3}, {:.3}) m) still moves {:.3e} m per {} at convergence, \
-         having moved {:.3e} m: a block sliding at its joints' strength or falling freely \
-         carries no unbalanced force for the ratio to see, and local damping leaves it its \
-         speed, so its displacement depends on when the run stopped; release the load slowly \
-         (solve.ramp) or solve implicitly (solve.method; a static solve leaves the block where \
-         it finds equilibrium, or names it)",
-        model.blocks.block_of_node(node as u32),
-        p[0],
-        p[1],
-        speed * dt,
-        if dt == 1.0 { "cycle" } else { "time step" },
-        length(&nodes.disp[node]),
+        "{} still moves {:.3e} m per {} at convergence, having moved {:.3e} m: a block sliding at \
+         its joints' strength or falling freely carries no unbalanced force for the ratio to \
+         see, and local damping leaves it its speed, so its displacement depends on when the \
+         run stopped; release the load slowly (solve.ramp) or solve implicitly (solve.method; a \
+         static solve leaves the block where it finds equilibrium, or names it)",
+        f.named(model),
+        f.speed * dt,
+        per(dt),
+        f.moved,
     ))
 }
