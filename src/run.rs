@@ -441,8 +441,8 @@ fn build_solve_write(
     })
 }
 
-/// The stages' blocks still moving at convergence or at a cycle limit (`cycle::drift`) as warnings, each named by
-/// its stage in a `staged` run.
+/// The stages' blocks still moving at convergence or at a cycle limit (`cycle::drift`) as
+/// warnings, each named by its stage in a `staged` run.
 fn moving_warnings(stages: &[StageSummary], staged: bool) -> Vec<String> {
     (stages.iter())
         .filter_map(|s| {

@@ -354,7 +354,9 @@ pub fn cut_blocks_filled(
         if !matches!(kind, EdgeKind::Joint(_)) || !along_wall(a, b) {
             return true;
         }
-        onto_walls.note(&segs[source[&(u, v)] as usize], a, b, tol);
+        if let Some(&i) = source.get(&(u, v)) {
+            onto_walls.note(&segs[i as usize], a, b, tol);
+        }
         false
     });
 

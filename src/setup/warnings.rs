@@ -1,6 +1,6 @@
 //! What setting up a scene found worth saying: sliver and thin blocks, repairs, refinement that
-//! did not reach its angle, merged vertices, joints merged into walls, absorbed joints; and the one mesh fault that is an
-//! error, a zone sharper than the scene accepts.
+//! did not reach its angle, merged vertices, joints merged into walls, absorbed joints; and the
+//! one mesh fault that is an error, a zone sharper than the scene accepts.
 
 use super::geometry::Meshed;
 use crate::scene::{BlockMode, Scene};
