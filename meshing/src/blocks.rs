@@ -941,5 +941,39 @@ mod tests {
                 proptest::prop_assert!(k.outer.self_intersection().is_none());
             }
         }
+
+        /// A set nearly along the bottom side, one of its joints within a few tolerances of it,
+        /// crossed by a second set, around a tunnel or not, cut at a tolerance of 0.2 m: the
+        /// blocks tile the domain, and what is reported merged into a wall is of a joint that
+        /// exists, no longer than its traces, and moved by more than a thousandth of the
+        /// tolerance and at most the tolerance.
+        #[test]
+        fn joints_merged_into_walls_are_reported_within_the_tolerance(
+            dip1 in -3.0f64..3.0, off in -0.6f64..0.6,
+            dip2 in -90.0f64..90.0, sp2 in 0.9f64..4.0,
+            ox in -1.0f64..1.0, hole in proptest::bool::ANY,
+        ) {
+            let tol = 0.2;
+            let outer = Polygon::new(vec![[-10.0, -8.0], [10.0, -8.0], [10.0, 8.0], [-10.0, 8.0]]);
+            let holes = if hole {
+                vec![Hole { name: "t".into(), polygon: Polygon::circle([ox, 0.0], 2.0, 48) }]
+            } else {
+                vec![]
+            };
+            let d = Domain::new(outer, (0..4).map(|i| format!("e{i}")).collect(), holes).unwrap();
+            let (lo, hi) = ([-10.0, -8.0], [10.0, 8.0]);
+            let mut joints = set(dip1, 3.0, [0.0, -8.0 + off]).segments(lo, hi, EdgeKind::Joint(0));
+            joints.extend(set(dip2, sp2, [ox, 0.3]).segments(lo, hi, EdgeKind::Joint(1)));
+            let b = cut_blocks(&d, &joints, tol).unwrap();
+            let total: f64 = b.blocks.iter().map(Block::area).sum();
+            proptest::prop_assert!((total - d.area()).abs() <= 1e-9 * d.area(), "{} vs {}", total, d.area());
+            for o in &b.onto_walls {
+                let traces: f64 = (joints.iter().filter(|s| s.kind == o.kind))
+                    .map(|s| distance(s.a, s.b))
+                    .sum();
+                proptest::prop_assert!(o.length > 0.0 && o.length <= traces, "{:?}", o);
+                proptest::prop_assert!(o.offset > 1e-3 * tol && o.offset <= tol * (1.0 + 1e-9), "{:?}", o);
+            }
+        }
     }
 }
