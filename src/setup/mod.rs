@@ -162,10 +162,20 @@ const IN_SITU_BALANCE: f64 = 1e-2;
 
 /// A warning when the in-situ stress does not balance the region rock's weight (density `rho`,
 /// kg/m³) under the scene's gravity: dσyy/dy + ρ g_y = 0 (equilibrium in y, the in-situ stress
-/// varying with y only), within `IN_SITU_BALANCE`. A gradient of the wrong sign, or gravity
-/// without a gradient, leaves the first solve to move the whole model under the difference.
+/// varying with y only), within `IN_SITU_BALANCE`. A gradient of the wrong sign, or a uniform
+/// stress under gravity, leaves the first solve to move the whole model under the difference. A
+/// model that starts unstressed is left alone: gravity switched on to build the stress (UDEC's
+/// and FLAC's usual start) is meant to move it.
 fn unbalanced_in_situ(scene: &Scene, rho: f64) -> Option<String> {
-    let (gradient, g) = (scene.in_situ.gradient.syy, scene.gravity[1]);
+    let s = &scene.in_situ;
+    let stressed = [s.sxx, s.syy, s.sxy, s.szz.unwrap_or(0.0)]
+        .into_iter()
+        .chain([s.gradient.sxx, s.gradient.syy, s.gradient.szz])
+        .any(|v| v != 0.0);
+    if !stressed {
+        return None;
+    }
+    let (gradient, g) = (s.gradient.syy, scene.gravity[1]);
     let balancing = -rho * g;
     let scale = gradient.abs().max(balancing.abs());
     ((gradient - balancing).abs() > IN_SITU_BALANCE * scale).then(|| {

@@ -165,18 +165,20 @@ fn an_unvalidated_scene_is_refused_by_field_not_by_panic() {
     assert!(msg.starts_with("materials.rock: "), "{msg}");
 }
 
-/// Gravity against the in-situ gradient: balanced (ρ g, and within 1 %), no warning; of the wrong
-/// sign, or gravity with no gradient, a warning naming `in_situ.gradient.syy`.
+/// Gravity against the in-situ stress: its gradient balanced (ρ g, and within 1 %), no warning;
+/// of the wrong sign, or a uniform stress under gravity, a warning naming
+/// `in_situ.gradient.syy`; an unstressed start (gravity building the stress), none.
 #[test]
 fn an_in_situ_stress_that_does_not_balance_gravity_is_named() {
-    let warned = |gradient: f64| {
+    let warned = |syy: f64, gradient: f64| {
         let mut s = scene_with("[[0, 0], [10, 0], [10, 10], [0, 10]]", "");
         s.gravity = [0.0, -9.81];
+        s.in_situ.syy = syy;
         s.in_situ.gradient.syy = gradient;
         let built = setup(&s).unwrap();
         (built.warnings.iter()).any(|w| w.starts_with("in_situ.gradient.syy"))
     };
     let rho_g = 2500.0 * 9.81;
-    assert!(!warned(rho_g) && !warned(1.005 * rho_g));
-    assert!(warned(-rho_g) && warned(0.0) && warned(1.02 * rho_g));
+    assert!(!warned(0.0, rho_g) && !warned(-1e6, 1.005 * rho_g) && !warned(0.0, 0.0));
+    assert!(warned(0.0, -rho_g) && warned(-1e6, 0.0) && warned(-1e6, 1.02 * rho_g));
 }
