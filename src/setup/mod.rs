@@ -155,38 +155,6 @@ pub fn add_zone_weight(nodes: &mut Nodes, zones: &Zones, laws: &[Box<dyn ZoneLaw
     }
 }
 
-/// Largest relative difference between the in-situ stress's vertical gradient dσyy/dy and the
-/// −ρ g_y that balances gravity before `unbalanced_in_situ` warns (the bundled tunnel's 26 490
-/// Pa/m against 2 700 × 9.81 = 26 487 is 1.1e-4).
-const IN_SITU_BALANCE: f64 = 1e-2;
-
-/// A warning when the in-situ stress does not balance the region rock's weight (density `rho`,
-/// kg/m³) under the scene's gravity: dσyy/dy + ρ g_y = 0 (equilibrium in y, the in-situ stress
-/// varying with y only), within `IN_SITU_BALANCE`. A gradient of the wrong sign, or a uniform
-/// stress under gravity, leaves the first solve to move the whole model under the difference. A
-/// model that starts unstressed is left alone: gravity switched on to build the stress (UDEC's
-/// and FLAC's usual start) is meant to move it.
-fn unbalanced_in_situ(scene: &Scene, rho: f64) -> Option<String> {
-    let s = &scene.in_situ;
-    let stressed = [s.sxx, s.syy, s.sxy, s.szz.unwrap_or(0.0)]
-        .into_iter()
-        .chain([s.gradient.sxx, s.gradient.syy, s.gradient.szz])
-        .any(|v| v != 0.0);
-    if !stressed {
-        return None;
-    }
-    let (gradient, g) = (s.gradient.syy, scene.gravity[1]);
-    let balancing = -rho * g;
-    let scale = gradient.abs().max(balancing.abs());
-    ((gradient - balancing).abs() > IN_SITU_BALANCE * scale).then(|| {
-        format!(
-            "in_situ.gradient.syy = {gradient} Pa/m does not balance the region rock's weight \
-             under gravity: equilibrium needs −ρ g_y = {balancing:.1} Pa/m (ρ = {rho} kg/m³, \
-             g_y = {g} m/s²); the first solve moves the model under the difference"
-        )
-    })
-}
-
 /// Build the model of a validated scene.
 pub fn setup(scene: &Scene) -> anyhow::Result<Setup> {
     setup_meshed(scene, mesh(scene)?)
@@ -301,7 +269,7 @@ pub fn setup_meshed(scene: &Scene, meshed: Meshed) -> anyhow::Result<Setup> {
 
     let mut warnings = warnings(scene, &meshed)?;
     let region_density = zone_laws.laws[zone_laws.region.0 as usize].density();
-    warnings.extend(unbalanced_in_situ(scene, region_density));
+    warnings.extend(warnings::unbalanced_in_situ(scene, region_density));
 
     let size = boundary.domain.outer.size();
     let gather = Gather::new(nodes.len(), &zones.nodes);

@@ -1,6 +1,7 @@
 //! What setting up a scene found worth saying: sliver and thin blocks, repairs, refinement that
-//! did not reach its angle, merged vertices, joints merged into walls, absorbed joints; and the
-//! one mesh fault that is an error, a zone sharper than the scene accepts.
+//! did not reach its angle, merged vertices, joints merged into walls, absorbed joints, an in-situ
+//! stress that does not balance gravity; and the one mesh fault that is an error, a zone sharper
+//! than the scene accepts.
 
 use super::geometry::Meshed;
 use crate::scene::{BlockMode, Scene};
@@ -117,6 +118,38 @@ pub(super) fn warnings(scene: &Scene, meshed: &Meshed) -> anyhow::Result<Vec<Str
         ));
     }
     Ok(warnings)
+}
+
+/// Largest relative difference between the in-situ stress's vertical gradient dσyy/dy and the
+/// −ρ g_y that balances gravity before `unbalanced_in_situ` warns (the bundled tunnel's 26 490
+/// Pa/m against 2 700 × 9.81 = 26 487 is 1.1e-4).
+const IN_SITU_BALANCE: f64 = 1e-2;
+
+/// A warning when the in-situ stress does not balance the region rock's weight (density `rho`,
+/// kg/m³) under the scene's gravity: dσyy/dy + ρ g_y = 0 (equilibrium in y, the in-situ stress
+/// varying with y only), within `IN_SITU_BALANCE`. A gradient of the wrong sign, or a uniform
+/// stress under gravity, leaves the first solve to move the whole model under the difference. A
+/// model that starts unstressed is left alone: gravity switched on to build the stress (UDEC's
+/// and FLAC's usual start) is meant to move it.
+pub(super) fn unbalanced_in_situ(scene: &Scene, rho: f64) -> Option<String> {
+    let s = &scene.in_situ;
+    let stressed = [s.sxx, s.syy, s.sxy, s.szz.unwrap_or(0.0)]
+        .into_iter()
+        .chain([s.gradient.sxx, s.gradient.syy, s.gradient.szz])
+        .any(|v| v != 0.0);
+    if !stressed {
+        return None;
+    }
+    let (gradient, g) = (s.gradient.syy, scene.gravity[1]);
+    let balancing = -rho * g;
+    let scale = gradient.abs().max(balancing.abs());
+    ((gradient - balancing).abs() > IN_SITU_BALANCE * scale).then(|| {
+        format!(
+            "in_situ.gradient.syy = {gradient} Pa/m does not balance the region rock's weight \
+             under gravity: equilibrium needs −ρ g_y = {balancing:.1} Pa/m (ρ = {rho} kg/m³, \
+             g_y = {g} m/s²); the first solve moves the model under the difference"
+        )
+    })
 }
 
 #[cfg(test)]
