@@ -170,13 +170,6 @@ const AGAINST: f64 = 0.9;
 /// Two edges meeting at a corner are one face, not two, when their normals are within about 14°.
 const SAME_FACE: f64 = 0.97;
 
-/// A node meets the two edges of another block's corner each with a contact of its own when they
-/// turn by more than about half a degree (`corner_partner`): at a kink of a joint (where the cutter
-/// merged a vertex) or a vertex of a filled excavation's wall (7.5° on a 48-gon), one contact
-/// carried both its faces' stress along one normal, a node at rest loaded by the stress times the
-/// turn (5.5e4 N/m at 1 MPa across a 4.9° kink).
-const KINK: f64 = 0.99996;
-
 /// One detected contact: node, edge, block B, ξ, length, material, corner, joint state.
 type Record = (u32, u32, u32, f64, f64, u32, bool, JointState);
 
@@ -229,63 +222,35 @@ fn node_to_edge(
             Some(g) => (g.near(node.centre), 0..0),
             None => (&[][..], d.blocks.edge_range(b)),
         };
-        // And for each of the node's two faces, the best edge that face lies against.
-        let mut against: [Option<Candidate>; 2] = [None, None];
         for eb in listed.iter().map(|&e| e as usize).chain(all) {
             let Some(mut c) = facing_edge(d, b, &node, eb as u32, &mut depth) else {
                 continue;
             };
             c.held = held(n, eb as u32);
-            if node.owned == 2 {
-                for (o, slot) in against.iter_mut().enumerate() {
-                    if dot(node.own[o], c.found.touch.normal) < -AGAINST
-                        && slot.as_ref().is_none_or(|s| c.better_than(s))
-                    {
-                        *slot = Some(c);
-                    }
-                }
-            }
             if best.as_ref().is_none_or(|best| c.better_than(best)) {
                 best = Some(c);
             }
         }
         match best.map(|c| c.found) {
-            Some(f) => {
-                match corner_partner(d, b, &node, &f, other_face(&node, &f, &against), &mut depth) {
-                    Some(g) => found.extend([
-                        Found {
-                            partner: g.edge,
-                            ..f
-                        },
-                        Found {
-                            partner: f.edge,
-                            second: true,
-                            ..g
-                        },
-                    ]),
-                    None => found.extend(sharp_corner(d, &node, &f).unwrap_or(Some(f))),
-                }
-            }
+            Some(f) => match corner_partner(d, b, &node, &f, &mut depth) {
+                Some(g) => found.extend([
+                    Found {
+                        partner: g.edge,
+                        ..f
+                    },
+                    Found {
+                        partner: f.edge,
+                        second: true,
+                        ..g
+                    },
+                ]),
+                None => found.extend(sharp_corner(d, &node, &f).unwrap_or(Some(f))),
+            },
             None if r > 0.0 => found.extend(corner_to_corner(d, n, node.centre, r, b)),
             None => {}
         }
     }
     found
-}
-
-/// The edge the node's face that does not lie against `f` lies against (`against`: the best
-/// candidate of each face), if it is another edge.
-fn other_face(node: &Node, f: &Found, against: &[Option<Candidate>; 2]) -> Option<u32> {
-    let facing_f = |o: usize| dot(node.own[o], f.touch.normal) < -AGAINST;
-    let o = match (facing_f(0), facing_f(1)) {
-        (true, false) => 1,
-        (false, true) => 0,
-        _ => return None,
-    };
-    against[o]
-        .as_ref()
-        .map(|c| c.found.edge)
-        .filter(|&e| e != f.edge)
 }
 
 /// A node looking for edges: its id, rounding centre (m) and radius (m), the outward normals of
@@ -309,7 +274,6 @@ impl Node {
 }
 
 /// An edge a node may touch.
-#[derive(Clone, Copy)]
 struct Candidate {
     /// Whether the node lies beyond an end of the edge (by less than the tolerance).
     beyond: bool,
@@ -437,46 +401,36 @@ fn runs_on(d: &Detection, n: &Node, xi: f64, pj: [f64; 2], t: [f64; 2], normal: 
 }
 
 /// The second edge of block `b` a node meets at a corner of b, beside the edge of its nearest
-/// contact `f`: the edge sharing f's nearer end, or else `other` (the nearest edge of b that the
-/// node's other face lies against: where joints cross and one block takes two opposite corners
-/// of the crossing, each a node of its own, a wedge's tip lies against an edge of each), if the
-/// node is within the tolerance of it too, the two edges turn by more than [`KINK`], and
-/// each of the node's two faces lies against one of them: its outward normal within about 25° of
-/// opposite ([`AGAINST`]) and the edge running along it, within the tolerance for as far as the
-/// shorter of the two reaches (diagonal blocks at a joint crossing face each other's edges but
-/// run along their neighbours').
+/// contact `f`: the edge sharing f's nearer end, if the node is within the tolerance of it too,
+/// the two edges turn by more than [`SAME_FACE`], and each of the node's two faces lies against
+/// one of them: its outward normal within about 25° of opposite ([`AGAINST`]) and the edge running
+/// along it, within the tolerance for as far as the shorter of the two reaches (diagonal blocks at
+/// a joint crossing face each other's edges but run along their neighbours').
 fn corner_partner(
     d: &Detection,
     b: usize,
     n: &Node,
     f: &Found,
-    other: Option<u32>,
     depth: &mut Option<Option<f64>>,
 ) -> Option<Found> {
-    if n.owned < 2 {
-        return None;
-    }
     let [j, k] = d.blocks.edges[f.edge as usize];
-    let beside = if f.xi < 0.5 {
+    let other = if f.xi < 0.5 {
         d.blocks.node_edges[j as usize][0]
     } else {
         d.blocks.node_edges[k as usize][1]
     };
+    if other == NO_EDGE || n.owned < 2 {
+        return None;
+    }
+    let g = facing_edge(d, b, n, other, depth)?.found;
+    let (m1, m2) = (f.touch.normal, g.touch.normal);
     let own = d.blocks.node_edges[n.id as usize];
     let against = |o: usize, m: [f64; 2], e: u32| {
         dot(n.own[o], m) < -AGAINST && runs_along(d, n.id, own[o], e)
     };
-    let mut partner = |e: u32| {
-        if e == NO_EDGE || e == f.edge {
-            return None;
-        }
-        let g = facing_edge(d, b, n, e, depth)?.found;
-        let (m1, m2) = (f.touch.normal, g.touch.normal);
-        let each = (against(0, m1, f.edge) && against(1, m2, g.edge))
-            || (against(1, m1, f.edge) && against(0, m2, g.edge));
-        (dot(m1, m2) < KINK && each).then_some(g)
-    };
-    partner(beside).or_else(|| other.filter(|&e| e != beside).and_then(partner))
+    let each = (against(0, m1, f.edge) && against(1, m2, g.edge))
+        || (against(1, m1, f.edge) && against(0, m2, g.edge));
+    (dot(m1, m2) < SAME_FACE && each).then_some(g)
 }
 
 /// A sharp node at a convex corner of the block of its contact `f` (the end of f's edge it is
@@ -585,29 +539,14 @@ fn corner_to_corner(d: &Detection, n: u32, c: [f64; 2], r: f64, b: usize) -> Opt
 }
 
 /// Length of joint a contact at `node` against `edge` of block `b` stands for: half of each
-/// boundary edge at the node that runs along b, each edge's half shared with the contact of b's
-/// node at this one when there is one (`shared_piece`; together the two sides' contacts cover the
-/// joint once). An edge runs along b when the middle of its piece lies within the tolerance of
-/// block b's boundary (the contact edge and its two neighbours are tried first, then all of b's
-/// edges, which a long edge against a finely zoned block needs). A corner contact, whose edges
-/// both leave the other block (diagonal blocks at a joint crossing, a corner against a face),
-/// takes a quarter of its shorter edge, halved likewise. Of a node with two contacts at a corner of
-/// b (`partner` the other contact's edge), each takes only the node's edge that lies more squarely
-/// against its own. Returns the length, m, and whether it is a face contact.
-///
-/// Between two zoned blocks the piece of an edge is the edge up to the nearest node of b on it
-/// (UDEC's sharing of a joint among its contacts: the joint divided at the nodes of both its
-/// sides, each piece half to the contact at either end of it). This is the trapezoidal rule over
-/// the nodes of both sides, which integrates every node's linear shape function exactly: a uniform
-/// stress on the joint loads each node as its zones' stress does, so a model at rest in its
-/// in-situ stress stays at rest when the two blocks' zonings put their nodes in different places
-/// along a joint (the refinement splits a thin block's edges where its neighbour's are whole:
-/// the jointed tunnel's nodes were loaded by up to 1.9e7 N/m more than their zones' stress, and
-/// `models/tunnel.json` settled 1 970 cycles in its in-situ stage). A rigid or simple block keeps
-/// the whole half edge: its corners' contacts carry half of each face's load, which holds a block
-/// sliding over a zoned base steady (with its pieces there, the base's contacts, formed anew as the
-/// block passes their nodes, carried most of it, and the incline's slide missed its closed form by
-/// 2 % instead of 0.03 %).
+/// boundary edge at the node whose midpoint lies within the tolerance of block b's boundary (the
+/// node's edge runs along b; the contact edge and its two neighbours are tried first, then all of
+/// b's edges, which a long edge against a finely zoned block needs), halved again because both sides of a
+/// joint carry contacts (together they cover it once). A corner contact, whose edges both leave
+/// the other block (diagonal blocks at a joint crossing, a corner against a face), takes a quarter
+/// of its shorter edge, halved likewise. Of a node with two contacts at a corner of b (`partner`
+/// the other contact's edge), each takes only the node's edge that lies more squarely against its
+/// own. Returns the length, m, and whether it is a face contact.
 fn contact_length(d: &Detection, node: u32, edge: u32, partner: u32, b: usize) -> (f64, bool) {
     let [j, k] = d.blocks.edges[edge as usize];
     let near = [
@@ -615,7 +554,6 @@ fn contact_length(d: &Detection, node: u32, edge: u32, partner: u32, b: usize) -
         d.blocks.node_edges[j as usize][0],
         d.blocks.node_edges[k as usize][1],
     ];
-    let zoned = d.blocks.is_zoned(b) && d.blocks.is_zoned(d.blocks.block_of_node(node));
     let normals = (partner != NO_EDGE).then(|| (edge_normal(d, edge), edge_normal(d, partner)));
     let mine = |e: u32| {
         normals.is_none_or(|(this, other)| {
@@ -623,83 +561,30 @@ fn contact_length(d: &Detection, node: u32, edge: u32, partner: u32, b: usize) -
             dot(o, this) <= dot(o, other)
         })
     };
-    // A node's edge on the region's boundary lies against a joint of b only at a sliver (a joint
-    // meeting the boundary at an angle under the contact's reach, within the tolerance of b's
-    // face for a few centimetres): the boundary's load is its own, and a contact there as well
-    // loaded the sliver's corner twice. (Fallen on b's own boundary, it may well touch b.)
-    let outer_against_joint = |e: u32| {
-        matches!(d.blocks.edge_kind[e as usize], EdgeKind::Region(_))
-            && !matches!(d.blocks.edge_kind[edge as usize], EdgeKind::Region(_))
-    };
-    let x = d.x[node as usize];
     let (mut shared, mut shortest) = (0.0, f64::INFINITY);
     for &e in d.blocks.node_edges[node as usize]
         .iter()
         .filter(|&&e| e != NO_EDGE)
     {
-        let [p, q] = d.blocks.edges[e as usize];
-        let far = d.x[if p == node { q } else { p } as usize];
-        let len = norm(far[0] - x[0], far[1] - x[1]);
+        let [p, q] = d.blocks.edges[e as usize].map(|n| d.x[n as usize]);
+        let len = norm(q[0] - p[0], q[1] - p[1]);
         shortest = shortest.min(len);
-        if !mine(e) || outer_against_joint(e) {
+        if !mine(e) {
             continue;
         }
-        let (piece, share) = if zoned {
-            shared_piece(d, x, far, near)
-        } else {
-            (len, 0.5)
-        };
-        let s = 0.5 * piece / len;
-        let mid = [x[0] + s * (far[0] - x[0]), x[1] + s * (far[1] - x[1])];
+        let mid = [0.5 * (p[0] + q[0]), 0.5 * (p[1] + q[1])];
         let within = |e: u32| distance_to_edge(d, mid, e) <= d.tolerance;
         let along = near.iter().filter(|&&e| e != NO_EDGE).any(|&e| within(e))
             || d.blocks.edge_range(b).any(|e| within(e as u32));
         if along {
-            shared += 0.5 * piece * share;
+            shared += 0.5 * len;
         }
     }
     if shared > 0.0 {
-        (shared, true)
+        (0.5 * shared, true)
     } else {
         (0.5 * 0.25 * shortest, false)
     }
-}
-
-/// The piece of a node's edge from `x` to `far` (m) a contact on b stands for, and the share of it
-/// the contact takes: the edge up to the nearest of b's nodes on it ahead (`near`: the contact
-/// edge and its neighbours, whose nodes p → j → k → r run along b's boundary), whole (1) unless
-/// one of b's nodes lies at this one (to a billionth of the edge) and b's boundary runs from it along
-/// the edge, whose contact then takes the other half.
-fn shared_piece(d: &Detection, x: [f64; 2], far: [f64; 2], near: [u32; 3]) -> (f64, f64) {
-    let len = norm(far[0] - x[0], far[1] - x[1]);
-    let u = [(far[0] - x[0]) / len, (far[1] - x[1]) / len];
-    let edge = |e: u32| (e != NO_EDGE).then(|| d.blocks.edges[e as usize]);
-    let [j, k] = d.blocks.edges[near[0] as usize];
-    let chain = [
-        edge(near[1]).map(|e| e[0]),
-        Some(j),
-        Some(k),
-        edge(near[2]).map(|e| e[1]),
-    ];
-    let (mut piece, mut ahead, mut at_node) = (len, [false; 4], None);
-    for (i, v) in chain.iter().enumerate() {
-        let Some(v) = *v else { continue };
-        let r = d.x[v as usize];
-        let (dx, dy) = (r[0] - x[0], r[1] - x[1]);
-        let (s, off) = (dx * u[0] + dy * u[1], (dx * u[1] - dy * u[0]).abs());
-        if off > d.tolerance {
-            continue;
-        }
-        if s.abs() <= 1e-9 * len {
-            at_node = Some(i);
-        } else if s > 0.0 {
-            ahead[i] = true;
-            piece = piece.min(s);
-        }
-    }
-    let sharing = at_node
-        .is_some_and(|a| (a > 0 && ahead[a - 1]) || ahead.get(a + 1).copied().unwrap_or(false));
-    (piece, if sharing { 0.5 } else { 1.0 })
 }
 
 /// How deep `p` lies inside block `b`, m (its distance to b's boundary), or `None` if it lies

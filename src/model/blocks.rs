@@ -45,11 +45,6 @@ impl Blocks {
         self.edge_start[b] as usize..self.edge_start[b + 1] as usize
     }
 
-    /// Whether block `b` is zoned (deformable; a rigid or simple block has no zones).
-    pub fn is_zoned(&self, b: usize) -> bool {
-        self.zone_start.get(b + 1) > self.zone_start.get(b)
-    }
-
     /// Whether block `b` has been excavated.
     pub fn is_removed(&self, b: usize) -> bool {
         self.removed.get(b).copied().unwrap_or(false)
