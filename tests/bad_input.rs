@@ -194,8 +194,9 @@ fn check_refuses_what_run_refuses() {
 
 /// A zone sharper than `zoning.accept_angle` that no joint makes (a region with a 2.9° corner) is
 /// refused naming the field and where; one a joint makes is repaired instead: the tunnel's joints
-/// make a 7.15° zone, and asked for 10° the piece of joint beside it is dropped with a warning
-/// naming its set. An accept angle at or above `min_angle` is refused.
+/// make zones of 15° (joint set 1 meets the region's sides at 15°), and asked for 20° the pieces
+/// of joint beside them are dropped with a warning naming their set. An accept angle at or above
+/// `min_angle` is refused.
 #[test]
 fn sharp_zones_are_refused_unless_a_joint_piece_makes_them() {
     let wedge = json!({
@@ -207,7 +208,7 @@ fn sharp_zones_are_refused_unless_a_joint_piece_makes_them() {
     let err = refused(&wedge, "zoning.accept_angle");
     assert!(err.contains("near ("), "{err}");
     let mut s = model("tunnel");
-    s["zoning"]["accept_angle"] = json!(10);
+    s["zoning"]["accept_angle"] = json!(20);
     let scene = adit::Scene::from_json(&s.to_string(), "tunnel").unwrap();
     let built = adit::setup::setup(&scene).unwrap();
     assert!(
@@ -219,7 +220,7 @@ fn sharp_zones_are_refused_unless_a_joint_piece_makes_them() {
         built.warnings
     );
     assert!(
-        built.mesh.min_angle_deg >= 10.0,
+        built.mesh.min_angle_deg >= 20.0,
         "{}",
         built.mesh.min_angle_deg
     );

@@ -462,7 +462,8 @@ fn a_wedge_still_sliding_at_convergence_is_named() {
 /// A solve stopped at its cycle limit names its fastest block, what a user needs to find a wedge
 /// falling into a tunnel: the jointed tunnel in rigid blocks released at once, stopped after 200
 /// cycles (`cycle::drift::fastest_at_limit`), and solved implicitly in at most 5 iterations a
-/// step, its cuts spent (`implicit::moving::fastest`).
+/// step, its cuts spent (`implicit::moving::fastest`; some of its halved steps converge, so the
+/// iterations it ends at are not counted here).
 #[test]
 fn a_solve_at_its_cycle_limit_names_its_fastest_block() {
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
@@ -474,11 +475,7 @@ fn a_solve_at_its_cycle_limit_names_its_fastest_block() {
     implicit.solve.max_iterations = 5;
     for (sc, name, words) in [
         (rigid, "explicit", "at the cycle limit block "),
-        (
-            implicit,
-            "implicit",
-            "at the iteration limit (25 iterations) block ",
-        ),
+        (implicit, "implicit", "at the iteration limit ("),
     ] {
         let out = std::env::temp_dir().join(format!("adit-test-fastest-at-limit-{name}"));
         let r = adit::run_scene(&sc, &out, &mut Quiet).unwrap();
@@ -488,6 +485,120 @@ fn a_solve_at_its_cycle_limit_names_its_fastest_block() {
             .filter(|w| w.starts_with(words))
             .collect();
         assert_eq!(named.len(), 1, "{name}: {:?}", r.summary.warnings);
-        assert!(named[0].contains("moves"), "{}", named[0]);
+        assert!(
+            named[0].contains(" block ") && named[0].contains("moves"),
+            "{}",
+            named[0]
+        );
+    }
+}
+
+/// The unbalanced-force ratio of `scene` as built, before any cycle (`Cycle::monitor` after
+/// `Cycle::balance`).
+fn ratio_at_start(scene: &Scene) -> f64 {
+    let mut built = setup(scene).unwrap();
+    let model = &mut built.model;
+    let mut solver = Solver::new(model, &scene.solve, 0);
+    let params = solver.params;
+    solver.cycle.balance(model, &params, false, None);
+    solver.cycle.monitor(model).unwrap().ratio
+}
+
+mod at_rest {
+    use super::*;
+    use proptest::prelude::*;
+    use proptest::strategy::ValueTree;
+
+    /// A box of elastic rock cut by two joint sets, persistent or not, strong enough to hold any
+    /// stress drawn here, in an in-situ stress its boundary carries.
+    fn jointed_box(
+        half: f64,
+        edge: f64,
+        dips: (f64, f64),
+        spacings: (f64, f64),
+        origin: (f64, f64),
+        traces: Option<(f64, f64)>,
+        stress: (f64, f64, f64),
+    ) -> Scene {
+        let persistence = traces.map_or(String::new(), |(trace, gap)| {
+            format!(r#", "trace": {trace}, "gap": {gap}"#)
+        });
+        let text = format!(
+            r#"{{
+            "name": "at_rest",
+            "materials": {{ "rock": {{ "density": 2500, "young": 20e9, "poisson": 0.25 }} }},
+            "region": {{ "polygon": [[-{half}, -{half}], [{half}, -{half}], [{half}, {half}], [-{half}, {half}]],
+                        "material": "rock" }},
+            "zoning": {{ "edge_at_excavation": {edge}, "edge_far": {far}, "grading": 0.3 }},
+            "joint_materials": {{ "joint": {{ "normal_stiffness": 2e10, "shear_stiffness": 1e10, "friction": 30,
+                                              "cohesion": 50e6, "tensile_strength": 50e6 }} }},
+            "joint_sets": [
+                {{ "dip": {d0}, "spacing": {s0}, "origin": [{ox}, {oy}], "material": "joint"{persistence} }},
+                {{ "dip": {d1}, "spacing": {s1}, "origin": [{oy}, {ox}], "material": "joint"{persistence} }}
+            ],
+            "in_situ": {{ "sxx": {sxx}, "syy": {syy}, "sxy": {sxy} }},
+            "boundary": [{{ "part": "outer", "in_situ_traction": true }}]
+        }}"#,
+            far = 6.0 * edge,
+            d0 = dips.0,
+            d1 = dips.1,
+            s0 = spacings.0,
+            s1 = spacings.1,
+            ox = origin.0,
+            oy = origin.1,
+            sxx = stress.0,
+            syy = stress.1,
+            sxy = stress.2,
+        );
+        Scene::from_json(&text, "at_rest").unwrap()
+    }
+
+    /// A jointed model in its in-situ stress, with the traction of that stress on its boundary,
+    /// starts at rest to round-off, however its joints cut it: the zoning puts the nodes of the two
+    /// blocks beside a joint at the same places (`adit_meshing::spacing`), so each joint node is
+    /// loaded by its contacts as its zones' stress loads it (`contact::detect::contact_length`),
+    /// and a node at a kink meets both of its edges (`KINK`). 64 random boxes (sets at 30° or
+    /// more to each other and to the sides, zones of 0.25–0.6 m, persistent or not, any
+    /// compressive stress): all 64 start at a ratio of 1e-15 or less. Before, none did (up to
+    /// 0.45): nodes where a thin block's zoning split an edge its neighbour kept whole carried up
+    /// to the whole stress of an edge too much or too little (1.9e7 N/m at 29 MPa), a node at a
+    /// 4.9° kink 5.5e4 N/m at 1 MPa. Not checked where blocks meet at a corner sharper than about
+    /// 25° (the cone within which a node's face lies against an edge).
+    #[test]
+    fn jointed_models_in_their_in_situ_stress_start_at_rest() {
+        let mut runner = proptest::test_runner::TestRunner::new_with_rng(
+            ProptestConfig::default(),
+            proptest::test_runner::TestRng::deterministic_rng(
+                proptest::test_runner::RngAlgorithm::ChaCha,
+            ),
+        );
+        let draw = (
+            (8.0f64..14.0, 0.25f64..0.6),
+            (30.0f64..150.0, 30.0f64..150.0),
+            ((1.0f64..3.0, 1.0f64..3.0), (-1.0f64..1.0, -1.0f64..1.0)),
+            (any::<bool>(), (4.0f64..10.0, 1.0f64..3.0)),
+            (-30e6f64..-1e6, -30e6f64..-1e6, -0.9f64..0.9),
+        );
+        let square = |dips: (f64, f64)| {
+            let crossing = (dips.0 - dips.1).rem_euclid(180.0);
+            let to_sides = |dip: f64| (30.0..=60.0).contains(&dip.rem_euclid(90.0));
+            (30.0..=150.0).contains(&crossing) && to_sides(dips.0) && to_sides(dips.1)
+        };
+        let mut ratios = Vec::new();
+        while ratios.len() < 64 {
+            let ((half, edge), dips, (spacings, origin), (persistent, traces), stress) =
+                draw.new_tree(&mut runner).unwrap().current();
+            if !square(dips) {
+                continue;
+            }
+            let traces = (!persistent).then_some(traces);
+            // Shear under √(σxx σyy): both principal stresses compressive.
+            let stress = (stress.0, stress.1, stress.2 * (stress.0 * stress.1).sqrt());
+            let scene = jointed_box(half, edge, dips, spacings, origin, traces, stress);
+            ratios.push(ratio_at_start(&scene));
+        }
+        let at_rest = ratios.iter().filter(|&&r| r < 1e-9).count();
+        let worst = ratios.iter().copied().fold(0.0, f64::max);
+        assert!(at_rest == 64, "{at_rest} of 64 at rest, worst {worst:e}");
     }
 }

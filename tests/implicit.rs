@@ -285,7 +285,7 @@ fn implicit_dynamic_is_refused() {
 
 /// A staged excavation (a tunnel filled with rock glued to its walls, excavated with half the
 /// in-situ traction left, then released): the implicit path gives the explicit path's closures,
-/// one iteration per stage.
+/// one iteration per stage (none in the in-situ stage, which starts at rest).
 #[test]
 fn implicit_stages_give_the_explicit_closures() {
     let explicit = Scene::from_json(common::STAGED_TUNNEL, "staged").unwrap();
@@ -295,7 +295,9 @@ fn implicit_stages_give_the_explicit_closures() {
     let i = run(&implicit, "adit-test-staged-implicit");
     for (a, b) in i.summary.stages.iter().zip(&e.summary.stages) {
         assert_eq!(a.status, "converged", "{}", a.name);
-        assert_eq!(a.cycles, 1, "{}", a.name);
+        // In its in-situ stress the filled tunnel starts at rest: no iteration.
+        let iterations = if a.name == "in-situ" { 0 } else { 1 };
+        assert_eq!(a.cycles, iterations, "{}", a.name);
         for (name, c) in &a.closure {
             assert!(
                 (c / b.closure[name] - 1.0).abs() < 1e-3,
@@ -364,8 +366,9 @@ fn a_later_implicit_stage_is_refused_before_any_solve() {
 
 /// A block sliding on a joint flatter than its friction holds (18.4° against φ = 10°): the
 /// implicit path never converges on it and, when its iterations run out, names the block that
-/// keeps moving instead of ending at the iteration limit. At φ = 30° the same block holds and
-/// the solve converges.
+/// keeps moving instead of ending at the iteration limit (60 of them: by its 68th, Anderson
+/// mixing carries the slider past half the model's size and the runaway stop names a node of
+/// it instead). At φ = 30° the same block holds and the solve converges.
 #[test]
 fn implicit_names_a_sliding_block() {
     let text = r#"{
@@ -379,7 +382,7 @@ fn implicit_names_a_sliding_block() {
         "zoning": { "edge_at_excavation": 0.5, "edge_far": 0.5 },
         "gravity": [0, -9.81],
         "boundary": [ { "part": "bottom", "fix": "xy" } ],
-        "solve": { "method": "implicit", "max_iterations": 120 }
+        "solve": { "method": "implicit", "max_iterations": 60 }
     }"#;
     let r = run(
         &Scene::from_json(text, "slide").unwrap(),
@@ -419,10 +422,10 @@ fn implicit_names_a_sliding_block() {
     );
     let said = &auto.summary.methods[0];
     assert!(
-        said.starts_with("implicit, then explicit (implicit: after 120 iterations 1 block(s)"),
+        said.starts_with("implicit, then explicit (implicit: after 60 iterations 1 block(s)"),
         "{said}"
     );
-    assert_eq!(auto.summary.cycles, 120 + 3000, "{:?}", auto.summary.status);
+    assert_eq!(auto.summary.cycles, 60 + 3000, "{:?}", auto.summary.status);
     assert!(auto.summary.implicit.is_some());
 }
 

@@ -9,6 +9,7 @@ pub mod joints;
 mod pinch;
 mod polygon_index;
 mod segment_grid;
+pub mod spacing;
 pub mod triangulate;
 pub mod union_find;
 pub mod voronoi;
@@ -18,8 +19,10 @@ pub use domain::{Domain, Hole};
 pub use error::MeshError;
 pub use geometry::{Point, Polygon};
 pub use joints::{EdgeKind, JointSet, Segment, SplitMix};
+pub use spacing::BoundarySpacing;
 pub use triangulate::{
-    BoundaryEdge, MeshStats, TriMesh, Zoning, triangulate, triangulate_block, triangulate_outline,
+    BoundaryEdge, MeshStats, TriMesh, Zoning, triangulate, triangulate_block, triangulate_blocks,
+    triangulate_outline, triangulate_spaced,
 };
 
 /// A hash map with a fixed hasher: the same insertions iterate in the same order in every run and

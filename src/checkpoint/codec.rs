@@ -32,7 +32,8 @@ impl<'a> Reader<'a> {
         let n = u64::get(self)?;
         anyhow::ensure!(
             n <= (self.bytes.len() - self.at) as u64,
-            "the checkpoint names {n} items where fewer bytes are left (damaged?)"
+            "the checkpoint ends early (truncated or damaged?): it names {n} items where fewer bytes \
+             are left"
         );
         Ok(n as usize)
     }

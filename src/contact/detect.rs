@@ -170,6 +170,13 @@ const AGAINST: f64 = 0.9;
 /// Two edges meeting at a corner are one face, not two, when their normals are within about 14°.
 const SAME_FACE: f64 = 0.97;
 
+/// A node meets the two edges of another block's corner each with a contact of its own when they
+/// turn by more than about half a degree (`corner_partner`): at a kink of a joint (where the cutter
+/// merged a vertex) or a vertex of a filled excavation's wall (7.5° on a 48-gon), one contact
+/// carried both its faces' stress along one normal, a node at rest loaded by the stress times the
+/// turn (5.5e4 N/m at 1 MPa across a 4.9° kink).
+const KINK: f64 = 0.99996;
+
 /// One detected contact: node, edge, block B, ξ, length, material, corner, joint state.
 type Record = (u32, u32, u32, f64, f64, u32, bool, JointState);
 
@@ -222,35 +229,63 @@ fn node_to_edge(
             Some(g) => (g.near(node.centre), 0..0),
             None => (&[][..], d.blocks.edge_range(b)),
         };
+        // And for each of the node's two faces, the best edge that face lies against.
+        let mut against: [Option<Candidate>; 2] = [None, None];
         for eb in listed.iter().map(|&e| e as usize).chain(all) {
             let Some(mut c) = facing_edge(d, b, &node, eb as u32, &mut depth) else {
                 continue;
             };
             c.held = held(n, eb as u32);
+            if node.owned == 2 {
+                for (o, slot) in against.iter_mut().enumerate() {
+                    if dot(node.own[o], c.found.touch.normal) < -AGAINST
+                        && slot.as_ref().is_none_or(|s| c.better_than(s))
+                    {
+                        *slot = Some(c);
+                    }
+                }
+            }
             if best.as_ref().is_none_or(|best| c.better_than(best)) {
                 best = Some(c);
             }
         }
         match best.map(|c| c.found) {
-            Some(f) => match corner_partner(d, b, &node, &f, &mut depth) {
-                Some(g) => found.extend([
-                    Found {
-                        partner: g.edge,
-                        ..f
-                    },
-                    Found {
-                        partner: f.edge,
-                        second: true,
-                        ..g
-                    },
-                ]),
-                None => found.extend(sharp_corner(d, &node, &f).unwrap_or(Some(f))),
-            },
+            Some(f) => {
+                match corner_partner(d, b, &node, &f, other_face(&node, &f, &against), &mut depth) {
+                    Some(g) => found.extend([
+                        Found {
+                            partner: g.edge,
+                            ..f
+                        },
+                        Found {
+                            partner: f.edge,
+                            second: true,
+                            ..g
+                        },
+                    ]),
+                    None => found.extend(sharp_corner(d, &node, &f).unwrap_or(Some(f))),
+                }
+            }
             None if r > 0.0 => found.extend(corner_to_corner(d, n, node.centre, r, b)),
             None => {}
         }
     }
     found
+}
+
+/// The edge the node's face that does not lie against `f` lies against (`against`: the best
+/// candidate of each face), if it is another edge.
+fn other_face(node: &Node, f: &Found, against: &[Option<Candidate>; 2]) -> Option<u32> {
+    let facing_f = |o: usize| dot(node.own[o], f.touch.normal) < -AGAINST;
+    let o = match (facing_f(0), facing_f(1)) {
+        (true, false) => 1,
+        (false, true) => 0,
+        _ => return None,
+    };
+    against[o]
+        .as_ref()
+        .map(|c| c.found.edge)
+        .filter(|&e| e != f.edge)
 }
 
 /// A node looking for edges: its id, rounding centre (m) and radius (m), the outward normals of
@@ -274,6 +309,7 @@ impl Node {
 }
 
 /// An edge a node may touch.
+#[derive(Clone, Copy)]
 struct Candidate {
     /// Whether the node lies beyond an end of the edge (by less than the tolerance).
     beyond: bool,
@@ -401,36 +437,46 @@ fn runs_on(d: &Detection, n: &Node, xi: f64, pj: [f64; 2], t: [f64; 2], normal: 
 }
 
 /// The second edge of block `b` a node meets at a corner of b, beside the edge of its nearest
-/// contact `f`: the edge sharing f's nearer end, if the node is within the tolerance of it too,
-/// the two edges turn by more than [`SAME_FACE`], and each of the node's two faces lies against
-/// one of them: its outward normal within about 25° of opposite ([`AGAINST`]) and the edge running
-/// along it, within the tolerance for as far as the shorter of the two reaches (diagonal blocks at
-/// a joint crossing face each other's edges but run along their neighbours').
+/// contact `f`: the edge sharing f's nearer end, or else `other` (the nearest edge of b that the
+/// node's other face lies against: where joints cross and one block takes two opposite corners
+/// of the crossing, each a node of its own, a wedge's tip lies against an edge of each), if the
+/// node is within the tolerance of it too, the two edges turn by more than [`KINK`], and
+/// each of the node's two faces lies against one of them: its outward normal within about 25° of
+/// opposite ([`AGAINST`]) and the edge running along it, within the tolerance for as far as the
+/// shorter of the two reaches (diagonal blocks at a joint crossing face each other's edges but
+/// run along their neighbours').
 fn corner_partner(
     d: &Detection,
     b: usize,
     n: &Node,
     f: &Found,
+    other: Option<u32>,
     depth: &mut Option<Option<f64>>,
 ) -> Option<Found> {
+    if n.owned < 2 {
+        return None;
+    }
     let [j, k] = d.blocks.edges[f.edge as usize];
-    let other = if f.xi < 0.5 {
+    let beside = if f.xi < 0.5 {
         d.blocks.node_edges[j as usize][0]
     } else {
         d.blocks.node_edges[k as usize][1]
     };
-    if other == NO_EDGE || n.owned < 2 {
-        return None;
-    }
-    let g = facing_edge(d, b, n, other, depth)?.found;
-    let (m1, m2) = (f.touch.normal, g.touch.normal);
     let own = d.blocks.node_edges[n.id as usize];
     let against = |o: usize, m: [f64; 2], e: u32| {
         dot(n.own[o], m) < -AGAINST && runs_along(d, n.id, own[o], e)
     };
-    let each = (against(0, m1, f.edge) && against(1, m2, g.edge))
-        || (against(1, m1, f.edge) && against(0, m2, g.edge));
-    (dot(m1, m2) < SAME_FACE && each).then_some(g)
+    let mut partner = |e: u32| {
+        if e == NO_EDGE || e == f.edge {
+            return None;
+        }
+        let g = facing_edge(d, b, n, e, depth)?.found;
+        let (m1, m2) = (f.touch.normal, g.touch.normal);
+        let each = (against(0, m1, f.edge) && against(1, m2, g.edge))
+            || (against(1, m1, f.edge) && against(0, m2, g.edge));
+        (dot(m1, m2) < KINK && each).then_some(g)
+    };
+    partner(beside).or_else(|| other.filter(|&e| e != beside).and_then(partner))
 }
 
 /// A sharp node at a convex corner of the block of its contact `f` (the end of f's edge it is
@@ -547,6 +593,9 @@ fn corner_to_corner(d: &Detection, n: u32, c: [f64; 2], r: f64, b: usize) -> Opt
 /// of its shorter edge, halved likewise. Of a node with two contacts at a corner of b (`partner`
 /// the other contact's edge), each takes only the node's edge that lies more squarely against its
 /// own. Returns the length, m, and whether it is a face contact.
+///
+/// The halves load a node as its zones' stress does where the nodes of the two sides face each
+/// other, which the zoning makes so between two zoned blocks (`adit_meshing::spacing`).
 fn contact_length(d: &Detection, node: u32, edge: u32, partner: u32, b: usize) -> (f64, bool) {
     let [j, k] = d.blocks.edges[edge as usize];
     let near = [
@@ -561,6 +610,14 @@ fn contact_length(d: &Detection, node: u32, edge: u32, partner: u32, b: usize) -
             dot(o, this) <= dot(o, other)
         })
     };
+    // A node's edge on the region's boundary lies against a joint of b only at a sliver (a joint
+    // meeting the boundary at an angle under the contact's reach, within the tolerance of b's
+    // face for a few centimetres): the boundary's load is its own, and a contact there as well
+    // loaded the sliver's corner twice. (Fallen on b's own boundary, it may well touch b.)
+    let outer_against_joint = |e: u32| {
+        matches!(d.blocks.edge_kind[e as usize], EdgeKind::Region(_))
+            && !matches!(d.blocks.edge_kind[edge as usize], EdgeKind::Region(_))
+    };
     let (mut shared, mut shortest) = (0.0, f64::INFINITY);
     for &e in d.blocks.node_edges[node as usize]
         .iter()
@@ -569,7 +626,7 @@ fn contact_length(d: &Detection, node: u32, edge: u32, partner: u32, b: usize) -
         let [p, q] = d.blocks.edges[e as usize].map(|n| d.x[n as usize]);
         let len = norm(q[0] - p[0], q[1] - p[1]);
         shortest = shortest.min(len);
-        if !mine(e) {
+        if !mine(e) || outer_against_joint(e) {
             continue;
         }
         let mid = [0.5 * (p[0] + q[0]), 0.5 * (p[1] + q[1])];

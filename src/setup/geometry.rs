@@ -3,10 +3,9 @@
 
 use adit_meshing::{
     Block, Blocking, Domain, EdgeKind, Hole, JointSet, MeshError, MeshStats, Polygon, Segment,
-    TriMesh, Zoning, cut_blocks_filled, geometry::distance, triangulate_block, triangulate_outline,
+    TriMesh, Zoning, cut_blocks_filled, geometry::distance, triangulate_blocks,
     voronoi::voronoi_segments,
 };
-use rayon::prelude::*;
 
 use super::repair::{MAX_REPAIRS, drop_piece, joint_beside};
 use crate::scene::{BlockMode, Scene, Shape};
@@ -371,19 +370,9 @@ fn cut_and_zone(
     let excavations: Vec<Polygon> = domain.holes.iter().map(|h| h.polygon.clone()).collect();
     let mut modes = block_modes(scene, &blocking.blocks);
     let thin = thin_blocks(scene, &blocking.blocks, &zoning, &mut modes);
-    let meshes = blocking
-        .blocks
-        .par_iter()
-        .zip(&modes)
-        .enumerate()
-        .map(|(i, (b, mode))| {
-            match mode {
-                BlockMode::Deformable => triangulate_block(b, &excavations, &zoning),
-                BlockMode::Simple | BlockMode::Rigid => triangulate_outline(b),
-            }
-            .map_err(|e| e.in_block(i))
-        })
-        .collect::<Result<Vec<_>, _>>()?;
+    // Two zoned blocks put their nodes at the same places along the joint between them.
+    let zoned: Vec<bool> = modes.iter().map(|&m| m == BlockMode::Deformable).collect();
+    let meshes = triangulate_blocks(&blocking.blocks, &zoned, &excavations, &zoning)?;
     Ok(Meshed {
         domain,
         blocking,
