@@ -20,12 +20,15 @@
 //! vertex across the block (Ruppert's refinement splits an edge whose diametral circle holds a
 //! vertex; Shewchuk, *Delaunay refinement algorithms for triangular mesh generation*, 2002, §3), so
 //! keeping it whole costs the refinement little there. The floor h_exc / 4 bounds the work where
-//! two edges come closer than that (blocks thinner than h_exc / 2 are not zoned; see the engine's
-//! `thin` blocks). Near each vertex the pieces start from the shortest first piece of any edge
-//! there (`split`). Where a zone the refinement could not mend still encroaches a piece (its
-//! circumcentre, which Ruppert's rule would not insert but split the piece for), the piece is
-//! split for both blocks beside it and they are zoned again (`split_encroached`,
-//! `triangulate::triangulate_blocks`).
+//! two edges come closer than that (a block thinner than h_exc / 2 is warned of, and the scene's
+//! `blocks.thin` can take it out of the zoning). Near each vertex the pieces start from the
+//! shortest first piece of any edge there (`split`). Where a zone the refinement could not mend
+//! still encroaches a piece (its circumcentre, which Ruppert's rule would not insert but split the
+//! piece for), the piece is split for both blocks beside it and they are zoned again
+//! (`split_encroached`, `triangulate::triangulate_blocks`).
+//!
+//! A block that shares no edge with another zoned block (an unjointed model) is zoned as before:
+//! its edges split to h from the end its ring meets first, and refined freely (`split_alone`).
 
 use crate::Map;
 
@@ -47,7 +50,8 @@ pub(crate) fn key(p: Point) -> Key {
 /// mend (two zones of half its angle at best, under a 28° aim below 56°).
 const SHARP_CORNER: f64 = 60.0;
 
-/// Zones at or above this angle, degrees, are left as they are (`split_encroached`).
+/// Zones at or above this angle, degrees, split no piece of edge that two zoned blocks share
+/// (`split_encroached`): the split costs both blocks zones.
 const MENDED: f64 = 20.0;
 
 /// No block (the second owner of an edge only one zoned block has).
@@ -132,9 +136,17 @@ impl BoundarySpacing {
         spacing
     }
 
-    /// The spacing for one block zoned on its own.
-    pub fn of_block(block: &Block, excavations: &[Polygon], zoning: &Zoning) -> BoundarySpacing {
-        BoundarySpacing::new(std::slice::from_ref(block), &[true], excavations, zoning)
+    /// Whether `block` shares an edge with another zoned block: its zoning must keep its edges
+    /// as split here (a block that shares none is refined freely, as Ruppert's refinement splits
+    /// edges).
+    pub fn shares_an_edge(&self, block: &Block) -> bool {
+        constrained_rings(block).any(|(ring, _)| {
+            (0..ring.len()).any(|i| {
+                let (a, b) = ring.edge(i);
+                let (ka, kb) = (key(a), key(b));
+                (self.owners.get(&(ka.min(kb), ka.max(kb)))).is_some_and(|o| o[1] != NONE)
+            })
+        })
     }
 
     /// The zoning the spacing was made for.
@@ -161,6 +173,14 @@ impl BoundarySpacing {
         } else {
             z.h_far
         }
+    }
+
+    /// The split points of the edge a–b of a block that shares no edge with another zoned block,
+    /// in order from a: pieces of the graded size h (`target`), from a. (Split from a, and refined
+    /// freely, such a block is zoned as before the blocks' zonings were made alike: an unjointed
+    /// model's zones did not change.)
+    pub fn split_alone(&self, a: Point, b: Point) -> Vec<Point> {
+        split_segment(a, b, |p| self.target(p))
     }
 
     /// The split points of the edge a–b, in order from a: the same points, in reverse order, as
@@ -190,7 +210,8 @@ impl BoundarySpacing {
 
     /// Split, for the zonings `meshes` of `blocks` (`None` for a block not zoned), each boundary
     /// piece a zone the refinement could not mend encroaches: a zone under the angle its zoning
-    /// aimed at whose circumcentre lies within the piece's diametral circle. Keeping the edges
+    /// aimed at whose circumcentre lies within the piece's diametral circle (on a piece two zoned
+    /// blocks share, whose split both take, only a zone under `MENDED` as well). Keeping the edges
     /// whole, the refinement does not add such a circumcentre (Ruppert's rule would split the
     /// piece instead); here the piece is split at its middle for both blocks beside it, the same
     /// point for each. A zone whose smallest angle is at a corner of the block sharper than
@@ -200,41 +221,80 @@ impl BoundarySpacing {
     /// Returns the blocks to zone again.
     pub fn split_encroached(&mut self, blocks: &[Block], meshes: &[Option<&TriMesh>]) -> Vec<bool> {
         let mut again = vec![false; blocks.len()];
-        let shortest = self.zoning.h_excavation / 8.0;
         for (block, mesh) in blocks.iter().zip(meshes) {
-            let Some(mesh) = mesh else { continue };
+            // A block that shares no edge was refined freely: Ruppert's refinement split its edges.
+            let Some(mesh) = mesh.filter(|_| self.shares_an_edge(block)) else {
+                continue;
+            };
             let ring = RingEdges::of(block);
+            // A piece of edge only this block has is split where a vertex lies within its
+            // diametral circle (the angle facing it over 90°), as Ruppert's refinement splits it.
+            let apex: Map<(u32, u32), u32> = (mesh.triangles.iter())
+                .flat_map(|t| (0..3).map(move |k| ((t[k], t[(k + 1) % 3]), t[(k + 2) % 3])))
+                .collect();
+            for e in &mesh.boundary {
+                let [q, r] = e.nodes.map(|n| mesh.points[n as usize]);
+                let Some(&v) = apex
+                    .get(&(e.nodes[0], e.nodes[1]))
+                    .or_else(|| apex.get(&(e.nodes[1], e.nodes[0])))
+                else {
+                    continue;
+                };
+                let v = mesh.points[v as usize];
+                let facing = (q[0] - v[0]) * (r[0] - v[0]) + (q[1] - v[1]) * (r[1] - v[1]);
+                if facing < 0.0 {
+                    self.split_piece(&ring, q, r, false, &mut again);
+                }
+            }
             for t in &mesh.triangles {
                 let p = t.map(|v| mesh.points[v as usize]);
                 let angle = smallest_angle(p);
-                let mended = MENDED.min(mesh.angle_limit_deg - 0.5);
-                if angle >= mended || ring.corner_at(sharpest(p)) < SHARP_CORNER {
+                let aim = mesh.angle_limit_deg - 0.5;
+                if angle >= aim || ring.corner_at(sharpest(p)) < SHARP_CORNER {
                     continue;
                 }
                 let c = circumcentre(p);
                 for e in &mesh.boundary {
                     let [q, r] = e.nodes.map(|n| mesh.points[n as usize]);
-                    let (len, mid) = (distance(q, r), [0.5 * (q[0] + r[0]), 0.5 * (q[1] + r[1])]);
-                    if len < shortest || distance(c, mid) >= 0.5 * len {
-                        continue;
-                    }
-                    let Some(edge) = ring.under(mid) else {
-                        continue;
-                    };
-                    let points = self.extra.entry(edge).or_default();
-                    if points.iter().any(|&m| key(m) == key(mid)) {
-                        continue;
-                    }
-                    points.push(mid);
-                    for o in self.owners.get(&edge).into_iter().flatten() {
-                        if *o != NONE {
-                            again[*o as usize] = true;
-                        }
+                    let mid = [0.5 * (q[0] + r[0]), 0.5 * (q[1] + r[1])];
+                    if distance(c, mid) < 0.5 * distance(q, r) {
+                        self.split_piece(&ring, q, r, angle < MENDED, &mut again);
                     }
                 }
             }
         }
         again
+    }
+
+    /// Split the piece q–r of a block edge (`ring`) at its middle, if it is no shorter than
+    /// `h_exc / 8` and, when two zoned blocks share it, `shared_too`; mark its blocks in `again`.
+    fn split_piece(
+        &mut self,
+        ring: &RingEdges,
+        q: Point,
+        r: Point,
+        shared_too: bool,
+        again: &mut [bool],
+    ) {
+        let mid = [0.5 * (q[0] + r[0]), 0.5 * (q[1] + r[1])];
+        if distance(q, r) < self.zoning.h_excavation / 8.0 {
+            return;
+        }
+        let Some(edge) = ring.under(mid) else {
+            return;
+        };
+        let owners = self.owners.get(&edge).copied().unwrap_or([NONE; 2]);
+        if owners[1] != NONE && !shared_too {
+            return;
+        }
+        let points = self.extra.entry(edge).or_default();
+        if points.iter().any(|&m| key(m) == key(mid)) {
+            return;
+        }
+        points.push(mid);
+        for o in owners.into_iter().filter(|&o| o != NONE) {
+            again[o as usize] = true;
+        }
     }
 
     /// The spacing at `p` on the edge a–b, m: `max(min(h(p), f(p)), h_exc / 4)`, with f the
@@ -251,7 +311,7 @@ impl BoundarySpacing {
         let mut f = h;
         for &e in self.grid.at(p) {
             let (e, owner) = (&self.edges[e as usize], self.block[e as usize]);
-            if owner == NONE || !owners.contains(&owner) {
+            if !owners.contains(&owner) {
                 continue;
             }
             let (ke, kf) = (key(e.a), key(e.b));
@@ -447,8 +507,14 @@ mod tests {
         let top = s.split([0.0, 10.0], [10.0, 10.0]);
         assert_eq!(top.len(), 4, "{top:?}");
         // Zoned alone, the square splits the joint at h_far too.
-        let alone = BoundarySpacing::of_block(
-            &block(vec![[0.0, 0.0], [10.0, 0.0], [10.0, 10.0], [0.0, 10.0]]),
+        let alone = BoundarySpacing::new(
+            &[block(vec![
+                [0.0, 0.0],
+                [10.0, 0.0],
+                [10.0, 10.0],
+                [0.0, 10.0],
+            ])],
+            &[true],
             &[],
             &zoning(),
         );

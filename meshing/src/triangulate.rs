@@ -91,7 +91,7 @@ impl Zoning {
 }
 
 /// The constraint vertices and edges of a block's rings, each ring edge split by `spacing` (the
-/// same points as the block across the edge).
+/// same points as the block across the edge; `split_alone` if the block `shares` no edge).
 /// A point where rings meet (a hole touching the outer ring, the two faces of a joint piece
 /// ending inside the block, a slit ring a → b → a) is one vertex, and an edge two rings share, or
 /// a slit's two faces, is split once and constrained once: split
@@ -101,6 +101,7 @@ impl Zoning {
 fn ring_constraints(
     block: &Block,
     spacing: &BoundarySpacing,
+    shares: bool,
 ) -> (Vec<Point2<f64>>, Vec<[usize; 2]>) {
     let mut vertices: Vec<Point2<f64>> = Vec::new();
     let mut index: Map<(u64, u64), usize> = Map::default();
@@ -127,8 +128,12 @@ fn ring_constraints(
             }
             let ia = vertex(a, &mut vertices);
             let (from, chain) = splits.entry((ka.min(kb), ka.max(kb))).or_insert_with(|| {
-                let chain = spacing
-                    .split(a, b)
+                let points = if shares {
+                    spacing.split(a, b)
+                } else {
+                    spacing.split_alone(a, b)
+                };
+                let chain = points
                     .into_iter()
                     .map(|m| {
                         vertices.push(Point2::new(m[0], m[1]));
@@ -169,15 +174,12 @@ pub fn triangulate_block(
     excavations: &[Polygon],
     zoning: &Zoning,
 ) -> Result<TriMesh, MeshError> {
-    zoning.check()?;
-    triangulate_spaced(
-        block,
-        &BoundarySpacing::of_block(block, excavations, zoning),
-    )
+    let mut meshes = triangulate_blocks(std::slice::from_ref(block), &[true], excavations, zoning)?;
+    Ok(meshes.remove(0))
 }
 
-/// Rounds of `BoundarySpacing::split_encroached` at most (the zones it mends are few: the jointed
-/// tunnel's first zoning has 20 of 1 651 under 20°).
+/// Rounds of `BoundarySpacing::split_encroached` at most (the zones it mends are few: in the
+/// jointed tunnel of the tests below, 20 of 1 651 zones under 20° before the first round).
 const ENCROACHED_ROUNDS: usize = 4;
 
 /// Zone the blocks of `blocks` that are `zoned` (the others get their outline: rigid or simple
@@ -192,6 +194,7 @@ pub fn triangulate_blocks(
     zoning: &Zoning,
 ) -> Result<Vec<TriMesh>, MeshError> {
     use rayon::prelude::*;
+    zoning.check()?;
     let mut spacing = BoundarySpacing::new(blocks, zoned, excavations, zoning);
     let zone = |spacing: &BoundarySpacing, which: &[bool]| {
         (blocks.par_iter().zip(zoned).zip(which).enumerate())
@@ -227,12 +230,14 @@ pub fn triangulate_blocks(
 }
 
 /// Mesh one block of several, its boundary split by `spacing` (made for all of them, so the
-/// blocks on either side of a joint put their nodes at the same places) and kept whole by the
-/// refinement, which adds vertices only inside the block.
+/// blocks on either side of a joint put their nodes at the same places) and, if it shares an edge
+/// with another zoned block, kept whole by the refinement, which then adds vertices only inside
+/// the block.
 pub fn triangulate_spaced(block: &Block, spacing: &BoundarySpacing) -> Result<TriMesh, MeshError> {
     let (zoning, excavations) = (spacing.zoning(), spacing.excavations());
     zoning.check()?;
-    let (mut vertices, edges) = ring_constraints(block, spacing);
+    let keep = spacing.shares_an_edge(block);
+    let (mut vertices, edges) = ring_constraints(block, spacing, keep);
     let boundary_vertices = vertices.len();
     vertices.extend(
         graded_rings(block, excavations, zoning)
@@ -243,12 +248,12 @@ pub fn triangulate_spaced(block: &Block, spacing: &BoundarySpacing) -> Result<Tr
     let budget = zoning.max_zones.max(16 * boundary_vertices);
     let attempt = |angle: f64| {
         let params = |exclude: bool| {
-            RefinementParameters::<f64>::new()
+            let p = RefinementParameters::<f64>::new()
                 .exclude_outer_faces(exclude)
-                .keep_constraint_edges()
                 .with_angle_limit(AngleLimit::from_deg(angle))
                 .with_max_allowed_area(0.5 * zoning.h_far * zoning.h_far)
-                .with_max_additional_vertices(budget)
+                .with_max_additional_vertices(budget);
+            if keep { p.keep_constraint_edges() } else { p }
         };
         constrained_mesh(
             block,
