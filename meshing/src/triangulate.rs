@@ -244,6 +244,21 @@ pub fn triangulate_spaced(block: &Block, spacing: &BoundarySpacing) -> Result<Tr
             .into_iter()
             .map(|p| Point2::new(p[0], p[1])),
     );
+    // spade splits an edge of the triangulation's convex hull that a vertex encroaches even when
+    // told to keep constraint edges, and a convex block's edges are that hull (a 0.03 m² block of
+    // the jointed terrain got split points 4e-5 m apart, zones of 0°, and a joint node its
+    // neighbour had not): four corners well outside the block make the hull theirs. The faces
+    // between them and the block are outer faces, neither refined nor kept.
+    if keep {
+        let (lo, hi) = block.outer.bounds();
+        let margin = 0.5 * distance(lo, hi);
+        vertices.extend([
+            Point2::new(lo[0] - margin, lo[1] - margin),
+            Point2::new(hi[0] + margin, lo[1] - margin),
+            Point2::new(hi[0] + margin, hi[1] + margin),
+            Point2::new(lo[0] - margin, hi[1] + margin),
+        ]);
+    }
 
     let budget = zoning.max_zones.max(16 * boundary_vertices);
     let attempt = |angle: f64| {
