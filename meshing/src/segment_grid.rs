@@ -82,6 +82,37 @@ impl SegmentGrid {
             .map_or(&[][..], Vec::as_slice)
     }
 
+    /// The cell size, m.
+    pub fn cell(&self) -> f64 {
+        self.cell
+    }
+
+    /// Visit the segments entered in the cells k cells away from `p`'s (the square ring of cells
+    /// at Chebyshev distance k; k = 0 is `p`'s own): every point of those cells is at least
+    /// (k − 1) cells from `p`, so a nearest-segment search may stop at the ring beyond its best
+    /// distance. A segment in several cells is visited once per cell.
+    pub fn ring(&self, p: Point, k: i64, mut visit: impl FnMut(u32)) {
+        let c = |v: f64| (v / self.cell).floor() as i64;
+        let (cx, cy) = (c(p[0]), c(p[1]));
+        let mut cell = |x: i64, y: i64| {
+            for &e in self.cells.get(&(x, y)).into_iter().flatten() {
+                visit(e);
+            }
+        };
+        if k == 0 {
+            cell(cx, cy);
+            return;
+        }
+        for i in -k..=k {
+            cell(cx + i, cy - k);
+            cell(cx + i, cy + k);
+        }
+        for j in (1 - k)..k {
+            cell(cx - k, cy + j);
+            cell(cx + k, cy + j);
+        }
+    }
+
     /// Into `out`, in increasing order and once each, the segments sharing a cell with segment
     /// `i` (itself included): a superset of those with a point within `tol` of both.
     pub fn candidates(&self, i: usize, out: &mut Vec<u32>) {
@@ -111,6 +142,42 @@ mod tests {
         ]
         .into_iter()
         .fold(f64::INFINITY, f64::min)
+    }
+
+    /// The ring search finds the nearest segment: stopping at the first ring of cells beyond the
+    /// best distance so far gives the distance every segment gives, at random points among random
+    /// segments.
+    #[test]
+    fn rings_of_cells_find_the_nearest_segment() {
+        let mut rng = crate::joints::SplitMix(11);
+        let mut u = |a: f64, b: f64| a + (b - a) * (rng.next_u64() as f64 / u64::MAX as f64);
+        let segs: Vec<Segment> = (0..300)
+            .map(|_| {
+                let (x, y, dip, len) = (u(-30.0, 30.0), u(-30.0, 30.0), u(0.0, 3.2), u(0.05, 4.0));
+                Segment {
+                    a: [x, y],
+                    b: [x + len * dip.cos(), y + len * dip.sin()],
+                    kind: EdgeKind::Joint(0),
+                }
+            })
+            .collect();
+        let grid = SegmentGrid::new(&segs, 0.3);
+        for _ in 0..200 {
+            let p = [u(-40.0, 40.0), u(-40.0, 40.0)];
+            let exact = (segs.iter())
+                .map(|s| segment_distance(p, s.a, s.b))
+                .fold(f64::INFINITY, f64::min);
+            let mut found = f64::INFINITY;
+            let mut k = 0;
+            while (k - 1) as f64 * grid.cell() <= found.min(1e3) {
+                grid.ring(p, k, |e| {
+                    let s = &segs[e as usize];
+                    found = found.min(segment_distance(p, s.a, s.b));
+                });
+                k += 1;
+            }
+            assert_eq!(found, exact);
+        }
     }
 
     /// Every pair of segments within 2 `tol` of each other (so some point lies within `tol` of

@@ -66,7 +66,7 @@ pub struct BoundarySpacing {
     edges: Vec<Segment>,
     /// The block of each of `edges`.
     block: Vec<u32>,
-    /// `edges` within h_far of each point.
+    /// `edges` by the cells they pass through.
     grid: SegmentGrid,
     /// The (at most two) zoned blocks that own each undirected edge, by its ends' keys (lower first).
     owners: Map<(Key, Key), [u32; 2]>,
@@ -112,7 +112,8 @@ impl BoundarySpacing {
                 }
             }
         }
-        let grid = SegmentGrid::new(&edges, zoning.h_far);
+        // Cells of at least h_far / 8: a search stops within 9 rings of cells.
+        let grid = SegmentGrid::new(&edges, zoning.h_far / 32.0);
         let mut spacing = BoundarySpacing {
             zoning: *zoning,
             excavations: excavations.to_vec(),
@@ -309,16 +310,21 @@ impl BoundarySpacing {
             .unwrap_or([NONE; 2]);
         let h = self.target(p);
         let mut f = h;
-        for &e in self.grid.at(p) {
-            let (e, owner) = (&self.edges[e as usize], self.block[e as usize]);
-            if !owners.contains(&owner) {
-                continue;
-            }
-            let (ke, kf) = (key(e.a), key(e.b));
-            if ke == ka || ke == kb || kf == ka || kf == kb {
-                continue;
-            }
-            f = f.min(segment_distance(p, e.a, e.b));
+        // Rings of cells outward from p, until they lie farther than the nearest edge found.
+        let mut k = 0;
+        while (k - 1) as f64 * self.grid.cell() <= f {
+            self.grid.ring(p, k, |e| {
+                let (e, owner) = (&self.edges[e as usize], self.block[e as usize]);
+                if !owners.contains(&owner) {
+                    return;
+                }
+                let (ke, kf) = (key(e.a), key(e.b));
+                if ke == ka || ke == kb || kf == ka || kf == kb {
+                    return;
+                }
+                f = f.min(segment_distance(p, e.a, e.b));
+            });
+            k += 1;
         }
         f.max((0.25 * self.zoning.h_excavation).min(h))
     }
