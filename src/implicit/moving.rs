@@ -10,13 +10,13 @@
 //! block's displacement: Anderson mixing carries a sliding block far further than the plain
 //! corrections do (the sliding-block test's slider, on a joint whose two sides' nodes face each
 //! other, past half the model's size, 2 m, within 68 iterations: the monitor's runaway stop comes
-//! first unless the iterations are fewer). A block that moves as a body (every node's correction at least `AS_A_BODY` of its
-//! largest) is named before the blocks it pushes, which deform as it moves and whose corrections
-//! stay as steady; failing that, a block no fixed node holds is named before those held (the
-//! sliding-block test's slider, its joints' trial from the commit, turns as well as slides in its
-//! last correction: its least node correction 0.36 of its largest, while the base it pushes is
-//! held at its fixed nodes). (Slip that converges but very slowly can still look the same: the
-//! message says so.)
+//! first unless the iterations are fewer). A block that moves as a body (every node's correction at
+//! least `AS_A_BODY` of its largest) is named before the blocks it pushes, which deform as it moves
+//! and whose corrections stay as steady; failing that, a block no fixed node holds is named before
+//! those held (the sliding-block test's slider, its joints' trial from the commit, turns as well as
+//! slides in its last correction: its least node correction 0.36 of its largest, while the base it
+//! pushes is held at its fixed nodes). (Slip that converges but very slowly can still look the
+//! same: the message says so.)
 
 use crate::model::{BODY, FIX_X, FIX_Y, Model};
 
@@ -33,8 +33,8 @@ const NOTABLE: f64 = 1e-2;
 
 /// A block moves steadily only while its correction is still this share of the sum of all its
 /// plain corrections since the solve began. A sliding block's correction stays a constant step,
-/// about 1/k of the sum after k iterations; a block of a model
-/// that converges slowly has made nearly all its movement and creeps on by far less
+/// about 1/k of the sum after k iterations; a block of a model that converges slowly has made
+/// nearly all its movement and creeps on by far less
 /// (`models/jointed_tunnel_mixed.json` at its 200th iteration: 7.7e-8 m an iteration against
 /// about a millimetre, 1e-4).
 const STILL_MOVING: f64 = 1e-3;
