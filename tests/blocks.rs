@@ -559,7 +559,7 @@ mod at_rest {
     /// loaded by its contacts as its zones' stress loads it (`contact::detect::contact_length`),
     /// and a node at a kink meets both of its edges (`KINK`). 64 random boxes (sets at 30° or
     /// more to each other and to the sides, zones of 0.25–0.6 m, persistent or not, any
-    /// compressive stress): all 64 start at a ratio of 1e-15 or less. Before, none did (up to
+    /// compressive stress): all 64 start at a ratio of 1.2e-15 at most. Before, none did (up to
     /// 0.45): nodes where a thin block's zoning split an edge its neighbour kept whole carried up
     /// to the whole stress of an edge too much or too little (1.9e7 N/m at 29 MPa), a node at a
     /// 4.9° kink 5.5e4 N/m at 1 MPa. Not checked where blocks meet at a corner sharper than about
