@@ -39,7 +39,6 @@ impl Block {
         }
     }
 
-    /// Net area, m².
     /// Whether every vertex of the block lies inside `polygon` or within `tol` of its boundary
     /// (the rock of a filled excavation).
     pub fn within(&self, polygon: &Polygon, tol: f64) -> bool {
@@ -49,9 +48,34 @@ impl Block {
             .all(|&v| polygon.contains(v) || polygon.boundary_distance(v) <= tol)
     }
 
+    /// Net area, m².
     pub fn area(&self) -> f64 {
         self.outer.signed_area() + self.holes.iter().map(|h| h.signed_area()).sum::<f64>()
     }
+
+    /// Every ring of the block, outer first, with the kinds of its edges.
+    pub fn rings(&self) -> impl Iterator<Item = (&Polygon, &[EdgeKind])> {
+        std::iter::once((&self.outer, &self.outer_kinds[..]))
+            .chain((self.holes.iter().zip(&self.hole_kinds)).map(|(h, k)| (h, &k[..])))
+    }
+}
+
+/// The edges of `rings` (a block's rings with their edge kinds) as segments, ring by ring in order.
+pub(crate) fn ring_segments<'a>(
+    rings: impl Iterator<Item = (&'a Polygon, &'a [EdgeKind])>,
+) -> Vec<Segment> {
+    rings
+        .flat_map(|(ring, kinds)| {
+            (0..ring.len()).map(move |i| {
+                let (a, b) = ring.edge(i);
+                Segment {
+                    a,
+                    b,
+                    kind: kinds[i],
+                }
+            })
+        })
+        .collect()
 }
 
 /// The blocks of a region and what the cutting found.

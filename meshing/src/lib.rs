@@ -22,7 +22,7 @@ pub use joints::{EdgeKind, JointSet, Segment, SplitMix};
 pub use spacing::BoundarySpacing;
 pub use triangulate::{
     BoundaryEdge, MeshStats, TriMesh, Zoning, triangulate, triangulate_block, triangulate_blocks,
-    triangulate_outline, triangulate_spaced,
+    triangulate_outline,
 };
 
 /// A hash map with a fixed hasher: the same insertions iterate in the same order in every run and

@@ -32,7 +32,7 @@
 
 use crate::Map;
 
-use crate::blocks::Block;
+use crate::blocks::{Block, ring_segments};
 use crate::geometry::{Point, Polygon, distance, segment_distance};
 use crate::joints::Segment;
 use crate::segment_grid::SegmentGrid;
@@ -70,6 +70,8 @@ pub struct BoundarySpacing {
     grid: SegmentGrid,
     /// The (at most two) zoned blocks that own each undirected edge, by its ends' keys (lower first).
     owners: Map<(Key, Key), [u32; 2]>,
+    /// Whether each block shares an edge with another zoned block (`shares_an_edge`), by index.
+    shares: Vec<bool>,
     /// The first piece of every edge at each vertex, m (`split`).
     corner: Map<Key, f64>,
     /// Points added on edges where a zoning's refinement wanted to split them
@@ -90,26 +92,25 @@ impl BoundarySpacing {
         let mut block = Vec::new();
         let mut owners: Map<(Key, Key), [u32; 2]> = Map::default();
         for (b, blk) in blocks.iter().enumerate().filter(|&(b, _)| zoned[b]) {
-            for (ring, kinds) in constrained_rings(blk) {
-                for i in 0..ring.len() {
-                    let (a, c) = ring.edge(i);
-                    let (ka, kc) = (key(a), key(c));
-                    if ka == kc {
-                        continue;
-                    }
-                    edges.push(Segment {
-                        a,
-                        b: c,
-                        kind: kinds[i],
-                    });
-                    block.push(b as u32);
-                    let own = owners.entry((ka.min(kc), ka.max(kc))).or_insert([NONE; 2]);
-                    if own[0] == NONE || own[0] == b as u32 {
-                        own[0] = b as u32;
-                    } else {
-                        own[1] = b as u32;
-                    }
+            for edge in ring_segments(constrained_rings(blk)) {
+                let (ka, kc) = (key(edge.a), key(edge.b));
+                if ka == kc {
+                    continue;
                 }
+                edges.push(edge);
+                block.push(b as u32);
+                let own = owners.entry((ka.min(kc), ka.max(kc))).or_insert([NONE; 2]);
+                if own[0] == NONE || own[0] == b as u32 {
+                    own[0] = b as u32;
+                } else {
+                    own[1] = b as u32;
+                }
+            }
+        }
+        let mut shares = vec![false; blocks.len()];
+        for own in owners.values().filter(|o| o[1] != NONE) {
+            for &b in own {
+                shares[b as usize] = true;
             }
         }
         // Cells of at least h_far / 8: a search stops within 9 rings of cells.
@@ -121,6 +122,7 @@ impl BoundarySpacing {
             block,
             grid,
             owners,
+            shares,
             corner: Map::default(),
             extra: Map::default(),
         };
@@ -137,17 +139,11 @@ impl BoundarySpacing {
         spacing
     }
 
-    /// Whether `block` shares an edge with another zoned block: its zoning must keep its edges
+    /// Whether block `b` shares an edge with another zoned block: its zoning must keep its edges
     /// as split here (a block that shares none is refined freely, as Ruppert's refinement splits
     /// edges).
-    pub fn shares_an_edge(&self, block: &Block) -> bool {
-        constrained_rings(block).any(|(ring, _)| {
-            (0..ring.len()).any(|i| {
-                let (a, b) = ring.edge(i);
-                let (ka, kb) = (key(a), key(b));
-                (self.owners.get(&(ka.min(kb), ka.max(kb)))).is_some_and(|o| o[1] != NONE)
-            })
-        })
+    pub fn shares_an_edge(&self, b: usize) -> bool {
+        self.shares[b]
     }
 
     /// The zoning the spacing was made for.
@@ -222,9 +218,9 @@ impl BoundarySpacing {
     /// Returns the blocks to zone again.
     pub fn split_encroached(&mut self, blocks: &[Block], meshes: &[Option<&TriMesh>]) -> Vec<bool> {
         let mut again = vec![false; blocks.len()];
-        for (block, mesh) in blocks.iter().zip(meshes) {
+        for (b, (block, mesh)) in blocks.iter().zip(meshes).enumerate() {
             // A block that shares no edge was refined freely: Ruppert's refinement split its edges.
-            let Some(mesh) = mesh.filter(|_| self.shares_an_edge(block)) else {
+            let Some(mesh) = mesh.filter(|_| self.shares_an_edge(b)) else {
                 continue;
             };
             let ring = RingEdges::of(block);
@@ -341,18 +337,7 @@ struct RingEdges {
 
 impl RingEdges {
     fn of(block: &Block) -> RingEdges {
-        let edges: Vec<Segment> = constrained_rings(block)
-            .flat_map(|(ring, kinds)| {
-                (0..ring.len()).map(move |i| {
-                    let (a, b) = ring.edge(i);
-                    Segment {
-                        a,
-                        b,
-                        kind: kinds[i],
-                    }
-                })
-            })
-            .collect();
+        let edges = ring_segments(constrained_rings(block));
         let tol = 1e-9 * block.outer.size();
         let grid = SegmentGrid::new(&edges, tol);
         let mut corners: Map<Key, f64> = Map::default();
@@ -429,14 +414,9 @@ fn circumcentre(p: [Point; 3]) -> Point {
 pub(crate) fn constrained_rings(
     block: &Block,
 ) -> impl Iterator<Item = (&Polygon, &[crate::joints::EdgeKind])> {
-    std::iter::once((&block.outer, &block.outer_kinds[..])).chain(
-        block
-            .holes
-            .iter()
-            .zip(&block.hole_kinds)
-            .filter(|(h, _)| h.signed_area() != 0.0)
-            .map(|(h, k)| (h, &k[..])),
-    )
+    let mut rings = block.rings();
+    let outer = rings.next();
+    outer.into_iter().chain(rings.filter(|(hole, _)| hole.signed_area() != 0.0))
 }
 
 /// Split segment ab into pieces of the local size `size` (m); returns the interior split points.

@@ -13,12 +13,12 @@ use spade::{
     AngleLimit, ConstrainedDelaunayTriangulation, Point2, RefinementParameters, Triangulation,
 };
 
-use crate::blocks::Block;
+use crate::blocks::{Block, ring_segments};
 use crate::domain::Domain;
 use crate::error::MeshError;
 use crate::geometry::Polygon;
 use crate::geometry::{Point, distance, segment_distance, segments_intersect};
-use crate::joints::{EdgeKind, Segment};
+use crate::joints::EdgeKind;
 use crate::pinch::split_pinches;
 use crate::segment_grid::SegmentGrid;
 use crate::spacing::{BoundarySpacing, Key, constrained_rings, key};
@@ -201,7 +201,7 @@ pub fn triangulate_blocks(
             .map(|(i, ((b, &z), &w))| {
                 let mesh = match (w, z) {
                     (false, _) => return Ok(None),
-                    (true, true) => triangulate_spaced(b, spacing),
+                    (true, true) => triangulate_spaced(b, spacing.shares_an_edge(i), spacing),
                     (true, false) => triangulate_outline(b),
                 };
                 mesh.map(Some).map_err(|e| e.in_block(i))
@@ -231,12 +231,14 @@ pub fn triangulate_blocks(
 
 /// Mesh one block of several, its boundary split by `spacing` (made for all of them, so the
 /// blocks on either side of a joint put their nodes at the same places) and, if it shares an edge
-/// with another zoned block, kept whole by the refinement, which then adds vertices only inside
-/// the block.
-pub fn triangulate_spaced(block: &Block, spacing: &BoundarySpacing) -> Result<TriMesh, MeshError> {
+/// with another zoned block (`keep`), kept whole by the refinement, which then adds vertices only
+/// inside the block.
+fn triangulate_spaced(
+    block: &Block,
+    keep: bool,
+    spacing: &BoundarySpacing,
+) -> Result<TriMesh, MeshError> {
     let (zoning, excavations) = (spacing.zoning(), spacing.excavations());
-    zoning.check()?;
-    let keep = spacing.shares_an_edge(block);
     let (mut vertices, edges) = ring_constraints(block, spacing, keep);
     let boundary_vertices = vertices.len();
     vertices.extend(
@@ -632,19 +634,7 @@ fn label_boundary(
         segment_distance(a, p, q) <= tol && segment_distance(b, p, q) <= tol
     };
     // The block's ring edges in ring order, found through a grid by each boundary edge's middle.
-    let ring_edges: Vec<Segment> = std::iter::once((&block.outer, &block.outer_kinds))
-        .chain(block.holes.iter().zip(&block.hole_kinds))
-        .flat_map(|(ring, kinds)| {
-            (0..ring.len()).map(|i| {
-                let (a, b) = ring.edge(i);
-                Segment {
-                    a,
-                    b,
-                    kind: kinds[i],
-                }
-            })
-        })
-        .collect();
+    let ring_edges = ring_segments(block.rings());
     let grid = SegmentGrid::new(&ring_edges, tol);
     let mut edges: Vec<BoundaryEdge> = Vec::new();
     for &(n, nodes) in count.values() {
@@ -733,6 +723,7 @@ mod tests {
     use super::*;
     use crate::domain::Hole;
     use crate::geometry::Polygon;
+    use crate::joints::Segment;
     use approx::assert_relative_eq;
 
     fn kirsch_domain() -> Domain {
@@ -882,61 +873,47 @@ mod tests {
             .fold(180.0, f64::min)
     }
 
-    /// The blocks of a jointed tunnel, zoned together (`triangulate_blocks`), each cover their
-    /// area with zones no sharper than 20° or 0.9 of the block's sharpest corner, and the two
-    /// blocks beside each joint put their nodes at the same places: every node on a joint, other
-    /// than the blocks' own corners, is a node of exactly two blocks.
-    #[test]
-    fn the_blocks_of_a_jointed_tunnel_zone_alike_along_their_joints() {
-        let d = kirsch_domain();
-        let (lo, hi) = ([-20.0, -20.0], [20.0, 20.0]);
-        let set = |dip: f64, spacing: f64, k: u32| {
-            crate::joints::JointSet {
-                dip_deg: dip,
-                spacing,
-                origin: [0.2, 0.1],
-                trace: None,
-                gap: 0.0,
-                spread_dip_deg: 0.0,
-                spread_spacing: 0.0,
-                seed: 0,
-            }
-            .segments(lo, hi, EdgeKind::Joint(k))
-        };
-        let mut joints = set(40.0, 3.0, 0);
-        joints.extend(set(-50.0, 4.0, 1));
+    /// Zone the blocks `joints` cut `d` into together (`triangulate_blocks`) and check that each
+    /// covers its area with zones no sharper than `share` of 20° or of the block's sharpest corner,
+    /// and
+    /// that the two blocks beside each joint put their nodes at the same places: every node on a
+    /// joint, other than the blocks' own corners, is a node of exactly two blocks, and each joint
+    /// trace is a boundary of the blocks on both of its sides. Returns the count of joint nodes.
+    fn zoned_alike(d: &Domain, joints: &[Segment], share: f64) -> Result<usize, String> {
         // Snapping within 0.3 h keeps joints from cutting slivers off the excavation's segments.
-        let blocking = crate::blocks::cut_blocks(&d, &joints, 0.3 * zoning().h_excavation).unwrap();
-        let excavations = vec![d.holes[0].polygon.clone()];
+        let blocking = crate::blocks::cut_blocks(d, joints, 0.3 * zoning().h_excavation)
+            .map_err(|e| e.to_string())?;
+        let excavations: Vec<Polygon> = d.holes.iter().map(|h| h.polygon.clone()).collect();
         let (mut area, mut joint_len) = (0.0, 0.0);
         let zoned = vec![true; blocking.blocks.len()];
-        let meshes = triangulate_blocks(&blocking.blocks, &zoned, &excavations, &zoning()).unwrap();
-        for (b, mesh) in blocking.blocks.iter().zip(&meshes) {
+        let meshes = triangulate_blocks(&blocking.blocks, &zoned, &excavations, &zoning())
+            .map_err(|e| e.to_string())?;
+        for (i, (b, mesh)) in blocking.blocks.iter().zip(&meshes).enumerate() {
             let s = mesh.stats();
-            assert_relative_eq!(s.area, b.area(), max_relative = 1e-9);
+            if (s.area - b.area()).abs() > 1e-9 * b.area() {
+                return Err(format!("block {i}: zones cover {} m² of {} m²", s.area, b.area()));
+            }
             // Refinement cannot beat a sharp corner of the block itself.
             let corner = smallest_corner_deg(&b.outer);
-            assert!(
-                s.min_angle_deg >= 20f64.min(0.9 * corner),
-                "min angle {} at corner {corner}",
-                s.min_angle_deg
-            );
+            if s.min_angle_deg < share * corner.min(20.0) {
+                return Err(format!(
+                    "block {i}: a zone of {:.2}° where its sharpest corner is {corner:.2}°",
+                    s.min_angle_deg
+                ));
+            }
             area += s.area;
-            joint_len += mesh
-                .boundary
-                .iter()
+            joint_len += (mesh.boundary.iter())
                 .filter(|e| matches!(e.kind, EdgeKind::Joint(_)))
-                .map(|e| {
-                    distance(
-                        mesh.points[e.nodes[0] as usize],
-                        mesh.points[e.nodes[1] as usize],
-                    )
-                })
+                .map(|e| e.nodes.map(|n| mesh.points[n as usize]))
+                .map(|[p, q]| distance(p, q))
                 .sum::<f64>();
         }
-        assert_relative_eq!(area, d.area(), max_relative = 1e-9);
+        if (area - d.area()).abs() > 1e-9 * d.area() {
+            return Err(format!("zones cover {area} m² of {} m²", d.area()));
+        }
         let corners: Set<Key> = (blocking.blocks.iter())
-            .flat_map(|b| b.outer.vertices.iter().map(|&v| key(v)))
+            .flat_map(constrained_rings)
+            .flat_map(|(ring, _)| ring.vertices.iter().map(|&v| key(v)))
             .collect();
         let mut on_joints: Map<Key, usize> = Map::default();
         for mesh in &meshes {
@@ -951,22 +928,74 @@ mod tests {
                 *on_joints.entry(k).or_default() += 1;
             }
         }
-        assert!(on_joints.len() > 100, "{} joint nodes", on_joints.len());
         let unmatched = on_joints.values().filter(|&&n| n != 2).count();
-        assert_eq!(unmatched, 0, "of {} joint nodes", on_joints.len());
-        // Each joint trace is a boundary of the blocks on both of its sides.
-        let traces: f64 = blocking
-            .blocks
-            .iter()
-            .flat_map(|b| {
-                (0..b.outer.len())
-                    .filter(|&i| matches!(b.outer_kinds[i], EdgeKind::Joint(_)))
-                    .map(|i| {
-                        let (p, q) = b.outer.edge(i);
-                        distance(p, q)
-                    })
-            })
+        if unmatched > 0 {
+            return Err(format!("{unmatched} of {} joint nodes unmatched", on_joints.len()));
+        }
+        let traces: f64 = (blocking.blocks.iter())
+            .flat_map(|b| ring_segments(constrained_rings(b)))
+            .filter(|e| matches!(e.kind, EdgeKind::Joint(_)))
+            .map(|e| distance(e.a, e.b))
             .sum();
-        assert_relative_eq!(joint_len, traces, max_relative = 1e-9);
+        if (joint_len - traces).abs() > 1e-9 * traces {
+            return Err(format!("zones' joint edges {joint_len} m, blocks' {traces} m"));
+        }
+        Ok(on_joints.len())
+    }
+
+    /// One joint set of the tunnel's box (`kirsch_domain`).
+    fn set(dip: f64, spacing: f64, origin: Point, trace: Option<f64>, k: u32) -> Vec<Segment> {
+        crate::joints::JointSet {
+            dip_deg: dip,
+            spacing,
+            origin,
+            trace,
+            gap: 2.0,
+            spread_dip_deg: 0.0,
+            spread_spacing: 0.0,
+            seed: 0,
+        }
+        .segments([-20.0, -20.0], [20.0, 20.0], EdgeKind::Joint(k))
+    }
+
+    /// The blocks of a jointed tunnel zone alike along their joints (`zoned_alike`), with zones
+    /// no sharper than 0.9 of 20° or of their block's sharpest corner.
+    #[test]
+    fn the_blocks_of_a_jointed_tunnel_zone_alike_along_their_joints() {
+        let mut joints = set(40.0, 3.0, [0.2, 0.1], None, 0);
+        joints.extend(set(-50.0, 4.0, [0.2, 0.1], None, 1));
+        let nodes = zoned_alike(&kirsch_domain(), &joints, 0.9).unwrap();
+        assert!(nodes > 100, "{nodes} joint nodes");
+    }
+
+    proptest::proptest! {
+        // A fixed seed: the same 64 tunnels on every machine (change it to explore others).
+        #![proptest_config(proptest::prelude::ProptestConfig {
+            cases: 64,
+            rng_seed: proptest::test_runner::RngSeed::Fixed(20261125),
+            failure_persistence: None,
+            ..proptest::prelude::ProptestConfig::default()
+        })]
+        /// So do those of tunnels cut by two sets at any dips, spacings and origins, persistent
+        /// or not, with zones no sharper than a quarter of 20° or of their block's sharpest
+        /// corner. That floor is below what the zoning can do: over 400 draws, 150 had a zone
+        /// under 0.9 of that angle, 6 under 0.5, the worst 0.45; this test's draws, shrunk from
+        /// failures, found 0.35 and 0.30 (5.1° at a 17.3° corner, whose first piece on one edge
+        /// the encroached-piece rounds had halved twice while the other edge's stayed 4× as
+        /// long). Zoned each on their own, as before the blocks were zoned alike, the blocks of
+        /// 100 of the 400 draws gave 76 under 0.9 and a worst of 0.03.
+        #[test]
+        fn any_jointed_tunnel_zones_alike_along_its_joints(
+            dip1 in -90.0f64..90.0, dip2 in -90.0f64..90.0,
+            sp1 in 1.5f64..5.0, sp2 in 1.5f64..5.0,
+            ox in -2.0f64..2.0, oy in -2.0f64..2.0,
+            trace1 in proptest::option::of(3.0f64..15.0),
+            trace2 in proptest::option::of(3.0f64..15.0),
+        ) {
+            let mut joints = set(dip1, sp1, [ox, oy], trace1, 0);
+            joints.extend(set(dip2, sp2, [oy, ox], trace2, 1));
+            let checked = zoned_alike(&kirsch_domain(), &joints, 0.25);
+            proptest::prop_assert!(checked.is_ok(), "{}", checked.unwrap_err());
+        }
     }
 }
