@@ -444,7 +444,7 @@ fn runs_on(d: &Detection, n: &Node, xi: f64, pj: [f64; 2], t: [f64; 2], normal: 
 /// each of the node's two faces lies against one of them: its outward normal within about 25° of
 /// opposite ([`AGAINST`]) and the edge running along it, within the tolerance for as far as the
 /// shorter of the two reaches (diagonal blocks at a joint crossing face each other's edges but
-/// run along their neighbours').
+/// run along their neighbours'), and no third block sharing the face's edge (`Blocks::across`).
 fn corner_partner(
     d: &Detection,
     b: usize,
@@ -463,8 +463,12 @@ fn corner_partner(
         d.blocks.node_edges[k as usize][1]
     };
     let own = d.blocks.node_edges[n.id as usize];
+    // A face whose edge a third block's zoning shares lies against that block, however near b's
+    // edge runs to it: a joint meeting a filled wall at 21° left the fill's wedge between the
+    // rock's face and the other rock's wall edge, which took a contact it does not face.
+    let across_else = |o: usize| d.blocks.across(own[o]).is_some_and(|c| c != b);
     let against = |o: usize, m: [f64; 2], e: u32| {
-        dot(n.own[o], m) < -AGAINST && runs_along(d, n.id, own[o], e)
+        dot(n.own[o], m) < -AGAINST && runs_along(d, n.id, own[o], e) && !across_else(o)
     };
     let mut partner = |e: u32| {
         if e == NO_EDGE || e == f.edge {
@@ -592,7 +596,8 @@ fn corner_to_corner(d: &Detection, n: u32, c: [f64; 2], r: f64, b: usize) -> Opt
 /// the other block (diagonal blocks at a joint crossing, a corner against a face), takes a quarter
 /// of its shorter edge, halved likewise. Of a node with two contacts at a corner of b (`partner`
 /// the other contact's edge), each takes only the node's edge that lies more squarely against its
-/// own. Returns the length, m, and whether it is a face contact.
+/// own. An edge of the node that a third block's zoning shares (`Blocks::across`) lies against
+/// that block and counts for no other. Returns the length, m, and whether it is a face contact.
 ///
 /// The halves load a node as its zones' stress does where the nodes of the two sides face each
 /// other, which the zoning makes so between two zoned blocks (`adit_meshing::spacing`).
@@ -626,7 +631,9 @@ fn contact_length(d: &Detection, node: u32, edge: u32, partner: u32, b: usize) -
         let [p, q] = d.blocks.edges[e as usize].map(|n| d.x[n as usize]);
         let len = norm(q[0] - p[0], q[1] - p[1]);
         shortest = shortest.min(len);
-        if !mine(e) || outer_against_joint(e) {
+        // However near b's edge runs to it, past a thin wedge of the third block.
+        let across_else = d.blocks.across(e).is_some_and(|c| c != b);
+        if !mine(e) || outer_against_joint(e) || across_else {
             continue;
         }
         let mid = [0.5 * (p[0] + q[0]), 0.5 * (p[1] + q[1])];
@@ -863,6 +870,7 @@ mod tests {
             edges,
             edge_kind: vec![kind; 8],
             node_edges,
+            edge_across: vec![],
             round: vec![],
             sharp_round: 0.0,
             removed: vec![],

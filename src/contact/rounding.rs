@@ -121,6 +121,7 @@ mod tests {
             edges: vec![[0, 1], [1, 2], [2, 3], [3, 0]],
             edge_kind: vec![adit_meshing::EdgeKind::Region(0); 4],
             node_edges: vec![[3, 0], [0, 1], [1, 2], [2, 3]],
+            edge_across: vec![],
             round: vec![],
             sharp_round: 0.0,
             removed: vec![],

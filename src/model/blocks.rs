@@ -6,6 +6,9 @@ use adit_meshing::EdgeKind;
 /// Marks "no edge" in `Blocks::node_edges`.
 pub const NO_EDGE: u32 = u32::MAX;
 
+/// Marks "no block" in `Blocks::edge_across`.
+pub const NO_BLOCK: u32 = u32::MAX;
+
 /// Structure-of-arrays block data. Ranges: block b owns nodes `node_start[b]..node_start[b+1]`,
 /// zones `zone_start[b]..zone_start[b+1]` and boundary edges `edge_start[b]..edge_start[b+1]`.
 #[derive(Debug, Clone, Default)]
@@ -19,6 +22,10 @@ pub struct Blocks {
     pub(crate) edge_kind: Vec<EdgeKind>,
     /// For each node, its boundary edges [incoming, outgoing], or `NO_EDGE` for interior nodes.
     pub(crate) node_edges: Vec<[u32; 2]>,
+    /// For each boundary edge, the block whose boundary has the same edge the other way at the
+    /// start (the block across a joint or a filled excavation's wall, where the two zonings put
+    /// their nodes at the same places), or `NO_BLOCK` (empty: none known).
+    pub(crate) edge_across: Vec<u32>,
     /// Corner rounding radius of each node, m (`contact::rounding`; 0 but at the convex corners of
     /// rigid and simple blocks; empty: no rounding).
     pub round: Vec<f64>,
@@ -58,6 +65,12 @@ impl Blocks {
     /// Block owning node `n`.
     pub fn block_of_node(&self, n: u32) -> usize {
         self.node_start.partition_point(|&s| s <= n) - 1
+    }
+
+    /// The block across edge `e` (`edge_across`), if it is still there.
+    pub fn across(&self, e: u32) -> Option<usize> {
+        let b = *self.edge_across.get(e as usize)?;
+        (b != NO_BLOCK && !self.is_removed(b as usize)).then_some(b as usize)
     }
 
     /// The mean of block `b`'s node positions `pos` (m): where a message places the block.

@@ -34,7 +34,7 @@ use crate::contact::detect::{Detection, Touch, detect};
 use crate::joint::{FAILED, JointState};
 use crate::law::ZoneLaw;
 use crate::model::Contacts;
-use crate::model::blocks::{Blocks, NO_EDGE};
+use crate::model::blocks::{Blocks, NO_BLOCK, NO_EDGE};
 use crate::model::{BODY, Gather, MaterialId, Materials, Model, Nodes, Zones, traction};
 use crate::scene::{BlockMode, BoundaryCondition, InSitu, Scene};
 use crate::support::{SupportId, Supports};
@@ -90,6 +90,21 @@ struct Assembled {
     boundary: Vec<BoundaryEdge>,
 }
 
+/// For each boundary edge of `blocks`, the block whose boundary has the same edge the other way,
+/// its ends at the same positions `pos` to the bit (`Blocks::edge_across`), or `NO_BLOCK`.
+fn edges_across(blocks: &Blocks, pos: &[[f64; 2]]) -> Vec<u32> {
+    let bits = |n: u32| pos[n as usize].map(|c| (c + 0.0).to_bits());
+    let by_ends: std::collections::HashMap<_, u32> = (blocks.edges.iter().enumerate())
+        .map(|(e, &[a, b])| ((bits(a), bits(b)), e as u32))
+        .collect();
+    (blocks.edges.iter())
+        .map(|&[a, b]| match by_ends.get(&(bits(b), bits(a))) {
+            Some(&twin) => blocks.block_of_node(blocks.edges[twin as usize][0]) as u32,
+            None => NO_BLOCK,
+        })
+        .collect()
+}
+
 /// Concatenate the block meshes: global nodes, zones, and the block table.
 fn assemble(meshed: &Meshed) -> Assembled {
     let (mut pos, mut tris, mut zone_block) = (Vec::new(), Vec::new(), Vec::new());
@@ -129,6 +144,7 @@ fn assemble(meshed: &Meshed) -> Assembled {
         blocks.node_edges[a as usize][1] = e as u32;
         blocks.node_edges[b as usize][0] = e as u32;
     }
+    blocks.edge_across = edges_across(&blocks, &pos);
     Assembled {
         pos,
         triangles: tris,
