@@ -57,8 +57,9 @@ pub fn run_by(nu: f64, mixed: bool, edge: f64, method: SolveMethod) -> anyhow::R
     let start = Instant::now();
     let mut sc = cylinder(nu, mixed, edge)?;
     sc.solve.method = method;
-    let dir = crate::repository_root().join(format!("target/validation/lame_{nu}_{mixed}"));
+    let dir = crate::run_folder(&format!("lame_{nu}_{mixed}"));
     let r = adit::run_scene(&sc, &dir, &mut Quiet)?;
+    let _ = std::fs::remove_dir_all(&dir);
     anyhow::ensure!(
         r.summary.status == "converged",
         "Lamé cylinder did not converge: {}",

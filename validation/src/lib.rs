@@ -53,6 +53,15 @@ pub fn repository_root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..")
 }
 
+/// A folder of its own under `target/validation/` for one run named `name`: the same case run by
+/// two tests at once (the Lamé cylinder's explicit run, in two tests) wrote into one folder, and
+/// one of them lost a file the other replaced.
+pub fn run_folder(name: &str) -> PathBuf {
+    static RUNS: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
+    let run = RUNS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    repository_root().join(format!("target/validation/{name}_{}_{run}", std::process::id()))
+}
+
 /// The Kirsch scene as shipped in `models/kirsch.json`.
 pub fn shipped_kirsch() -> anyhow::Result<adit::Scene> {
     Ok(adit::Scene::load(

@@ -154,8 +154,9 @@ fn run(
         .chars()
         .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
         .collect();
-    let dir = crate::repository_root().join(format!("target/validation/slivers/{tag}"));
+    let dir = crate::run_folder(&format!("slivers_{tag}"));
     let r = adit::run_scene(sc, &dir, &mut Quiet)?;
+    let _ = std::fs::remove_dir_all(&dir);
     anyhow::ensure!(
         r.summary.status == "converged",
         "{case}: {} ({:?}) after {} cycles",

@@ -239,7 +239,7 @@ fn converged(sc: &Scene, label: &str) -> anyhow::Result<adit::RunResult> {
     let tag: String = (label.chars())
         .map(|c| if c.is_ascii_alphanumeric() { c } else { '-' })
         .collect();
-    let out = std::env::temp_dir().join(format!("adit-validation-shallow-{tag}"));
+    let out = crate::run_folder(&format!("shallow-{tag}"));
     let r = adit::run_scene(sc, &out, &mut adit::solve::Quiet)?;
     let _ = std::fs::remove_dir_all(&out);
     anyhow::ensure!(
