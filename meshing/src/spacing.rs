@@ -416,7 +416,9 @@ pub(crate) fn constrained_rings(
 ) -> impl Iterator<Item = (&Polygon, &[crate::joints::EdgeKind])> {
     let mut rings = block.rings();
     let outer = rings.next();
-    outer.into_iter().chain(rings.filter(|(hole, _)| hole.signed_area() != 0.0))
+    outer
+        .into_iter()
+        .chain(rings.filter(|(hole, _)| hole.signed_area() != 0.0))
 }
 
 /// Split segment ab into pieces of the local size `size` (m); returns the interior split points.

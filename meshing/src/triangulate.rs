@@ -900,7 +900,11 @@ mod tests {
         for (i, (b, mesh)) in blocking.blocks.iter().zip(&meshes).enumerate() {
             let s = mesh.stats();
             if (s.area - b.area()).abs() > 1e-9 * b.area() {
-                return Err(format!("block {i}: zones cover {} m² of {} m²", s.area, b.area()));
+                return Err(format!(
+                    "block {i}: zones cover {} m² of {} m²",
+                    s.area,
+                    b.area()
+                ));
             }
             // Refinement cannot beat a sharp corner of the block itself.
             let corner = smallest_corner_deg(&b.outer);
@@ -918,7 +922,11 @@ mod tests {
                 .sum::<f64>();
         }
         // A filled excavation's rock is zoned too.
-        let rock = if filled { d.outer.signed_area() } else { d.area() };
+        let rock = if filled {
+            d.outer.signed_area()
+        } else {
+            d.area()
+        };
         if (area - rock).abs() > 1e-9 * rock {
             return Err(format!("zones cover {area} m² of {rock} m²"));
         }
@@ -946,7 +954,10 @@ mod tests {
         }
         let unmatched = on_joints.values().filter(|&&n| n != 2).count();
         if unmatched > 0 {
-            return Err(format!("{unmatched} of {} joint nodes unmatched", on_joints.len()));
+            return Err(format!(
+                "{unmatched} of {} joint nodes unmatched",
+                on_joints.len()
+            ));
         }
         let traces: f64 = (blocking.blocks.iter())
             .flat_map(|b| ring_segments(constrained_rings(b)))
@@ -954,7 +965,9 @@ mod tests {
             .map(|e| distance(e.a, e.b))
             .sum();
         if (joint_len - traces).abs() > 1e-9 * traces {
-            return Err(format!("zones' joint edges {joint_len} m, blocks' {traces} m"));
+            return Err(format!(
+                "zones' joint edges {joint_len} m, blocks' {traces} m"
+            ));
         }
         Ok(on_joints.len())
     }

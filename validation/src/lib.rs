@@ -59,7 +59,10 @@ pub fn repository_root() -> PathBuf {
 pub fn run_folder(name: &str) -> PathBuf {
     static RUNS: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
     let run = RUNS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-    repository_root().join(format!("target/validation/{name}_{}_{run}", std::process::id()))
+    repository_root().join(format!(
+        "target/validation/{name}_{}_{run}",
+        std::process::id()
+    ))
 }
 
 /// The Kirsch scene as shipped in `models/kirsch.json`.
