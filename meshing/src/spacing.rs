@@ -39,10 +39,10 @@ use crate::segment_grid::SegmentGrid;
 use crate::triangulate::{TriMesh, Zoning, smallest_angle};
 
 /// A vertex's key: its coordinates' bits (−0.0 taken as +0.0), the same in every block that has it.
-pub(crate) type Key = (u64, u64);
+pub type Key = (u64, u64);
 
 /// The key of point `p`.
-pub(crate) fn key(p: Point) -> Key {
+pub fn key(p: Point) -> Key {
     ((p[0] + 0.0).to_bits(), (p[1] + 0.0).to_bits())
 }
 

@@ -463,12 +463,10 @@ fn corner_partner(
         d.blocks.node_edges[k as usize][1]
     };
     let own = d.blocks.node_edges[n.id as usize];
-    // A face whose edge a third block's zoning shares lies against that block, however near b's
-    // edge runs to it: a joint meeting a filled wall at 21° left the fill's wedge between the
-    // rock's face and the other rock's wall edge, which took a contact it does not face.
-    let across_else = |o: usize| d.blocks.across(own[o]).is_some_and(|c| c != b);
     let against = |o: usize, m: [f64; 2], e: u32| {
-        dot(n.own[o], m) < -AGAINST && runs_along(d, n.id, own[o], e) && !across_else(o)
+        dot(n.own[o], m) < -AGAINST
+            && runs_along(d, n.id, own[o], e)
+            && !against_third(d, own[o], b)
     };
     let mut partner = |e: u32| {
         if e == NO_EDGE || e == f.edge {
@@ -540,6 +538,14 @@ fn sharp_corner(d: &Detection, n: &Node, f: &Found) -> Option<Option<Found>> {
         face: false,
     };
     Some(Some(Found::single(n.id, out, 0.0, touch, true)))
+}
+
+/// Whether a node's own edge `e` lies against a block other than `b`: one whose zoning shares the
+/// edge (`Blocks::across`), however near b's edge runs to it. A joint meeting a filled wall at
+/// 21° left the fill's wedge between the rock's face and the other rock's wall edge, and the
+/// rock's node counted that face in its contact with the other rock.
+fn against_third(d: &Detection, e: u32, b: usize) -> bool {
+    d.blocks.across(e).is_some_and(|c| c != b)
 }
 
 /// Whether node `n`'s boundary edge `own` runs along edge `e` of another block: the point of
@@ -631,9 +637,7 @@ fn contact_length(d: &Detection, node: u32, edge: u32, partner: u32, b: usize) -
         let [p, q] = d.blocks.edges[e as usize].map(|n| d.x[n as usize]);
         let len = norm(q[0] - p[0], q[1] - p[1]);
         shortest = shortest.min(len);
-        // However near b's edge runs to it, past a thin wedge of the third block.
-        let across_else = d.blocks.across(e).is_some_and(|c| c != b);
-        if !mine(e) || outer_against_joint(e) || across_else {
+        if !mine(e) || outer_against_joint(e) || against_third(d, e, b) {
             continue;
         }
         let mid = [0.5 * (p[0] + q[0]), 0.5 * (p[1] + q[1])];

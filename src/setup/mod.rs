@@ -91,9 +91,10 @@ struct Assembled {
 }
 
 /// For each boundary edge of `blocks`, the block whose boundary has the same edge the other way,
-/// its ends at the same positions `pos` to the bit (`Blocks::edge_across`), or `NO_BLOCK`.
+/// its ends at the same positions `pos` to the bit (`adit_meshing::spacing::key`, as the zoning
+/// placed them; `Blocks::edge_across`), or `NO_BLOCK`.
 fn edges_across(blocks: &Blocks, pos: &[[f64; 2]]) -> Vec<u32> {
-    let bits = |n: u32| pos[n as usize].map(|c| (c + 0.0).to_bits());
+    let bits = |n: u32| adit_meshing::spacing::key(pos[n as usize]);
     let by_ends: std::collections::HashMap<_, u32> = (blocks.edges.iter().enumerate())
         .map(|(e, &[a, b])| ((bits(a), bits(b)), e as u32))
         .collect();
