@@ -493,6 +493,37 @@ fn a_solve_at_its_cycle_limit_names_its_fastest_block() {
     }
 }
 
+/// A simple or rigid block cut by a joint that ends inside it zones: the outline's triangulation
+/// joined two of its edges in line, a vertex between them lying 1e-15 m outside their chord, and
+/// the edge it made was refused as lying on no edge of the block (`label_boundary`).
+#[test]
+fn simple_and_rigid_blocks_with_joints_ending_inside_them_zone() {
+    for mode in ["simple", "rigid"] {
+        let h = 11.421718525219417;
+        let text = format!(
+            r#"{{
+            "name": "crack",
+            "materials": {{ "rock": {{ "density": 2500, "young": 20e9, "poisson": 0.25 }} }},
+            "region": {{ "polygon": [[-{h}, -{h}], [{h}, -{h}], [{h}, {h}], [-{h}, {h}]], "material": "rock" }},
+            "zoning": {{ "edge_at_excavation": 0.3373658772032419, "edge_far": 2.0241952632194515, "grading": 0.3 }},
+            "joint_materials": {{ "joint": {{ "normal_stiffness": 2e10, "shear_stiffness": 1e10, "friction": 30 }} }},
+            "joint_sets": [
+                {{ "dip": -44.828877394892366, "spacing": 2.353967549601826, "origin": [-0.9825507044349973, -0.8890500572583877],
+                   "material": "joint", "trace": 6.71069312696455, "gap": 1.0495060419454432 }},
+                {{ "dip": 14.763317481522265, "spacing": 2.1733965436642655, "origin": [-0.8890500572583877, -0.9825507044349973],
+                   "material": "joint", "trace": 6.71069312696455, "gap": 1.0495060419454432 }}
+            ],
+            "in_situ": {{ "sxx": -4e6, "syy": -26e6, "sxy": 9e6 }},
+            "boundary": [{{ "part": "outer", "in_situ_traction": true }}],
+            "blocks": {{ "mode": "{mode}" }}
+        }}"#
+        );
+        let scene = Scene::from_json(&text, "crack").unwrap();
+        let built = setup(&scene).unwrap_or_else(|e| panic!("{mode}: {e}"));
+        assert!(built.model.bodies.len() > 10, "{mode}");
+    }
+}
+
 /// The unbalanced-force ratio of `scene` as built, before any cycle (`Cycle::monitor` after
 /// `Cycle::balance`).
 fn ratio_at_start(scene: &Scene) -> f64 {
@@ -509,9 +540,17 @@ mod at_rest {
     use proptest::prelude::*;
     use proptest::strategy::ValueTree;
 
+    /// How a box's blocks move.
+    #[derive(Debug, Clone, Copy, PartialEq)]
+    enum Mode {
+        Deformable,
+        Simple,
+        Rigid,
+    }
+
     /// A box of elastic rock cut by two joint sets, persistent or not, strong enough to hold any
     /// stress drawn here, in an in-situ stress its boundary carries; with a circular tunnel still
-    /// filled with rock in its first stage (`filled`) or none.
+    /// filled with rock in its first stage (`filled`) or none; its blocks in `mode`.
     #[allow(clippy::too_many_arguments)]
     fn jointed_box(
         half: f64,
@@ -522,7 +561,13 @@ mod at_rest {
         traces: Option<(f64, f64)>,
         stress: (f64, f64, f64),
         filled: bool,
+        mode: Mode,
     ) -> Scene {
+        let blocks = match mode {
+            Mode::Deformable => String::new(),
+            Mode::Simple => r#", "blocks": { "mode": "simple" }"#.to_string(),
+            Mode::Rigid => r#", "blocks": { "mode": "rigid" }"#.to_string(),
+        };
         let staged = if filled {
             r#", "excavations": [{ "name": "t", "circle": { "center": [0.3, -0.2], "radius": 1.5, "segments": 48 } }],
                 "stages": [{ "name": "in-situ" }, { "name": "dig", "excavate": ["t"] }]"#
@@ -546,7 +591,7 @@ mod at_rest {
                 {{ "dip": {d1}, "spacing": {s1}, "origin": [{oy}, {ox}], "material": "joint"{persistence} }}
             ],
             "in_situ": {{ "sxx": {sxx}, "syy": {syy}, "sxy": {sxy} }},
-            "boundary": [{{ "part": "outer", "in_situ_traction": true }}]{staged}
+            "boundary": [{{ "part": "outer", "in_situ_traction": true }}]{staged}{blocks}
         }}"#,
             far = 6.0 * edge,
             d0 = dips.0,
@@ -578,7 +623,14 @@ mod at_rest {
     /// corner under about 25° (a joint meeting the filled wall at 21°, two sets crossing at a
     /// sharp angle), the thin wedge's neighbours' faces lay within the contact's reach of each
     /// other's edges and counted their edges beside the wedge in their contacts with each other
-    /// (3e5–2e6 N/m).
+    /// (3e5–2e6 N/m). The blocks are deformable, simple or rigid (32, 16 and 16 of these 64), the
+    /// simple and rigid ones cut by persistent sets. Before a rounded corner's contact acted where
+    /// the corner is (`contact::detect::acting_at`), none of the 32 simple or rigid boxes did (up
+    /// to 0.061): each contact of a rounded corner was a couple of its normal force and the
+    /// rounding radius. Simple and rigid blocks cut by joints that end inside a block or on
+    /// another joint, and simple blocks beside zoned ones (`blocks.regions`), are not at rest
+    /// yet: there one block's node faces the middle of the other's edge, where the halves of
+    /// `contact::detect::contact_length` do not load the nodes as the stress does.
     #[test]
     fn jointed_models_in_their_in_situ_stress_start_at_rest() {
         let mut runner = proptest::test_runner::TestRunner::new_with_rng(
@@ -593,23 +645,41 @@ mod at_rest {
             ((1.0f64..3.0, 1.0f64..3.0), (-1.0f64..1.0, -1.0f64..1.0)),
             (any::<bool>(), (4.0f64..10.0, 1.0f64..3.0)),
             (-30e6f64..-1e6, -30e6f64..-1e6, -0.9f64..0.9),
+            prop_oneof![
+                Just(Mode::Deformable),
+                Just(Mode::Simple),
+                Just(Mode::Rigid)
+            ],
         );
         let crossing = |dips: (f64, f64)| (dips.0 - dips.1).rem_euclid(180.0);
         let mut ratios = Vec::new();
         while ratios.len() < 64 {
-            let ((half, edge, filled), dips, (spacings, origin), (persistent, traces), stress) =
-                draw.new_tree(&mut runner).unwrap().current();
+            let (
+                (half, edge, filled),
+                dips,
+                (spacings, origin),
+                (persistent, traces),
+                stress,
+                mode,
+            ) = draw.new_tree(&mut runner).unwrap().current();
             if !(8.0..=172.0).contains(&crossing(dips)) {
                 continue;
             }
-            let traces = (!persistent).then_some(traces);
+            // Simple and rigid blocks with persistent sets only: see the doc comment.
+            let traces = (!persistent && mode == Mode::Deformable).then_some(traces);
             // Shear under √(σxx σyy): both principal stresses compressive.
             let stress = (stress.0, stress.1, stress.2 * (stress.0 * stress.1).sqrt());
-            let scene = jointed_box(half, edge, dips, spacings, origin, traces, stress, filled);
-            ratios.push(ratio_at_start(&scene));
+            let scene = jointed_box(
+                half, edge, dips, spacings, origin, traces, stress, filled, mode,
+            );
+            ratios.push((ratio_at_start(&scene), mode));
         }
-        let at_rest = ratios.iter().filter(|&&r| r < 1e-9).count();
-        let worst = ratios.iter().copied().fold(0.0, f64::max);
-        assert!(at_rest == 64, "{at_rest} of 64 at rest, worst {worst:e}");
+        let at_rest = ratios.iter().filter(|r| r.0 < 1e-9).count();
+        let worst =
+            ratios.iter().copied().fold(
+                (0.0, Mode::Deformable),
+                |w, r| if r.0 > w.0 { r } else { w },
+            );
+        assert!(at_rest == 64, "{at_rest} of 64 at rest, worst {worst:?}");
     }
 }
