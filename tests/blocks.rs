@@ -515,6 +515,8 @@ mod at_rest {
         Deformable,
         Simple,
         Rigid,
+        /// Deformable within the middle half of the box, simple beyond.
+        Mixed,
     }
 
     /// A box of elastic rock cut by two joint sets, persistent or not, strong enough to hold any
@@ -536,6 +538,13 @@ mod at_rest {
             Mode::Deformable => String::new(),
             Mode::Simple => r#", "blocks": { "mode": "simple" }"#.to_string(),
             Mode::Rigid => r#", "blocks": { "mode": "rigid" }"#.to_string(),
+            Mode::Mixed => {
+                let q = 0.5 * half;
+                format!(
+                    r#", "blocks": {{ "mode": "simple", "regions": [{{ "mode": "deformable",
+                        "polygon": [[-{q}, -{q}], [{q}, -{q}], [{q}, {q}], [-{q}, {q}]] }}] }}"#
+                )
+            }
         };
         let staged = if filled {
             r#", "excavations": [{ "name": "t", "circle": { "center": [0.3, -0.2], "radius": 1.5, "segments": 48 } }],
@@ -599,6 +608,78 @@ mod at_rest {
         }
     }
 
+    /// Boxes the property below drew (in a run of 640) that did not start at rest, each for a
+    /// reason of its own, and the unbalanced-force ratio each started at.
+    #[test]
+    fn boxes_drawn_not_at_rest_start_at_rest() {
+        let boxes = [
+            (
+                "a sliver thinner than the contact tolerance between a joint at 2.7° and the \
+                 boundary: the node across it counted as one on the joint (0.032)",
+                jointed_box(
+                    9.381278830484101,
+                    0.37374677482842605,
+                    (49.990393703541166, -2.656412476572437),
+                    (2.4526669848235607, 2.6987117625567234),
+                    (0.9441487001039824, 0.3223504441419372),
+                    None,
+                    (-9793762.946849072, -10901912.008827697, -6679631.897800642),
+                    false,
+                    Mode::Deformable,
+                ),
+            ),
+            (
+                "a joint meeting the filled tunnel's wall at 2.4°: the wall's next node, across \
+                 the fill, counted as one on the joint (0.73)",
+                jointed_box(
+                    13.680666138175676,
+                    0.3213764746845659,
+                    (49.746799397016716, 58.4949915664469),
+                    (2.324481479337055, 2.529936987121481),
+                    (-0.7071639648255006, -0.2585265078329861),
+                    None,
+                    (-11036680.990498604, -27627915.630451426, 3771365.2863156293),
+                    true,
+                    Mode::Simple,
+                ),
+            ),
+            (
+                "a simple wedge of 10.6° beside a zoned block: its other face, past the end of \
+                 the zoned edge, was taken to run on along it, and the apex had no contact (0.058)",
+                jointed_box(
+                    12.659603032155568,
+                    0.31340221551369696,
+                    (3.636895686479463, -7.0236210384653806),
+                    (2.2665214881050324, 1.3804850273057656),
+                    (-0.09557384852396028, -0.7463673330891566),
+                    None,
+                    (-9944334.26860482, -21508522.75898073, 1399010.0782950865),
+                    false,
+                    Mode::Mixed,
+                ),
+            ),
+            (
+                "a simple wedge's rounded apex beside a zoned block: its contact acted where its \
+                 rounding centre projects, a zone away (0.085)",
+                jointed_box(
+                    12.208462391657037,
+                    0.41542916631564636,
+                    (-1.5982389964167667, -13.389494213735816),
+                    (1.158235957618808, 1.9870258138480914),
+                    (-0.5525781962608993, 0.5426573378085122),
+                    None,
+                    (-10811223.29110827, -24594526.366689533, 551833.6244684602),
+                    true,
+                    Mode::Mixed,
+                ),
+            ),
+        ];
+        for (cause, scene) in boxes {
+            let ratio = ratio_at_start(&scene);
+            assert!(ratio < 1e-9, "{cause}: {ratio}");
+        }
+    }
+
     /// A jointed model in its in-situ stress, with the traction of that stress on its boundary,
     /// starts at rest to round-off, however its joints cut it: the zoning puts the nodes of the two
     /// blocks beside a joint at the same places (`adit_meshing::spacing`), so each joint node is
@@ -615,14 +696,17 @@ mod at_rest {
     /// corner under about 25° (a joint meeting the filled wall at 21°, two sets crossing at a
     /// sharp angle), the thin wedge's neighbours' faces lay within the contact's reach of each
     /// other's edges and counted their edges beside the wedge in their contacts with each other
-    /// (3e5–2e6 N/m). The blocks are deformable, simple or rigid (32, 16 and 16 of these 64), the
-    /// simple and rigid ones cut by persistent sets. Before a rounded corner's contact acted where
-    /// the corner is (`contact::detect::acting_at`), none of the 32 simple or rigid boxes did (up
-    /// to 0.061): each contact of a rounded corner was a couple of its normal force and the
-    /// rounding radius. Simple and rigid blocks cut by joints that end inside a block or on
-    /// another joint, and simple blocks beside zoned ones (`blocks.regions`), are not at rest
-    /// yet: there one block's node faces the middle of the other's edge, where the halves of
-    /// `contact::detect::contact_length` do not load the nodes as the stress does.
+    /// (3e5–2e6 N/m). The blocks are deformable, simple, rigid, or deformable in the middle and
+    /// simple beyond (`Mixed`). Before a rounded corner's contact acted where the corner is
+    /// (`contact::detect::acting_at`), no simple or rigid box did (up to 0.061): each contact of a
+    /// rounded corner was a couple of its normal force and the rounding radius. Before each piece
+    /// of a joint between the nodes of both sides was counted once (`contact_length`), simple and
+    /// rigid blocks cut by joints ending inside a block or on another joint, and simple blocks
+    /// beside zoned ones, did not (of 640 draws, 158 of the 160 mixed boxes, up to 1.9: where one
+    /// block's node faced the middle of the other's edge, each node took a quarter of its edges
+    /// as if a node faced it). Of 640 draws, 631 now start at rest; the 9 others (up to 0.025;
+    /// 4 mixed, 3 simple, 2 rigid) have a simple or rigid wedge's apex where three or more blocks
+    /// meet.
     #[test]
     fn jointed_models_in_their_in_situ_stress_start_at_rest() {
         let mut runner = proptest::test_runner::TestRunner::new_with_rng(
@@ -640,7 +724,8 @@ mod at_rest {
             prop_oneof![
                 Just(Mode::Deformable),
                 Just(Mode::Simple),
-                Just(Mode::Rigid)
+                Just(Mode::Rigid),
+                Just(Mode::Mixed)
             ],
         );
         let crossing = |dips: (f64, f64)| (dips.0 - dips.1).rem_euclid(180.0);
@@ -657,8 +742,7 @@ mod at_rest {
             if !(8.0..=172.0).contains(&crossing(dips)) {
                 continue;
             }
-            // Simple and rigid blocks with persistent sets only: see the doc comment.
-            let traces = (!persistent && mode == Mode::Deformable).then_some(traces);
+            let traces = (!persistent).then_some(traces);
             // Shear under √(σxx σyy): both principal stresses compressive.
             let stress = (stress.0, stress.1, stress.2 * (stress.0 * stress.1).sqrt());
             let scene = jointed_box(

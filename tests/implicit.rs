@@ -11,9 +11,14 @@ fn model_scene(file: &str) -> Scene {
 }
 
 fn run(sc: &Scene, folder: &str) -> adit::RunResult {
+    try_run(sc, folder).unwrap()
+}
+
+/// `run`, its error returned.
+fn try_run(sc: &Scene, folder: &str) -> anyhow::Result<adit::RunResult> {
     let out = std::env::temp_dir().join(folder);
     let _ = std::fs::remove_dir_all(&out);
-    adit::run_scene(sc, &out, &mut Quiet).unwrap()
+    adit::run_scene(sc, &out, &mut Quiet)
 }
 
 /// Relative L2 difference of two runs' zone stresses (in-plane components).
@@ -365,10 +370,11 @@ fn a_later_implicit_stage_is_refused_before_any_solve() {
 }
 
 /// A block sliding on a joint flatter than its friction holds (18.4° against φ = 10°): the
-/// implicit path never converges on it and, when its iterations run out, names the block that
-/// keeps moving instead of ending at the iteration limit (60 of them: by its 68th, Anderson
-/// mixing carries the slider past half the model's size and the runaway stop names a node of
-/// it instead). At φ = 30° the same block holds and the solve converges.
+/// implicit path never converges on it and, when its iterations run out (at 50, 60, 80 or 100),
+/// names the block that keeps moving instead of ending at the iteration limit. Its correction
+/// swings by up to 5× from one iteration to the next; compared one iteration against one other,
+/// the base it pushes was named at 60 and the slider at 80 (`implicit::moving::SPAN`). At
+/// φ = 30° the same block holds and the solve converges.
 #[test]
 fn implicit_names_a_sliding_block() {
     let text = r#"{
@@ -384,21 +390,28 @@ fn implicit_names_a_sliding_block() {
         "boundary": [ { "part": "bottom", "fix": "xy" } ],
         "solve": { "method": "implicit", "max_iterations": 60 }
     }"#;
-    let r = run(
-        &Scene::from_json(text, "slide").unwrap(),
-        "adit-test-implicit-slide",
-    );
-    assert_eq!(r.summary.status, "failed");
-    let reason = r.summary.reason.unwrap();
-    let m = &r.built.model;
-    let top = (0..m.nodes.len())
-        .max_by(|&a, &b| m.nodes.pos[a][1].total_cmp(&m.nodes.pos[b][1]))
-        .unwrap();
-    let sliding = m.blocks.block_of_node(top as u32);
-    assert!(
-        reason.contains("1 block(s) still move") && reason.contains(&format!("(block {sliding} ")),
-        "{reason}"
-    );
+    for limit in [50, 60, 80, 100] {
+        let text = text.replace(
+            r#""max_iterations": 60"#,
+            &format!(r#""max_iterations": {limit}"#),
+        );
+        let r = run(
+            &Scene::from_json(&text, "slide").unwrap(),
+            "adit-test-implicit-slide",
+        );
+        assert_eq!(r.summary.status, "failed", "{limit}");
+        let reason = r.summary.reason.unwrap();
+        let m = &r.built.model;
+        let top = (0..m.nodes.len())
+            .max_by(|&a, &b| m.nodes.pos[a][1].total_cmp(&m.nodes.pos[b][1]))
+            .unwrap();
+        let sliding = m.blocks.block_of_node(top as u32);
+        assert!(
+            reason.contains("1 block(s) still move")
+                && reason.contains(&format!("(block {sliding} ")),
+            "{limit}: {reason}"
+        );
+    }
     let held = run(
         &Scene::from_json(
             &text.replace(r#""friction": 10"#, r#""friction": 30"#),
@@ -661,4 +674,277 @@ fn a_joint_that_closes_converges_on_the_stiff_answer() {
     };
     let (i, e) = (top(&implicit), top(&explicit));
     assert!(e < 0.0 && (i / e - 1.0).abs() < 0.02, "{i} {e}");
+}
+
+/// A dilatant hole in mixed zones (`zoning.mixed`, ν = 0.4, c = 1 MPa, φ = 25°, ψ = 10°,
+/// p0 = 15 MPa): a zone's plastic change of mean stress is averaged over its patches, which
+/// moves its stress off its yield surface. Explicitly the next cycle returns it; the implicit
+/// trial, taken once per iteration from the commit, adds the shift of the iteration before to
+/// its predictor (`cycle::mixed`). Shifted after the return instead, the implicit answer held
+/// zones beyond their strength: closure 7.63 mm against 10.48 mm explicitly released over
+/// 16 000 cycles (−27 %), and an explicit stage after it took 1 410 cycles to move the wall to
+/// 10.69 mm. Now 10.54 mm (+0.55 %), and the explicit stage after it is at rest in 10 cycles.
+#[test]
+fn a_mixed_dilatant_hole_solved_implicitly_is_at_explicit_rest() {
+    let json = MC_HOLE
+        .replace(r#""poisson": 0.25,"#, r#""poisson": 0.4, "dilation": 10,"#)
+        .replace(
+            r#""cohesion": 5e6, "friction": 30"#,
+            r#""cohesion": 1e6, "friction": 25"#,
+        )
+        .replace("-30e6", "-15e6")
+        .replace(
+            r#""edge_at_excavation": 0.1, "edge_far": 2.0"#,
+            r#""edge_at_excavation": 0.15, "edge_far": 2.0, "mixed": true"#,
+        );
+    let handed = Scene::from_json(&handed_over(&json), "mc_hole").unwrap();
+    assert!(handed.zoning.mixed && handed.materials["rock"].dilation == 10.0);
+    let h = run(&handed, "adit-test-mixed-dilatant-handed");
+    assert_at_explicit_rest(&h, "hole");
+
+    let (c_implicit, c_explicit) =
+        against_explicit_slowly(&h, &json, "hole", "adit-test-mixed-dilatant-slowly");
+    assert!(
+        (c_implicit / c_explicit - 1.0).abs() < 0.02,
+        "{c_implicit} {c_explicit}"
+    );
+}
+
+/// `json`, a scene without stages, solved in one stage implicitly and then in one explicitly from
+/// where it left the model.
+fn handed_over(json: &str) -> String {
+    format!(
+        r#"{}, "stages": [
+            {{ "name": "implicit", "solve": {{ "method": "implicit", "ratio": 1e-5 }} }},
+            {{ "name": "explicit after it", "solve": {{ "ratio": 1e-5, "max_cycles": 200000 }} }}
+        ] }}"#,
+        json.trim_end().strip_suffix('}').unwrap()
+    )
+}
+
+/// The explicit stage of a `handed_over` run found the implicit one's state at rest: converged
+/// within 100 cycles, the mean closure of `wall` unchanged to 1e-3.
+fn assert_at_explicit_rest(r: &adit::RunResult, wall: &str) {
+    let [solved, _] = &r.summary.stages[..] else {
+        panic!("two stages")
+    };
+    assert_eq!(solved.status, "converged");
+    if let Err(e) = at_explicit_rest(r, wall) {
+        panic!("{e}");
+    }
+}
+
+/// Whether the explicit stage of a `handed_over` run, its implicit stage converged, found that
+/// stage's state at rest (`assert_at_explicit_rest`), or how it did not.
+fn at_explicit_rest(r: &adit::RunResult, wall: &str) -> Result<(), String> {
+    let [solved, after] = &r.summary.stages[..] else {
+        return Err("two stages".into());
+    };
+    let (c_solved, c_after) = (solved.closure[wall], after.closure[wall]);
+    println!(
+        "implicit {} iterations, closure {c_solved:.5e} m; explicit after it {} cycles, {c_after:.5e} m",
+        solved.cycles, after.cycles
+    );
+    if after.status != "converged" || after.cycles > 100 {
+        return Err(format!(
+            "explicit after it: {} after {} cycles",
+            after.status, after.cycles
+        ));
+    }
+    if (c_after / c_solved - 1.0).abs() >= 1e-3 {
+        return Err(format!("closure {c_solved} moved to {c_after}"));
+    }
+    Ok(())
+}
+
+/// The mean closures of `wall` (m) of the handed-over run `h` and of its scene `json` solved
+/// explicitly into `folder`, the out-of-balance force released over 16 000 cycles (to a ratio of
+/// 1e-5).
+fn against_explicit_slowly(
+    h: &adit::RunResult,
+    json: &str,
+    wall: &str,
+    folder: &str,
+) -> (f64, f64) {
+    let mut slowly = Scene::from_json(json, "slowly").unwrap();
+    slowly.solve.ratio = 1e-5;
+    slowly.solve.ramp = 16_000;
+    slowly.solve.max_cycles += slowly.solve.ramp;
+    let e = run(&slowly, folder);
+    let nodes = &e.built.plan.boundary.part_nodes[wall];
+    let (c_implicit, c_explicit) = (closure(h, nodes), closure(&e, nodes));
+    println!(
+        "mean wall closure: implicit {c_implicit:.5e} m, explicit released over 16 000 cycles \
+         {c_explicit:.5e} m"
+    );
+    (c_implicit, c_explicit)
+}
+
+/// A hole through rock cut by two sets of joints with cohesion (0.2 MPa, φ = 25°), excavated at
+/// once: joints near the wall fail. A cycle's joint loses its cohesion from the cycle after it
+/// failed; the implicit trial from the commit returned a joint that failed within the step to
+/// its intact strength, c − σn tan φ, before this test, which held those joints at it: the
+/// implicit closure was 1.004 mm, and explicit cycles after it took 2 410 cycles to close the
+/// hole to 1.137 mm (+13 %; the scene is a random draw's, found comparing the two paths). Now
+/// the implicit state is the explicit one's rest (1.134 mm).
+#[test]
+fn joints_failing_within_an_implicit_step_lose_their_cohesion() {
+    let json = r#"{
+        "name": "jointed_hole",
+        "materials": { "rock": { "density": 2600, "young": 20e9, "poisson": 0.25 } },
+        "region": { "polygon": [[-12, -12], [12, -12], [12, 12], [-12, 12]], "material": "rock" },
+        "excavations": [{ "name": "tunnel", "circle": { "center": [0, -0.8], "radius": 2, "segments": 48 } }],
+        "zoning": { "edge_at_excavation": 0.25, "edge_far": 3, "grading": 0.25 },
+        "joint_materials": { "j": { "normal_stiffness": 2e10, "shear_stiffness": 1e10,
+                                    "friction": 25, "cohesion": 2e5 } },
+        "joint_sets": [
+            { "dip": 176.96, "spacing": 1.94, "origin": [0.397, -0.782], "trace": 6.12, "gap": 1.19, "material": "j" },
+            { "dip": 56.53, "spacing": 1.54, "origin": [0.708, -0.418], "trace": 10.46, "gap": 2.10, "material": "j" } ],
+        "in_situ": { "sxx": -4.32e6, "syy": -5e6 },
+        "boundary": [ { "part": "outer", "in_situ_traction": true },
+                      { "at": [12, 0], "fix": "y" }, { "at": [-12, 0], "fix": "y" },
+                      { "at": [0, 12], "fix": "x" }, { "at": [0, -12], "fix": "x" } ],
+        "solve": { "ratio": 1e-5, "max_cycles": 200000 }
+    }"#;
+    let handed = Scene::from_json(&handed_over(json), "jointed_hole").unwrap();
+    let h = run(&handed, "adit-test-jointed-handed");
+    assert_at_explicit_rest(&h, "tunnel");
+}
+
+/// A hole through rock cut by two sets of dilatant joints (kn = 1e11 Pa/m, ks = 1e10 Pa/m,
+/// φ = 25°, ψ = 5°, no cohesion; a random draw's scene): a slipping joint's dilation adds
+/// kn tan ψ tan φ = 4.1e9 Pa/m to its shear resistance, which the implicit trial's return takes
+/// into account (`CoulombSlip::plastic_slip`). Returned by excess / ks instead (40 % too much
+/// slip), this solve stopped unconverged; in the draw's own scene (Mohr–Coulomb rock, staged,
+/// bolted) the excavation took 8 414 iterations and its slow release in 16 load steps did not
+/// converge. Now 48 iterations, within 0.01 % of the explicit slow release.
+#[test]
+fn dilatant_joints_converge_implicitly_on_the_explicit_answer() {
+    let json = r#"{
+        "name": "dilatant_joints",
+        "materials": { "rock": { "density": 2600, "young": 5e9, "poisson": 0.3 } },
+        "region": { "polygon": [[-8, -8], [8, -8], [8, 8], [-8, 8]], "material": "rock" },
+        "excavations": [{ "name": "tunnel", "circle": { "center": [0, -0.59], "radius": 1.086, "segments": 48 } }],
+        "zoning": { "edge_at_excavation": 0.2, "edge_far": 3, "grading": 0.25 },
+        "joint_materials": { "j": { "normal_stiffness": 1e11, "shear_stiffness": 1e10,
+                                    "friction": 25, "dilation": 5 } },
+        "joint_sets": [
+            { "dip": 32.24, "spacing": 3.388, "origin": [0.322, -0.346], "trace": 6.72, "gap": 2.28, "material": "j" },
+            { "dip": 59.33, "spacing": 3.255, "origin": [-0.648, 0.167], "trace": 11.13, "gap": 1.79, "material": "j" } ],
+        "in_situ": { "sxx": -6.237e6, "syy": -5e6 },
+        "boundary": [ { "part": "outer", "in_situ_traction": true },
+                      { "at": [8, 0], "fix": "y" }, { "at": [-8, 0], "fix": "y" },
+                      { "at": [0, 8], "fix": "x" }, { "at": [0, -8], "fix": "x" } ],
+        "solve": { "ratio": 1e-5, "max_cycles": 200000 }
+    }"#;
+    let handed = Scene::from_json(&handed_over(json), "dilatant_joints").unwrap();
+    let h = run(&handed, "adit-test-dilatant-joints-handed");
+    assert_at_explicit_rest(&h, "tunnel");
+    let iterations = h.summary.stages[0].cycles;
+    assert!(iterations <= 300, "{iterations}");
+
+    let (c_implicit, c_explicit) =
+        against_explicit_slowly(&h, json, "tunnel", "adit-test-dilatant-joints-slowly");
+    assert!(
+        (c_implicit / c_explicit - 1.0).abs() < 0.015,
+        "{c_implicit} {c_explicit}"
+    );
+}
+
+/// Drawn scenes solved implicitly are at explicit rest: a hole in a box of rock (elastic or
+/// Mohr–Coulomb, dilatant or not, plain or mixed zones) cut by up to two non-persistent sets of
+/// Coulomb joints (with or without cohesion and dilation), solved in one implicit stage and then
+/// cycled explicitly from where it left the model: where the implicit stage converged, the
+/// explicit one converges within 100 cycles without moving the wall. This oracle, run by hand on
+/// 42 random scenes, found the three defects of the tests above (mixed zones' plastic pressure,
+/// joints that fail within a step, dilatant joints' return); with those three undone this
+/// property fails too (on its 32 draws, in 1.4 s).
+mod drawn {
+    use super::*;
+    use proptest::prelude::*;
+
+    #[allow(clippy::too_many_arguments)]
+    fn scene(
+        half: f64,
+        radius: f64,
+        plastic: Option<(f64, f64, f64)>,
+        poisson: f64,
+        mixed: bool,
+        sets: &[(f64, f64, f64, f64)],
+        joint: (f64, f64, f64, f64),
+        stress: (f64, f64),
+    ) -> String {
+        let law = plastic.map_or(String::new(), |(c, phi, psi)| {
+            format!(
+                r#", "law": "mohr_coulomb", "cohesion": {c}, "friction": {phi}, "dilation": {psi}"#
+            )
+        });
+        let (kn, phi, c, psi) = joint;
+        let sets: Vec<String> = sets
+            .iter()
+            .map(|&(dip, spacing, trace, gap)| {
+                format!(
+                    r#"{{ "dip": {dip}, "spacing": {spacing}, "origin": [0.3, -0.2], "trace": {trace}, "gap": {gap}, "material": "j" }}"#
+                )
+            })
+            .collect();
+        format!(
+            r#"{{
+            "name": "drawn",
+            "materials": {{ "rock": {{ "density": 2600, "young": 10e9, "poisson": {poisson}{law} }} }},
+            "region": {{ "polygon": [[-{half}, -{half}], [{half}, -{half}], [{half}, {half}], [-{half}, {half}]], "material": "rock" }},
+            "excavations": [{{ "name": "tunnel", "circle": {{ "center": [0, 0], "radius": {radius}, "segments": 48 }} }}],
+            "zoning": {{ "edge_at_excavation": 0.25, "edge_far": 3, "grading": 0.25, "mixed": {mixed} }},
+            "joint_materials": {{ "j": {{ "normal_stiffness": {kn}, "shear_stiffness": 1e10,
+                                        "friction": {phi}, "cohesion": {c}, "dilation": {psi} }} }},
+            "joint_sets": [{}],
+            "in_situ": {{ "sxx": {}, "syy": {} }},
+            "boundary": [ {{ "part": "outer", "in_situ_traction": true }},
+                          {{ "at": [{half}, 0], "fix": "y" }}, {{ "at": [-{half}, 0], "fix": "y" }},
+                          {{ "at": [0, {half}], "fix": "x" }}, {{ "at": [0, -{half}], "fix": "x" }} ],
+            "solve": {{ "ratio": 1e-5, "max_cycles": 200000 }}
+        }}"#,
+            sets.join(", "),
+            stress.0,
+            stress.1
+        )
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig {
+            cases: 32,
+            rng_seed: proptest::test_runner::RngSeed::Fixed(33),
+            failure_persistence: None,
+            ..ProptestConfig::default()
+        })]
+
+        #[test]
+        fn drawn_scenes_solved_implicitly_are_at_explicit_rest(
+            half in 8.0f64..14.0,
+            radius in 1.0f64..2.0,
+            plastic in proptest::option::of((1e6f64..4e6, 25.0f64..40.0, prop_oneof![Just(0.0), Just(5.0), Just(10.0)])),
+            poisson in prop_oneof![Just(0.25), Just(0.3), Just(0.4)],
+            mixed in any::<bool>(),
+            sets in proptest::collection::vec((0.0f64..180.0, 1.5f64..4.0, 4.0f64..12.0, 1.0f64..3.0), 0..=2),
+            joint in (prop_oneof![Just(2e10), Just(1e11)], 25.0f64..35.0, prop_oneof![Just(0.0), Just(2e5)], prop_oneof![Just(0.0), Just(5.0)]),
+            p in 4e6f64..10e6,
+            k in 0.5f64..1.5,
+        ) {
+            let json = scene(half, radius, plastic, poisson, mixed, &sets, joint, (-p * k, -p));
+            let handed = Scene::from_json(&handed_over(&json), "drawn").unwrap();
+            // An implicit stage that fails (a mechanism named) ends the run: nothing to hand
+            // over. Any other error is the test's.
+            let r = match try_run(&handed, "adit-test-drawn-handed") {
+                Ok(r) => r,
+                Err(e) => {
+                    let e = format!("{e:#}");
+                    prop_assert!(e.contains("implicit: "), "{e}");
+                    return Ok(());
+                }
+            };
+            let [solved, _] = &r.summary.stages[..] else { return Ok(()) };
+            prop_assume!(solved.status == "converged");
+            at_explicit_rest(&r, "tunnel").map_err(TestCaseError::fail)?;
+        }
+    }
 }

@@ -363,21 +363,55 @@ fn a_rerun_replaces_the_earlier_outputs() {
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
-/// An output folder that cannot be made is an error naming it, before the scene is built.
-#[test]
-fn an_unwritable_output_folder_fails_first_naming_it() {
-    let file = out_dir("not-a-folder");
-    std::fs::write(&file, "a file").unwrap();
-    let out = Command::new(env!("CARGO_BIN_EXE_adit"))
+/// `adit run models/kirsch.json --quiet --out <dir>`, its exit and output.
+fn run_kirsch_into(dir: &Path) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_adit"))
         .args([
             "run",
             concat!(env!("CARGO_MANIFEST_DIR"), "/models/kirsch.json"),
             "--quiet",
             "--out",
         ])
-        .arg(file.join("sub"))
+        .arg(dir)
         .output()
-        .unwrap();
+        .unwrap()
+}
+
+/// A run into a folder another run holds is refused before it writes anything, leaving that
+/// run's files alone (two runs into one folder would each leave files that look complete); once
+/// the folder is let go a run goes ahead. The `adit` command says why it stopped.
+#[test]
+fn a_second_run_into_a_held_folder_is_refused() {
+    let dir = out_dir("held");
+    run_scene(&small_scene(), &dir, &mut Quiet).unwrap();
+    let before = std::fs::read_to_string(dir.join("summary.json")).unwrap();
+    let held = adit::output::lock::FolderLock::take(&dir).unwrap();
+    let err = run_scene(&small_scene(), &dir, &mut Quiet).err().unwrap();
+    assert!(
+        format!("{err:#}").contains("another run is writing there"),
+        "{err:#}"
+    );
+    assert_eq!(
+        std::fs::read_to_string(dir.join("summary.json")).unwrap(),
+        before
+    );
+    let out = run_kirsch_into(&dir);
+    let said = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        !out.status.success() && said.contains("another run"),
+        "{said}"
+    );
+    drop(held);
+    run_scene(&small_scene(), &dir, &mut Quiet).unwrap();
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// An output folder that cannot be made is an error naming it, before the scene is built.
+#[test]
+fn an_unwritable_output_folder_fails_first_naming_it() {
+    let file = out_dir("not-a-folder");
+    std::fs::write(&file, "a file").unwrap();
+    let out = run_kirsch_into(&file.join("sub"));
     let err = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(1), "{err}");
     assert!(

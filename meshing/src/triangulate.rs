@@ -863,6 +863,34 @@ mod tests {
         assert!(matches!(triangulate(&d, &z), Err(MeshError::Zoning(_))));
     }
 
+    /// The sharpest corner of block `b`, degrees: of its rings, and where rings touch (a joint
+    /// merged onto a hole's vertex: a joint tangent to the tunnel) the sharpest wedge between any
+    /// two of the edges that meet there, a cusp no zoning can beat.
+    fn sharpest_corner_deg(b: &Block) -> f64 {
+        let rings = || std::iter::once(&b.outer).chain(&b.holes);
+        let corners = rings().map(smallest_corner_deg).fold(180.0, f64::min);
+        let mut at: Map<Key, Vec<Point>> = Map::default();
+        for ring in rings() {
+            for i in 0..ring.len() {
+                let (a, c) = ring.edge(i);
+                at.entry(key(a))
+                    .or_default()
+                    .push([c[0] - a[0], c[1] - a[1]]);
+                at.entry(key(c))
+                    .or_default()
+                    .push([a[0] - c[0], a[1] - c[1]]);
+            }
+        }
+        let wedges = (at.values().filter(|dirs| dirs.len() > 2))
+            .flat_map(|dirs| {
+                (0..dirs.len())
+                    .flat_map(move |i| (i + 1..dirs.len()).map(move |j| (i, j)))
+                    .map(|(i, j)| angle_deg(dirs[i], dirs[j]))
+            })
+            .fold(180.0, f64::min);
+        corners.min(wedges)
+    }
+
     fn smallest_corner_deg(p: &Polygon) -> f64 {
         let n = p.len();
         (0..n)
@@ -872,11 +900,15 @@ mod tests {
                     p.vertices[i],
                     p.vertices[(i + 1) % n],
                 );
-                let (u, v) = ([a[0] - b[0], a[1] - b[1]], [c[0] - b[0], c[1] - b[1]]);
-                let cos = (u[0] * v[0] + u[1] * v[1]) / (u[0].hypot(u[1]) * v[0].hypot(v[1]));
-                cos.clamp(-1.0, 1.0).acos().to_degrees()
+                angle_deg([a[0] - b[0], a[1] - b[1]], [c[0] - b[0], c[1] - b[1]])
             })
             .fold(180.0, f64::min)
+    }
+
+    /// The angle between directions `u` and `v`, degrees.
+    fn angle_deg(u: Point, v: Point) -> f64 {
+        let cos = (u[0] * v[0] + u[1] * v[1]) / (u[0].hypot(u[1]) * v[0].hypot(v[1]));
+        cos.clamp(-1.0, 1.0).acos().to_degrees()
     }
 
     /// Zone the blocks `joints` cut `d` into together (`triangulate_blocks`), its excavations
@@ -913,7 +945,7 @@ mod tests {
                 ));
             }
             // Refinement cannot beat a sharp corner of the block itself.
-            let corner = smallest_corner_deg(&b.outer);
+            let corner = sharpest_corner_deg(b);
             if s.min_angle_deg < cap.min(share * corner) {
                 return Err(format!(
                     "block {i}: a zone of {:.2}° where its sharpest corner is {corner:.2}°",

@@ -249,7 +249,7 @@ fn node_to_edge(
                 best = Some(c);
             }
         }
-        match best.map(|c| c.found) {
+        match best.map(|c| on_own_place(d, &node, c.found)) {
             Some(f) => {
                 match corner_partner(d, b, &node, &f, other_face(&node, &f, &against), &mut depth) {
                     Some(g) => found.extend([
@@ -433,11 +433,46 @@ fn acting_at(d: &Detection, n: &Node, pj: [f64; 2], t: [f64; 2], xi: f64) -> f64
     (((p[0] - pj[0]) * t[0] + (p[1] - pj[1]) * t[1]) / dot(t, t)).clamp(0.0, 1.0)
 }
 
+/// A rounded node's contact `f` moved to the edge of b beside which the node itself lies. Its
+/// rounding centre lies r / sin(θ/2) from the apex of a wedge of angle θ (11 r at 10.6°), so
+/// against a zoned block it projects onto an edge one or more zones on,
+/// and the contact acted at that edge's end, a zone away from the node: the node's force and its
+/// reaction on different nodes of b. The walk goes on through b's edges in line with f's (their
+/// normals within [`SAME_FACE`]) as far as the node lies beyond them, and never back.
+fn on_own_place(d: &Detection, n: &Node, mut f: Found) -> Found {
+    if n.radius == 0.0 {
+        return f;
+    }
+    let p = d.x[n.id as usize];
+    let normal = edge_normal(d, f.edge);
+    let mut came = NO_EDGE;
+    for _ in 0..d.blocks.edges.len() {
+        let along = along_edge(d, p, f.edge);
+        let [j, k] = d.blocks.edges[f.edge as usize];
+        let next = if along < 0.0 {
+            d.blocks.node_edges[j as usize][0]
+        } else if along > 1.0 {
+            d.blocks.node_edges[k as usize][1]
+        } else {
+            break;
+        };
+        if next == NO_EDGE || next == came || dot(edge_normal(d, next), normal) <= SAME_FACE {
+            break;
+        }
+        came = f.edge;
+        f.edge = next;
+        f.xi = along_edge(d, p, next).clamp(0.0, 1.0);
+    }
+    f
+}
+
 /// Whether one of node `n`'s own faces continues the edge from `pj` along `t` (m) past the end
 /// the node is at (`xi`, its place along the edge, 0..1): the face's outward normal within
-/// [`SAME_FACE`] of the edge's `normal`, and its far end beyond that end of the edge. (A sliver's
-/// tip faces the block across its joint with one face and has the other nearly parallel to it
-/// too, but that face runs under the edge, not past its end.)
+/// [`SAME_FACE`] of the edge's `normal`, its far end beyond that end of the edge, and where it
+/// passes that end, on the edge's line (within the tolerance). (A sliver's tip faces the block
+/// across its joint with one face and has the other nearly parallel to it too, but that face runs
+/// under the edge, or past the end of a short one off its line: a simple wedge of 10.6° beside a
+/// zoned block lost its contact with it, and the zoned block's node at its apex half its stress.)
 fn runs_on(d: &Detection, n: &Node, xi: f64, pj: [f64; 2], t: [f64; 2], normal: [f64; 2]) -> bool {
     let own = d.blocks.node_edges[n.id as usize];
     let mut faces = own.iter().filter(|&&e| e != NO_EDGE).zip(n.normals());
@@ -447,8 +482,18 @@ fn runs_on(d: &Detection, n: &Node, xi: f64, pj: [f64; 2], t: [f64; 2], normal: 
         }
         let [a, b] = d.blocks.edges[e as usize];
         let q = d.x[if a == n.id { b } else { a } as usize];
-        let along = ((q[0] - pj[0]) * t[0] + (q[1] - pj[1]) * t[1]) / dot(t, t);
-        if xi < 0.5 { along < 0.0 } else { along > 1.0 }
+        let p = d.x[n.id as usize];
+        let along = |v: [f64; 2]| ((v[0] - pj[0]) * t[0] + (v[1] - pj[1]) * t[1]) / dot(t, t);
+        let (from, to) = (along(p), along(q));
+        let end = if xi < 0.5 { 0.0 } else { 1.0 };
+        let past = if xi < 0.5 { to < 0.0 } else { to > 1.0 };
+        // Where the face passes the edge's end it lies on the edge's line (within the
+        // tolerance): a wedge's apex against a short edge has its other face nearly parallel and
+        // past the edge's end too, but off its line.
+        let s = ((end - from) / (to - from)).clamp(0.0, 1.0);
+        let at_end = [p[0] + s * (q[0] - p[0]), p[1] + s * (q[1] - p[1])];
+        let off = ((at_end[0] - pj[0]) * normal[0] + (at_end[1] - pj[1]) * normal[1]).abs();
+        past && off <= d.tolerance
     })
 }
 
@@ -610,19 +655,34 @@ fn corner_to_corner(d: &Detection, n: u32, c: [f64; 2], r: f64, b: usize) -> Opt
         .map(|(_, f)| f)
 }
 
-/// Length of joint a contact at `node` against `edge` of block `b` stands for: half of each
-/// boundary edge at the node whose midpoint lies within the tolerance of block b's boundary (the
-/// node's edge runs along b; the contact edge and its two neighbours are tried first, then all of
-/// b's edges, which a long edge against a finely zoned block needs), halved again because both sides of a
-/// joint carry contacts (together they cover it once). A corner contact, whose edges both leave
-/// the other block (diagonal blocks at a joint crossing, a corner against a face), takes a quarter
-/// of its shorter edge, halved likewise. Of a node with two contacts at a corner of b (`partner`
-/// the other contact's edge), each takes only the node's edge that lies more squarely against its
+/// No node: what `contact_length`'s stretches skip when they skip none.
+const NO_NODE: u32 = u32::MAX;
+
+/// Length of joint a contact at `node` against `edge` of block `b` stands for, m, and whether it
+/// is a face contact. The joint between the two blocks, cut at the nodes of both sides, is a
+/// chain of pieces; each piece's length goes half to the contact at either end, shared by the
+/// two contacts there where both blocks have a node (the trapezoidal rule of the traction on
+/// either side's edges, which their contacts' forces load as the zones' stress loads their nodes:
+/// a block in a uniform stress starts at rest, whatever the two zonings). So the node takes, of
+/// each of its boundary edges that runs along b, the stretch up to the nearest node of b on the
+/// edge (or its whole length), halved, and halved again where b has a node at its own place;
+/// sliding off that node, the node passes from the one to the other over the contact tolerance.
+/// An edge runs along b when the middle of that stretch lies within the tolerance of b's boundary
+/// (the contact edge and its two neighbours are tried first, then all of b's edges, which a long
+/// edge against a finely zoned block needs). A corner contact, whose edges both leave the other
+/// block (diagonal blocks at a joint crossing, a corner against a face), takes a quarter of its
+/// shorter edge, halved likewise. Of a node with two contacts at a corner of b (`partner` the
+/// other contact's edge), each takes only the node's edge that lies more squarely against its
 /// own. An edge of the node that a third block's zoning shares (`Blocks::across`) lies against
-/// that block and counts for no other. Returns the length, m, and whether it is a face contact.
+/// that block and counts for no other.
 ///
-/// The halves load a node as its zones' stress does where the nodes of the two sides face each
-/// other, which the zoning makes so between two zoned blocks (`adit_meshing::spacing`).
+/// Two zoned blocks put their nodes at the same places along a joint (`adit_meshing::spacing`):
+/// each node takes a quarter of each edge. A zoned block beside a simple or rigid one, whose edge
+/// spans several of its nodes, and a block's face where two others meet at a node in its middle
+/// (a joint ending on a joint) are where the pieces differ: the node without a partner takes its
+/// pieces whole. Taking a quarter there too, as each node did before, left the zoned block's
+/// middle nodes with half their stress and its nodes at the ends of the other's edge with half
+/// as much again (2.7e7 N/m where simple blocks met zoned ones, in random boxes at 25 MPa).
 fn contact_length(d: &Detection, node: u32, edge: u32, partner: u32, b: usize) -> (f64, bool) {
     let [j, k] = d.blocks.edges[edge as usize];
     let near = [
@@ -630,6 +690,36 @@ fn contact_length(d: &Detection, node: u32, edge: u32, partner: u32, b: usize) -
         d.blocks.node_edges[j as usize][0],
         d.blocks.node_edges[k as usize][1],
     ];
+    // The nodes of b beside the contact, each with the edge of b that leads to it from the
+    // contact edge (none for that edge's own ends): the nearest node of b along either of the
+    // node's edges is one of them (the ends of the contact edge, or beyond one the node sits on).
+    let beside = [
+        Some((j, NO_EDGE)),
+        Some((k, NO_EDGE)),
+        (near[1] != NO_EDGE).then(|| (d.blocks.edges[near[1] as usize][0], near[1])),
+        (near[2] != NO_EDGE).then(|| (d.blocks.edges[near[2] as usize][1], near[2])),
+    ];
+    let here = d.x[node as usize];
+    let tol = d.tolerance;
+    // Whether edge `via` of b runs along the node's edge `e` on the joint between them: its
+    // middle lies within the tolerance of e, and the two face each other (outward normals
+    // opposed). A sliver thinner than the tolerance between a joint and the boundary has the
+    // next node of its free side, and a block whose joint meets a filled tunnel's wall at a
+    // grazing angle the next node of the wall, within the tolerance of the joint's line; neither
+    // is on the joint.
+    let leads_along = |via: u32, e: u32| {
+        let [p, q] = d.blocks.edges[via as usize].map(|n| d.x[n as usize]);
+        distance_to_edge(d, [0.5 * (p[0] + q[0]), 0.5 * (p[1] + q[1])], e) <= tol
+            && dot(edge_normal(d, via), edge_normal(d, e)) < 0.0
+    };
+    // The end of the contact edge nearest to this node, and how far it is, m: a node of b at the
+    // node's own place is one of them (the node projects onto the edge at its end).
+    let gap_to = |v: u32| norm(d.x[v as usize][0] - here[0], d.x[v as usize][1] - here[1]);
+    let (nearest, apart) = if gap_to(k) < gap_to(j) {
+        (k, gap_to(k))
+    } else {
+        (j, gap_to(j))
+    };
     let normals = (partner != NO_EDGE).then(|| (edge_normal(d, edge), edge_normal(d, partner)));
     let mine = |e: u32| {
         normals.is_none_or(|(this, other)| {
@@ -645,27 +735,77 @@ fn contact_length(d: &Detection, node: u32, edge: u32, partner: u32, b: usize) -
         matches!(d.blocks.edge_kind[e as usize], EdgeKind::Region(_))
             && !matches!(d.blocks.edge_kind[edge as usize], EdgeKind::Region(_))
     };
-    let (mut shared, mut shortest) = (0.0, f64::INFINITY);
+    // Of each edge running along b, half the stretch from `origin` up to the nearest node of b
+    // on it but `skip` (or to the edge's end): the node's share alone (from its own place), and,
+    // from its partner's place (the nearest end of the contact edge) skipping it, what it shares
+    // with the partner while they coincide (`paired`, halved) and what it would take alone the
+    // moment they part (`parting`: nothing of an edge the partner then lies on).
+    let partner = d.x[nearest as usize];
+    let (mut alone, mut paired, mut parting, mut shortest) = (0.0, 0.0, 0.0, f64::INFINITY);
     for &e in d.blocks.node_edges[node as usize]
         .iter()
         .filter(|&&e| e != NO_EDGE)
     {
-        let [p, q] = d.blocks.edges[e as usize].map(|n| d.x[n as usize]);
-        let len = norm(q[0] - p[0], q[1] - p[1]);
+        let [p, q] = d.blocks.edges[e as usize];
+        let far = d.x[if p == node { q } else { p } as usize];
+        let len = norm(far[0] - here[0], far[1] - here[1]);
         shortest = shortest.min(len);
         if !mine(e) || outer_against_joint(e) || against_third(d, e, b) {
             continue;
         }
-        let mid = [0.5 * (p[0] + q[0]), 0.5 * (p[1] + q[1])];
-        let within = |e: u32| distance_to_edge(d, mid, e) <= d.tolerance;
-        let along = near.iter().filter(|&&e| e != NO_EDGE).any(|&e| within(e))
-            || d.blocks.edge_range(b).any(|e| within(e as u32));
-        if along {
-            shared += 0.5 * len;
+        let along_e = [(far[0] - here[0]) / len, (far[1] - here[1]) / len];
+        // Where `v` lies along e from `origin`, m, if within the tolerance of e's line.
+        let place = |origin: [f64; 2], v: [f64; 2]| {
+            let r = [v[0] - origin[0], v[1] - origin[1]];
+            ((r[0] * along_e[1] - r[1] * along_e[0]).abs() <= tol).then(|| dot(r, along_e))
+        };
+        let stretch = |origin: [f64; 2], skip: u32| {
+            let end = dot([far[0] - origin[0], far[1] - origin[1]], along_e);
+            // A node reached through a neighbouring edge of b counts where that edge runs along
+            // e: across a block thinner than the tolerance (a sliver between a joint and the
+            // boundary), the node on its far side lies within the tolerance of e's line too.
+            let reach = beside
+                .iter()
+                .flatten()
+                .filter(|&&(v, via)| v != skip && (via == NO_EDGE || leads_along(via, e)))
+                .filter_map(|&(v, _)| place(origin, d.x[v as usize]))
+                .filter(|&s| s > 0.0 && s < end)
+                .fold(end, f64::min);
+            let mid = [
+                origin[0] + 0.5 * reach * along_e[0],
+                origin[1] + 0.5 * reach * along_e[1],
+            ];
+            // The stretch lies along b where its middle lies beside one of b's edges: within the
+            // tolerance of it, and not past its ends (a node of b just beyond the end of a block
+            // sliding on b, where the block's corner has left it, holds no joint).
+            let within = |e: u32| beside_edge(d, mid, e) <= tol;
+            let along = near.iter().filter(|&&e| e != NO_EDGE).any(|&e| within(e))
+                || d.blocks.edge_range(b).any(|e| within(e as u32));
+            if along && reach > 0.0 {
+                0.5 * reach
+            } else {
+                0.0
+            }
+        };
+        alone += stretch(here, NO_NODE);
+        let shared = stretch(partner, nearest);
+        paired += 0.5 * shared;
+        let ahead = place(here, partner).is_some_and(|s| s > 0.0 && s < len);
+        if !ahead {
+            parting += shared;
         }
     }
+    // Sliding apart from its partner, a node's share passes from paired to alone over the
+    // tolerance: alone, plus what pairing adds to it at the moment of parting, fading. Where it
+    // adds nothing (a node inside a joint, whose two neighbours' halves still cover it), the
+    // length is alone's, the trapezoidal rule over both sides' nodes at any slip; at a block's
+    // corner leaving a node of b it adds a quarter of an edge, which would otherwise be lost at
+    // once (a block sliding on a slope 1° steeper than its joint's friction, its corner leaving
+    // the base's node, was kicked into slips of 6 % of its slide).
+    let fading = 1.0 - (apart / tol).min(1.0);
+    let shared = alone + fading * (paired - parting);
     if shared > 0.0 {
-        (0.5 * shared, true)
+        (shared, true)
     } else {
         (0.5 * 0.25 * shortest, false)
     }
@@ -688,12 +828,29 @@ fn depth_in_block(d: &Detection, b: usize, p: [f64; 2]) -> Option<f64> {
     })
 }
 
+/// Distance from `p` to the line of edge `e`, m, where p projects onto the edge (between its
+/// ends, to 1e-9 of its length); infinite beyond its ends.
+fn beside_edge(d: &Detection, p: [f64; 2], e: u32) -> f64 {
+    if !(-1e-9..=1.0 + 1e-9).contains(&along_edge(d, p, e)) {
+        return f64::INFINITY;
+    }
+    let [a, c] = d.blocks.edges[e as usize].map(|n| d.x[n as usize]);
+    let t = [c[0] - a[0], c[1] - a[1]];
+    ((p[0] - a[0]) * t[1] - (p[1] - a[1]) * t[0]).abs() / norm(t[0], t[1])
+}
+
+/// Where `p` projects along boundary edge `e`: 0 at its first node, 1 at its second (unbounded).
+fn along_edge(d: &Detection, p: [f64; 2], e: u32) -> f64 {
+    let [a, c] = d.blocks.edges[e as usize].map(|n| d.x[n as usize]);
+    let t = [c[0] - a[0], c[1] - a[1]];
+    ((p[0] - a[0]) * t[0] + (p[1] - a[1]) * t[1]) / (t[0] * t[0] + t[1] * t[1])
+}
+
 /// Distance from `p` to boundary edge `e`, m.
 fn distance_to_edge(d: &Detection, p: [f64; 2], e: u32) -> f64 {
     let [a, c] = d.blocks.edges[e as usize].map(|n| d.x[n as usize]);
     let t = [c[0] - a[0], c[1] - a[1]];
-    let s = (((p[0] - a[0]) * t[0] + (p[1] - a[1]) * t[1]) / (t[0] * t[0] + t[1] * t[1]))
-        .clamp(0.0, 1.0);
+    let s = along_edge(d, p, e).clamp(0.0, 1.0);
     norm(p[0] - a[0] - s * t[0], p[1] - a[1] - s * t[1])
 }
 

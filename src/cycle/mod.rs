@@ -180,6 +180,9 @@ pub struct Cycle {
     zone_strain: Vec<StrainIncrement>,
     node_volumetric: Vec<f64>,
     zone_plastic_mean: Vec<f64>,
+    /// Mixed discretization, implicit path: each zone's plastic mean-stress shift from its last
+    /// trial, Pa, which its next trial adds to its predictor (`mixed`; zero at a commit).
+    zone_pressure_lag: Vec<f64>,
     /// Mixed discretization scratch: each zone's stress at the start of the step, Pa (written only
     /// with stiffness-proportional damping, whose viscous stress is the step's change).
     zone_stress_start: Vec<Stress>,
@@ -213,6 +216,7 @@ impl Cycle {
             zone_strain: vec![[0.0; 3]; model.mixed.as_ref().map_or(0, |_| model.zones.len())],
             node_volumetric: vec![0.0; model.mixed.as_ref().map_or(0, |_| model.nodes.len())],
             zone_plastic_mean: vec![0.0; model.mixed.as_ref().map_or(0, |_| model.zones.len())],
+            zone_pressure_lag: vec![0.0; model.mixed.as_ref().map_or(0, |_| model.zones.len())],
             zone_stress_start: vec![
                 [0.0; 4];
                 model.mixed.as_ref().map_or(0, |_| model.zones.len())

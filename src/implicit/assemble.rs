@@ -319,7 +319,11 @@ pub fn compressed(
     }
     let mut col_ptr = Vec::with_capacity(n + 1);
     col_ptr.push(0);
-    let (mut rows, mut values) = (Vec::new(), Vec::new());
+    // At most one entry a triplet: no growing (and copying) as the columns fill.
+    let (mut rows, mut values) = (
+        Vec::with_capacity(triplets.len()),
+        Vec::with_capacity(triplets.len()),
+    );
     for j in 0..n {
         let column = &mut by_column[start[j]..start[j + 1]];
         // Stable: duplicates stay in the triplets' order.

@@ -19,7 +19,7 @@
 //!   a step are another list: the joints then commit where they are (`follow_detection`), so
 //!   their answer depends on the iterations only through where detection happened.
 
-use crate::cycle::{JointCommit, Trial};
+use crate::cycle::{Cycle, JointCommit, Trial};
 use crate::joint::JointState;
 use crate::law::Stress;
 use crate::model::bodies::Bodies;
@@ -51,8 +51,11 @@ pub struct Committed {
 }
 
 impl Committed {
-    /// Commit the model's present state, after `detections` detections.
-    pub fn of(model: &Model, detections: u64) -> Committed {
+    /// Commit the model's present state, after the detections `cycle` has counted; the zones'
+    /// trials start afresh from it (`Cycle::zones_committed`).
+    pub fn of(model: &Model, cycle: &mut Cycle) -> Committed {
+        cycle.zones_committed();
+        let detections = cycle.detections();
         Committed {
             joint_state: model.contacts.state.clone(),
             joint_disp: model.nodes.disp.clone(),
@@ -69,7 +72,8 @@ impl Committed {
 
     /// Put the whole model back to the commit (a step that failed, before it is cut), the
     /// joints' commit with it.
-    pub fn restore(&mut self, model: &mut Model) {
+    pub fn restore(&mut self, model: &mut Model, cycle: &mut Cycle) {
+        cycle.zones_committed();
         model.nodes.disp.copy_from_slice(&self.disp);
         self.trial_zones(&mut model.zones);
         model.supports.clone_from(&self.supports);

@@ -339,7 +339,7 @@ pub fn solve_driven(
     let mut moving = None;
     let mut steps = LoadSteps::new(spec.load_steps, model, cycle, params);
     steps.apply(model);
-    let mut committed = Committed::of(model, cycle.detections());
+    let mut committed = Committed::of(model, cycle);
     // Whether the zone forces are those of the state as it is (`displace` left them). A solve
     // that cannot start (no factor) leaves the driven nodes where they are.
     let mut zones_current = !drive.is_empty() && factor.is_ok();
@@ -375,7 +375,7 @@ pub fn solve_driven(
             }
             steps.advance();
             steps.apply(model);
-            committed = Committed::of(model, cycle.detections());
+            committed = Committed::of(model, cycle);
             (in_step, least_ratio, movement) = (0, f64::INFINITY, Movement::new(model));
             anderson.reset();
             continue;
@@ -400,7 +400,7 @@ pub fn solve_driven(
                 moving = moving::fastest(model, &movement, iteration);
                 break Status::CycleLimit;
             }
-            committed.restore(model);
+            committed.restore(model, cycle);
             steps.apply(model);
             // Back before the drive while no step has committed it: it is made again.
             zones_current = steps.is_first() && !drive.is_empty();

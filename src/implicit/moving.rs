@@ -8,15 +8,14 @@
 //! corrections too, but tiny against the movement made: `STILL_MOVING`): it is named instead of
 //! the stage ending at its iteration limit. The share is of the plain corrections' sum, not of the
 //! block's displacement: Anderson mixing carries a sliding block far further than the plain
-//! corrections do (the sliding-block test's slider, on a joint whose two sides' nodes face each
-//! other, past half the model's size, 2 m, within 68 iterations: the monitor's runaway stop comes
-//! first unless the iterations are fewer). A block that moves as a body (every node's correction at
-//! least `AS_A_BODY` of its largest) is named before the blocks it pushes, which deform as it moves
-//! and whose corrections stay as steady; failing that, a block no fixed node holds is named before
-//! those held (the sliding-block test's slider, its joints' trial from the commit, turns as well as
-//! slides in its last correction: its least node correction 0.36 of its largest, while the base it
-//! pushes is held at its fixed nodes). (Slip that converges but very slowly can still look the
-//! same: the message says so.)
+//! corrections do, and the monitor's runaway stop (half the model's size) can come first. Each
+//! end of the window is a mean over `SPAN` iterations. A block that moves as a body (every node's
+//! correction at least `AS_A_BODY` of its largest) is named before the blocks it pushes, which
+//! deform as it moves and whose corrections stay as steady; failing that, a block no fixed node
+//! holds is named before those held (the sliding-block test's slider, its joints' trial from the
+//! commit, turns as well as slides in its last correction: its least node correction 0.36 of its
+//! largest, while the base it pushes is held at its fixed nodes). (Slip that converges but very
+//! slowly can still look the same: the message says so.)
 
 use crate::model::{BODY, FIX_X, FIX_Y, Model};
 
@@ -45,10 +44,21 @@ const STILL_MOVING: f64 = 1e-3;
 /// test's base block: 0 at its fixed nodes).
 const AS_A_BODY: f64 = 0.5;
 
-/// Each block's largest node correction, m, at the start of the window and now, its smallest node
-/// correction now, and the sum of its largest corrections since the solve began.
+/// Iterations over which a block's corrections are averaged at each end of the window: a
+/// sliding block's correction swings by up to 5× from one iteration to the next (the sliding-block
+/// test's slider, 1e-6 to 5e-6 m), so one iteration against one other named the base it pushes
+/// or the slider by chance of the iteration limit.
+pub const SPAN: usize = 10;
+
+/// Each block's mean largest node correction, m, over the first `SPAN` iterations of the window
+/// and its last `SPAN` largest corrections (a ring), its largest and smallest node correction of
+/// the last iteration, and the sum of its largest corrections since the solve began.
 pub struct Movement {
     then: Vec<f64>,
+    /// Iterations recorded since the window's start (`None` before it).
+    in_window: Option<usize>,
+    recent: Vec<[f64; SPAN]>,
+    recorded: usize,
     now: Vec<f64>,
     least: Vec<f64>,
     sum: Vec<f64>,
@@ -59,6 +69,9 @@ impl Movement {
         let blocks = model.blocks.len();
         Movement {
             then: vec![0.0; blocks],
+            in_window: None,
+            recent: vec![[0.0; SPAN]; blocks],
+            recorded: 0,
             now: vec![0.0; blocks],
             least: vec![0.0; blocks],
             sum: vec![0.0; blocks],
@@ -67,6 +80,11 @@ impl Movement {
 
     /// Record an iteration's plain corrections `du` (m per node); `first` marks the window's start.
     pub fn record(&mut self, model: &Model, du: &[[f64; 2]], first: bool) {
+        if first {
+            self.then.fill(0.0);
+            self.in_window = Some(0);
+        }
+        let opening = self.in_window.filter(|&k| k < SPAN);
         let starts = &model.blocks.node_start;
         for b in 0..self.now.len() {
             let nodes = starts[b] as usize..starts[b + 1] as usize;
@@ -77,21 +95,39 @@ impl Movement {
             self.now[b] = most;
             self.least[b] = if least.is_finite() { least } else { 0.0 };
             self.sum[b] += most;
+            self.recent[b][self.recorded % SPAN] = most;
+            if opening.is_some() {
+                self.then[b] += most;
+            }
         }
-        if first {
-            self.then.copy_from_slice(&self.now);
+        self.recorded += 1;
+        if let Some(k) = self.in_window.as_mut() {
+            *k += 1;
         }
     }
 
-    /// The blocks moving steadily, (block, correction of the last iteration in m), largest first:
+    /// Block b's mean correction over the window's first `SPAN` iterations (or as many as it has
+    /// had) and over the last `SPAN` recorded, m.
+    fn means(&self, b: usize) -> (f64, f64) {
+        let opened = self.in_window.unwrap_or(0).clamp(1, SPAN) as f64;
+        let last = self.recorded.clamp(1, SPAN);
+        let recent = self.recent[b][..last].iter().sum::<f64>() / last as f64;
+        (self.then[b] / opened, recent)
+    }
+
+    /// The blocks moving steadily (their mean correction over the last `SPAN` iterations at least
+    /// `STEADY` of that over the window's first), (block, that mean correction in m), largest first:
     /// those moving as bodies if any is, else those no fixed node holds if any, else all.
     pub fn steady(&self, model: &Model) -> Vec<(usize, f64)> {
-        let largest = self.now.iter().copied().fold(0.0, f64::max);
+        let means: Vec<(f64, f64)> = (0..self.now.len()).map(|b| self.means(b)).collect();
+        let largest = means.iter().map(|m| m.1).fold(0.0, f64::max);
         let mut out: Vec<(usize, f64)> = (0..self.now.len())
             .filter(|&b| !model.blocks.is_removed(b))
-            .filter(|&b| self.now[b] > NOTABLE * largest && self.now[b] >= STEADY * self.then[b])
-            .filter(|&b| self.now[b] >= STILL_MOVING * self.sum[b])
-            .map(|b| (b, self.now[b]))
+            .filter(|&b| {
+                let (then, now) = means[b];
+                now > NOTABLE * largest && now >= STEADY * then && now >= STILL_MOVING * self.sum[b]
+            })
+            .map(|b| (b, means[b].1))
             .collect();
         if out.iter().any(|&(b, _)| self.is_body(b)) {
             out.retain(|&(b, _)| self.is_body(b));

@@ -39,12 +39,24 @@ impl JointLaw for CoulombSlip {
         self.advance(s, dn, ds, Dilation::WholeIncrement);
     }
 
-    /// `update`, but the dilation grows by the plastic slip alone, (|τ_trial| − limit)/ks: from
-    /// the commit, the whole increment of a step that begins to slip is partly elastic, and
-    /// counting it all (as `update` does, exact in the limit of small increments) lifted the
-    /// direct shear box further the longer the step.
+    /// `update`, but returned from the commit in one step: the joint dilates by the plastic slip
+    /// alone (`plastic_slip`: from the commit, the whole increment of a step that begins to slip
+    /// is partly elastic, and counting it all, as `update` does, exact in the limit of small
+    /// increments, lifted the direct shear box further the longer the step), and its shear ends
+    /// on the limit at the normal stress it dilated to. A joint that fails within the step ends
+    /// it without its cohesion and tensile strength, as a cycle's joint has them no more from
+    /// the cycle after it failed, and dilates by the slip beyond its intact limit, as the cycles
+    /// after failing count it: returned to c − σn tan φ instead, the implicit answer held the
+    /// joints that failed at their intact strength, and explicit cycles after it closed a
+    /// jointed hole 13 % further (`tests/implicit.rs`).
     fn trial(&self, s: &mut JointState, dn: f64, ds: f64) {
-        self.advance(s, dn, ds, Dilation::PlasticSlip);
+        let committed = *s;
+        self.advance(s, dn, ds, Dilation::PlasticSlip(0.0));
+        if committed.flags & FAILED == 0 && s.flags & FAILED != 0 {
+            *s = committed;
+            s.flags |= FAILED;
+            self.advance(s, dn, ds, Dilation::PlasticSlip(self.cohesion));
+        }
     }
 
     fn stiffness(&self) -> (f64, f64) {
@@ -52,11 +64,12 @@ impl JointLaw for CoulombSlip {
     }
 }
 
-/// What slip the dilation grows by.
+/// What slip the dilation grows by: the whole shear increment, or the plastic slip beyond the
+/// limit raised by a cohesion lost within the step (Pa).
 #[derive(Clone, Copy, PartialEq)]
 enum Dilation {
     WholeIncrement,
-    PlasticSlip,
+    PlasticSlip(f64),
 }
 
 impl CoulombSlip {
@@ -82,17 +95,40 @@ impl CoulombSlip {
         s.shear += self.shear_stiffness * ds;
         let limit = c - s.normal * self.tan_friction;
         if s.shear.abs() > limit {
-            let slip = match dilation {
-                Dilation::WholeIncrement => ds.abs(),
-                Dilation::PlasticSlip => (s.shear.abs() - limit) / self.shear_stiffness,
-            };
-            s.shear = limit * s.shear.signum();
+            let (sign, excess) = (s.shear.signum(), s.shear.abs() - limit);
             s.flags |= SLIPPING | FAILED;
-            if self.tan_dilation != 0.0 {
-                s.dilation += slip * self.tan_dilation;
-                s.normal =
-                    s.initial_normal + self.normal_stiffness * (s.normal_displacement - s.dilation);
+            match dilation {
+                Dilation::WholeIncrement => {
+                    s.shear = limit * sign;
+                    self.dilate(s, ds.abs());
+                }
+                Dilation::PlasticSlip(lost) => {
+                    self.dilate(s, self.plastic_slip(excess - lost));
+                    s.shear = (c - s.normal * self.tan_friction) * sign;
+                }
             }
+        }
+    }
+
+    /// The plastic slip λ (m) of a return from a trial whose shear stress exceeds the limit by
+    /// `excess` (Pa): the slip takes ks λ off the shear stress and, dilating by tan ψ λ, adds
+    /// kn tan ψ λ to the compression and so tan φ kn tan ψ λ to the limit, so that
+    /// λ = excess / (ks + kn tan ψ tan φ) ends on the limit at the final normal stress (the
+    /// return of a non-associated Coulomb joint, e.g. Simo & Hughes, *Computational Inelasticity*,
+    /// §2.2, with the coupling of the normal stress). Without the coupling, excess / ks slipped
+    /// the jointed tunnel of a random draw (kn = 1e11 Pa/m, ks = 1e10 Pa/m, ψ = 5°: 40 % more
+    /// slip than consistent) into 8 414 iterations and a closure 2 % off the explicit one.
+    fn plastic_slip(&self, excess: f64) -> f64 {
+        let coupling = self.normal_stiffness * self.tan_dilation * self.tan_friction;
+        excess.max(0.0) / (self.shear_stiffness + coupling)
+    }
+
+    /// Dilate by `slip` (m): the dilation grows by slip tan ψ and the normal stress follows it.
+    fn dilate(&self, s: &mut JointState, slip: f64) {
+        if self.tan_dilation != 0.0 {
+            s.dilation += slip * self.tan_dilation;
+            s.normal =
+                s.initial_normal + self.normal_stiffness * (s.normal_displacement - s.dilation);
         }
     }
 }
@@ -160,6 +196,64 @@ mod tests {
         assert!((s.normal - -1e4).abs() < 1e-6, "{}", s.normal);
     }
 
+    /// A trial from the commit that fails the joint ends at its residual strength, where a cycle's
+    /// joint is from the cycle after it failed, and dilates by the slip beyond its intact limit,
+    /// as the cycles after failing count it, the slip taking the dilation's compression into
+    /// account (`plastic_slip`).
+    #[test]
+    fn a_joint_that_fails_within_a_trial_ends_at_its_residual_strength() {
+        let start = JointState {
+            normal: -1e6,
+            initial_normal: -1e6,
+            ..Default::default()
+        };
+        let ds = 1e-4; // ks ds = 5e5 Pa, under c − σn tan φ = 6.77e5 Pa; 3 ds past it.
+        let residual = 1e6 * tan_deg(30.0);
+        let law = joint();
+        let (mut trial, mut cycled) = (start, start);
+        law.trial(&mut trial, 0.0, 3.0 * ds);
+        law.update(&mut cycled, 0.0, 3.0 * ds);
+        law.update(&mut cycled, 0.0, 0.0);
+        assert!(trial.flags & FAILED != 0);
+        assert!(
+            (trial.shear - residual).abs() < 1e-9 * residual,
+            "{}",
+            trial.shear
+        );
+        assert_eq!((trial.shear, trial.flags), (cycled.shear, cycled.flags));
+        // Dilating: by the slip beyond the intact limit, (ks 3 ds − (c − σn tan φ)) over
+        // ks + kn tan ψ tan φ, and ending on the residual limit at the normal stress it dilated to.
+        let law = CoulombSlip {
+            tan_dilation: tan_deg(10.0),
+            ..joint()
+        };
+        let mut dilated = start;
+        law.trial(&mut dilated, 0.0, 3.0 * ds);
+        let coupled = 5e9 + 10e9 * tan_deg(10.0) * tan_deg(30.0);
+        let slip = (5e9 * 3.0 * ds - (1e5 + residual)) / coupled;
+        let expected = slip * tan_deg(10.0);
+        assert!(
+            (dilated.dilation - expected).abs() < 1e-12 * expected,
+            "{}",
+            dilated.dilation
+        );
+        let normal = -1e6 - 10e9 * expected;
+        assert!(
+            (dilated.normal - normal).abs() < 1e-9 * 1e6,
+            "{}",
+            dilated.normal
+        );
+        assert!(
+            (dilated.shear + normal * tan_deg(30.0)).abs() < 1e-9 * 1e6,
+            "{}",
+            dilated.shear
+        );
+        // Within the intact limit nothing fails.
+        let mut held = start;
+        law.trial(&mut held, 0.0, ds);
+        assert_eq!((held.shear, held.flags), (5e5, 0));
+    }
+
     #[test]
     fn dilation_raises_confinement_while_slipping() {
         let law = CoulombSlip {
@@ -179,8 +273,9 @@ mod tests {
     }
 
     /// The trial from a commit at rest takes one whole increment: the joint slips past its limit
-    /// and dilates by the plastic slip alone, (ks Δus − limit)/ks · tan ψ, where `update` counts
-    /// the whole Δus; its shear and flags are `update`'s.
+    /// and dilates by the plastic slip alone, (ks Δus − limit)/(ks + kn tan ψ tan φ) · tan ψ,
+    /// ending on the limit at the normal stress it dilated to, where `update` counts the whole
+    /// Δus and stays at the limit of the normal stress it started from; its flags are `update`'s.
     #[test]
     fn the_trial_dilates_by_the_plastic_slip() {
         let law = CoulombSlip {
@@ -199,12 +294,18 @@ mod tests {
         law.trial(&mut t, 0.0, ds);
         law.update(&mut u, 0.0, ds);
         let limit = 1e6 * law.tan_friction;
-        let plastic = (law.shear_stiffness * ds - limit) / law.shear_stiffness;
+        let coupled =
+            law.shear_stiffness + law.normal_stiffness * law.tan_dilation * law.tan_friction;
+        let plastic = (law.shear_stiffness * ds - limit) / coupled;
         assert!(
             (t.dilation - plastic * law.tan_dilation).abs() < 1e-15,
             "{t:?}"
         );
+        assert!(
+            (t.shear + t.normal * law.tan_friction).abs() < 1e-9 * 1e6,
+            "{t:?}"
+        );
         assert!((u.dilation - ds * law.tan_dilation).abs() < 1e-15, "{u:?}");
-        assert_eq!((t.shear, t.flags), (u.shear, u.flags));
+        assert_eq!((u.shear, t.flags), (limit, u.flags));
     }
 }

@@ -3,10 +3,12 @@
 //! `_supports_NNNN.vtu`),
 //! `history.csv` and `summary.json`, each written atomically (`history.csv` is also written row by
 //! row while a run goes, so that a killed run keeps it; the run's `summary.json` says `running`).
+//! A run holds its folder while it goes (`lock`): a second run into it is refused.
 
 pub mod arrays;
 pub mod atomic;
 pub mod joints_vtu;
+pub mod lock;
 pub mod plots;
 pub mod reactions;
 pub mod recovery;
@@ -39,6 +41,8 @@ pub struct OutputWriter {
     /// That file, from the first row on, flushed at each row, so that a killed run keeps its
     /// history; rewritten whole and atomically at the end.
     history: Option<std::io::BufWriter<std::fs::File>>,
+    /// The folder held for the run (`for_run`), given back when the writer is dropped.
+    _lock: Option<lock::FolderLock>,
 }
 
 impl OutputWriter {
@@ -54,10 +58,12 @@ impl OutputWriter {
             first_stage: 0,
             live_history: false,
             history: None,
+            _lock: None,
         })
     }
 
-    /// Open `dir` for a run of the scene `name` from stage `from` (numbered from 1): from the
+    /// Open `dir` for a run of the scene `name` from stage `from` (numbered from 1), holding it
+    /// until the writer is dropped (a run already writing there fails this one, `lock`): from the
     /// first, remove what an earlier run of that name left there (`is_run_output`, and its
     /// checkpoints); from a later one, keep it until `resume` says which steps to keep. Then
     /// write a `summary.json` with status `running`. A folder then never shows an earlier run's
@@ -65,6 +71,7 @@ impl OutputWriter {
     /// solved.
     pub fn for_run(dir: &Path, name: &str, from: usize) -> anyhow::Result<OutputWriter> {
         let writer = OutputWriter::new(dir, name)?;
+        let held = lock::FolderLock::take(dir)?;
         if from <= 1 {
             writer.remove_outputs(0, 0)?;
         }
@@ -74,6 +81,7 @@ impl OutputWriter {
         Ok(OutputWriter {
             live_history: true,
             first_stage: from.saturating_sub(1),
+            _lock: Some(held),
             ..writer
         })
     }

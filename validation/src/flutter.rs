@@ -7,9 +7,12 @@
 //! K = K_elastic + Σ kn L Tᵀ (−μ t + n) nᵀ T. Two modes whose frequencies it brings together merge
 //! into a pair that grows as e^(σt) (mode-coupling instability: Martins, Oden & Simões, *Int. J.
 //! Eng. Sci.* 28, 1990; Hoffmann et al., *Mech. Res. Commun.* 29, 2002; for elastic half-spaces,
-//! Adams, *J. Appl. Mech.* 62, 1995). A rigid block has no such pair: its tangential motion feels
-//! no stiffness, so the coupling is one-way and σ = 0. A deformable or simple block does, above a
-//! friction coefficient that falls as the joint gets stiffer against the block; its vibration then
+//! Adams, *J. Appl. Mech.* 62, 1995). A rigid block whose whole base stays closed has no such
+//! pair: its tangential motion feels no stiffness, so the coupling is one-way and σ = 0. Beyond
+//! the kern its heel lifts (`heel`), and then its bounce and rocking couple through the friction's
+//! moment and it can flutter too; the linearization is about the closed contacts only. A
+//! deformable or simple block has such a pair, above a friction coefficient that falls as the
+//! joint gets stiffer against the block; its vibration then
 //! grows until contacts open and, where the slide is slower than the vibration, reverse their slip,
 //! so the friction averages out and the block slides faster than the rigid closed form. This is the
 //! modelled system's own dynamics, not an error of the integration: it does not go away with a
@@ -45,18 +48,30 @@ pub struct SlidingBlock {
 }
 
 impl SlidingBlock {
-    /// The incline's block: 1 m × 0.5 m, ρ = 2 500 kg/m³, E = 10 GPa, ν = 0.25, contacts at its
-    /// base nodes 0.125 m apart.
+    /// The incline's block: 1 m × `incline::BLOCK_HEIGHT`, ρ = 2 500 kg/m³, E = 10 GPa, ν = 0.25,
+    /// contacts at its base nodes 0.125 m apart.
     pub fn incline(normal_stiffness: f64) -> SlidingBlock {
         SlidingBlock {
             width: 1.0,
-            height: 0.5,
+            height: crate::incline::BLOCK_HEIGHT,
             density: 2500.0,
             young: 10e9,
             poisson: 0.25,
             normal_stiffness,
             contacts: 9,
         }
+    }
+
+    /// The base contacts: their places x along the slide from the block's middle, m, and the
+    /// lengths of joint they stand for, m (the trapezoidal rule over the contacts' spacing).
+    fn base(&self) -> impl Iterator<Item = (f64, f64)> {
+        let n = self.contacts.max(2);
+        let spacing = self.width / (n - 1) as f64;
+        (0..n).map(move |c| {
+            let x = -0.5 * self.width + c as f64 * spacing;
+            let ends = c == 0 || c == n - 1;
+            (x, if ends { 0.5 * spacing } else { spacing })
+        })
     }
 
     /// Growth rate σ, 1/s, of the fastest-growing small perturbation of steady sliding with friction
@@ -90,15 +105,9 @@ impl SlidingBlock {
         k[(3, 4)] = a * lambda;
         k[(4, 3)] = a * lambda;
         k[(5, 5)] = 4.0 * g * a;
-        let n = self.contacts.max(2);
-        let spacing = w / (n - 1) as f64;
-        for c in 0..n {
-            let x = -0.5 * w + c as f64 * spacing;
-            let length = if c == 0 || c == n - 1 {
-                0.5 * spacing
-            } else {
-                spacing
-            };
+        let base: Vec<(f64, f64)> = self.base().collect();
+        let heel = heel(&base, 0.5 * mu * h);
+        for &(x, length) in base.iter().filter(|&&(x, _)| x > heel) {
             let t = velocity_map([x, -0.5 * h]);
             // Force on the block per unit normal displacement δn = t[1]·q: (−μ, 1) kn L (−δn)…
             // acting through Tᵀ: K += kn L Tᵀ (−μ, 1)ᵀ t[1].
@@ -120,6 +129,21 @@ impl SlidingBlock {
 /// along the base, slipping along +x with friction coefficient `mu` on a joint of normal
 /// stiffness `kn`, Pa/m, with stiffness-proportional damping `beta`, s (C = β_R K).
 pub fn deformable_growth_rate(model: &Model, block: usize, mu: f64, kn: f64, beta: f64) -> f64 {
+    partly_slipping_growth_rate(model, block, mu, kn, beta, &|_| false)
+}
+
+/// [`deformable_growth_rate`] with the base nodes for which `stuck` (of the node) is true held by
+/// their joint instead of slipping: normal and shear springs kn L (the incline's joint has
+/// ks = kn) and no friction coupling. A block holding with part of its base at the friction
+/// limit, linearized with those contacts slipping: a perturbation that slips them grows at σ.
+pub fn partly_slipping_growth_rate(
+    model: &Model,
+    block: usize,
+    mu: f64,
+    kn: f64,
+    beta: f64,
+    stuck: &dyn Fn(usize) -> bool,
+) -> f64 {
     let start = model.blocks.node_start[block] as usize;
     let end = model.blocks.node_start[block + 1] as usize;
     let n = end - start;
@@ -159,15 +183,47 @@ pub fn deformable_growth_rate(model: &Model, block: usize, mu: f64, kn: f64, bet
     let bottom = (start..end).map(|i| x(i)[1]).fold(f64::INFINITY, f64::min);
     let mut base: Vec<usize> = (start..end).filter(|&i| x(i)[1] - bottom < 1e-6).collect();
     base.sort_by(|&a, &b| x(a)[0].total_cmp(&x(b)[0]));
-    for (c, &node) in base.iter().enumerate() {
-        let left = if c > 0 {
-            x(node)[0] - x(base[c - 1])[0]
-        } else {
-            0.0
-        };
-        let right = base.get(c + 1).map_or(0.0, |&r| x(r)[0] - x(node)[0]);
-        let spring = kn * 0.5 * (left + right);
+    // The block's centroid, m, and its base nodes' places from below it and tributary lengths, m.
+    let block_zones = || (0..zones.len()).filter(|&z| zones.block[z] as usize == block);
+    let area: f64 = block_zones().map(|z| zones.area[z]).sum();
+    let centroid = [0, 1].map(|d| {
+        block_zones()
+            .map(|z| {
+                zones.area[z]
+                    * zones.nodes[z]
+                        .iter()
+                        .map(|&n| x(n as usize)[d])
+                        .sum::<f64>()
+                    / 3.0
+            })
+            .sum::<f64>()
+            / area
+    });
+    let contacts: Vec<(f64, f64)> = (0..base.len())
+        .map(|c| {
+            let at = |c: usize| x(base[c])[0];
+            let left = if c > 0 { at(c) - at(c - 1) } else { 0.0 };
+            let right = if c + 1 < base.len() {
+                at(c + 1) - at(c)
+            } else {
+                0.0
+            };
+            (at(c) - centroid[0], 0.5 * (left + right))
+        })
+        .collect();
+    let heel = heel(&contacts, mu * (centroid[1] - bottom));
+    for (&node, &(place, length)) in base.iter().zip(&contacts) {
+        if place <= heel {
+            continue;
+        }
+        let spring = kn * length;
+        let stuck_here = stuck(node);
         let node = node as u32;
+        if stuck_here {
+            k[(dof(node, 1), dof(node, 1))] += spring;
+            k[(dof(node, 0), dof(node, 0))] += spring;
+            continue;
+        }
         // Normal force on the node −kn L uy (up when it sinks), friction −μ times it along x.
         k[(dof(node, 1), dof(node, 1))] += spring;
         k[(dof(node, 0), dof(node, 1))] -= mu * spring;
@@ -175,6 +231,40 @@ pub fn deformable_growth_rate(model: &Model, block: usize, mu: f64, kn: f64, bet
     let masses = lumped_masses(model);
     let mass: Vec<f64> = (0..2 * n).map(|i| masses[start + i / 2]).collect();
     growth_rate(&k, &mass, beta)
+}
+
+/// Where the closed contacts of steady sliding begin along the slide, m, of a block on `base`
+/// contacts (their places x along the slide from below the block's centroid, m, and the lengths
+/// of joint they stand for, m), whose normal forces' resultant lies `e` m ahead of the centroid;
+/// −∞ when all stay closed. Sliding with friction coefficient μ, the friction μN at the base, a
+/// height c below the centroid, turns the block towards its toe, so e = μ c (moments about the
+/// centroid; μ h / 2 for a rectangle of height h). The block is taken stiff against the joint:
+/// the forces are kn L δ(x) with δ linear in x. Beyond the kern (e greater than their centroid
+/// with δ = 0 at the heel) the heel lifts, δ(x) = x − x0 where positive, and x0 is where that
+/// distribution's centroid is e.
+pub fn heel(base: &[(f64, f64)], e: f64) -> f64 {
+    let centroid = |x0: f64| {
+        let (mut f, mut m) = (0.0, 0.0);
+        for &(x, l) in base.iter().filter(|&&(x, _)| x > x0) {
+            f += l * (x - x0);
+            m += l * (x - x0) * x;
+        }
+        m / f
+    };
+    let mut lo = base.iter().map(|b| b.0).fold(f64::INFINITY, f64::min);
+    let mut hi = base.iter().map(|b| b.0).fold(f64::NEG_INFINITY, f64::max);
+    if centroid(lo) >= e {
+        return f64::NEG_INFINITY;
+    }
+    for _ in 0..100 {
+        let mid = 0.5 * (lo + hi);
+        if centroid(mid) < e {
+            lo = mid
+        } else {
+            hi = mid
+        }
+    }
+    lo
 }
 
 /// Largest real part, 1/s, of the eigenvalues of ẋ = [0 I; −M⁻¹K −β M⁻¹K] x for a diagonal
@@ -212,16 +302,58 @@ mod tests {
     }
 
     /// The simple block flutters above a friction coefficient that falls as the joint stiffens:
-    /// stable on a soft joint at any friction below 1, unstable on the incline's joint (1e11 Pa/m)
-    /// at 20°, growing faster with friction and stiffness.
+    /// stable on a soft joint (1e8 Pa/m) at any friction up to φ = 44°, unstable on the incline's
+    /// joint (1e11 Pa/m) at 40° and 44°, growing faster with friction and stiffness.
     #[test]
     fn simple_block_flutters_on_stiff_frictional_joints() {
-        let soft = SlidingBlock::incline(2e9);
+        let soft = SlidingBlock::incline(1e8);
         assert!(soft.growth_rate(TAN_44, 6) < 1e-3);
         let stiff = SlidingBlock::incline(1e11);
-        let at_20 = stiff.growth_rate(20f64.to_radians().tan(), 6);
+        let at_40 = stiff.growth_rate(40f64.to_radians().tan(), 6);
         let at_44 = stiff.growth_rate(TAN_44, 6);
-        assert!(at_20 > 100.0 && at_44 > 2.0 * at_20, "{at_20} {at_44}");
-        assert!(SlidingBlock::incline(1e10).growth_rate(TAN_44, 6) < at_44);
+        assert!(at_40 > 100.0 && at_44 > at_40, "{at_40} {at_44}");
+        let at_1e10 = SlidingBlock::incline(1e10).growth_rate(TAN_44, 6);
+        assert!(at_1e10 > 10.0 && at_1e10 < at_44, "{at_1e10} {at_44}");
+    }
+
+    /// On a uniform base (many contacts) the heel lifts once the resultant leaves the kern
+    /// (e > L/6), and the closed part is then the triangle whose centroid is e.
+    #[test]
+    fn the_heel_lifts_beyond_the_kern() {
+        let base: Vec<(f64, f64)> = (0..=1000)
+            .map(|c| {
+                (
+                    -0.5 + c as f64 * 1e-3,
+                    if c == 0 || c == 1000 { 5e-4 } else { 1e-3 },
+                )
+            })
+            .collect();
+        assert_eq!(heel(&base, 1.0 / 6.0 - 1e-3), f64::NEG_INFINITY);
+        // Triangle over [x0, 1/2]: centroid x0 + (1/2 − x0)·2/3 = e, so x0 = 3e − 1.
+        let x0 = heel(&base, 0.3);
+        assert!((x0 - (3.0 * 0.3 - 1.0)).abs() < 2e-3, "{x0}");
+    }
+
+    /// A block 0.5 m high on the incline lifts its heel sliding on φ = 44°, and then even a rigid
+    /// block flutters (its bounce and rocking couple through the friction moment); the shipped
+    /// block (`incline::BLOCK_HEIGHT`) keeps its base closed and its rigid slide stable.
+    #[test]
+    fn a_rigid_block_that_lifts_its_heel_flutters() {
+        for kn in [1e9, 1e11] {
+            let shipped = SlidingBlock::incline(kn);
+            let tall = SlidingBlock {
+                height: 0.5,
+                ..shipped
+            };
+            let base: Vec<(f64, f64)> = shipped.base().collect();
+            assert_eq!(
+                heel(&base, 0.5 * TAN_44 * shipped.height),
+                f64::NEG_INFINITY
+            );
+            assert!(heel(&base, 0.5 * TAN_44 * tall.height) > -0.5);
+            assert!(shipped.growth_rate(TAN_44, 3) < 1e-6 * kn.sqrt());
+            let sigma = tall.growth_rate(TAN_44, 3);
+            assert!(sigma > 1e-3 * kn.sqrt(), "{kn:e}: {sigma}");
+        }
     }
 }
