@@ -262,8 +262,16 @@ fn predicted_cost(scene: &Scene, model: &mut adit::model::Model) -> anyhow::Resu
     let mut solver = adit::solve::Solver::new(model, &scene.solve, 0);
     adit::run::ensure_time_step(&solver)?;
     let start = std::time::Instant::now();
-    for _ in 0..CYCLES {
+    // The guards of `run`'s cycling: a scene whose first cycles blow up fails here as it would
+    // there, before a detection sizes its grids on exploded positions.
+    for cycle in 1..=CYCLES {
         solver.cycle.run(model, &solver.params);
+        if let Some(reason) = solver.cycle.unstable_step(model, solver.params.dt) {
+            anyhow::bail!("the scene's first cycles fail: cycle {cycle}: {reason}");
+        }
+    }
+    if let Err(reason) = solver.cycle.monitor(model) {
+        anyhow::bail!("the scene's first cycles fail: cycle {CYCLES}: {reason}");
     }
     let per_cycle = start.elapsed().as_secs_f64() / f64::from(CYCLES);
     Ok(format!(

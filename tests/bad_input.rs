@@ -111,7 +111,8 @@ fn huge_counts_are_refused_naming_the_field() {
 #[test]
 fn an_edge_longer_than_the_region_builds() {
     let mut s = model("kirsch");
-    s["zoning"]["edge_far"] = json!(1e308);
+    // (1e308 is refused now, beyond the 1e30 any number of a scene may reach.)
+    s["zoning"]["edge_far"] = json!(1e30);
     let (code, err) = check_text(&s.to_string(), "edge-far");
     assert_eq!(code, Some(0), "{err}");
 }
@@ -271,4 +272,87 @@ fn the_merge_tolerance_is_a_scene_field() {
 fn check_refuses_a_scene_without_a_time_step() {
     let s: Value = serde_json::from_str(common::LONE_RIGID_BLOCK).unwrap();
     refused(&s, "solve: no zone or contact stiffness");
+}
+
+/// Issue 52's scenes, each refused at once naming its field, where `adit check` had aborted on
+/// a 6 GB allocation (in-situ stress or gravity of 1e19–1e21 Pa over the model), `run` had spun
+/// in the plot writer for over 10 minutes (a bolt spacing of 1e-300 m), the cutter had grown past
+/// 11.5 GB (two persistent sets 0.02 m apart over a 100 m box) or meshed for over 10 minutes (one
+/// such set), or the scene had built with its nonsense dropped without a word.
+#[test]
+fn extreme_values_are_refused_naming_the_field() {
+    let tunnel = model("tunnel");
+    let with = |pointer: &str, v: Value| {
+        let mut s = tunnel.clone();
+        let (parent, key) = pointer.rsplit_once('/').unwrap();
+        s.pointer_mut(parent).unwrap()[key] = v;
+        s
+    };
+    refused(&with("/in_situ/y_ref", json!(1.8e19)), "in_situ.y_ref");
+    refused(&with("/in_situ/gradient/syy", json!(1.8e19)), "in_situ.syy");
+    refused(&with("/gravity", json!([0, -9e15])), "gravity");
+    refused(&with("/in_situ/szz", json!(1e308)), "in_situ.szz");
+    refused(
+        &with("/bolts/0/out_of_plane_spacing", json!(1e-300)),
+        "bolts[0].out_of_plane_spacing",
+    );
+    refused(
+        &with("/joint_sets/0/origin", json!([1e300, 0])),
+        "joint_sets[0].origin[0]",
+    );
+    let mut tiny = tunnel.clone();
+    tiny["region"]["polygon"][0] = json!([1e-300, -40]);
+    refused(&tiny, "region.polygon[0][0]");
+    refused(
+        &with("/excavations/0/horseshoe/center", json!([1e-300, 0])),
+        "excavations[0].horseshoe.center[0]",
+    );
+    let joint = |from: Value, to: Value| json!([{ "from": from, "to": to, "material": "joint" }]);
+    refused(
+        &with("/joints", joint(json!([-1e300, 0]), json!([1e300, 1]))),
+        "joints[0].from[0]",
+    );
+    let err = refused(
+        &with("/joints", joint(json!([50, 0]), json!([60, 1]))),
+        "joints[0]",
+    );
+    assert!(err.contains("wholly outside"), "{err}");
+    let mut at = tunnel.clone();
+    at["blocks"] = json!({ "regions": [{ "mode": "rigid", "at": [100, 0] }] });
+    refused(&at, "blocks.regions[0].at");
+    // Too many blocks, or the zones of thin strips, estimated before cutting.
+    let mut dense = with(
+        "/region/polygon",
+        json!([[-50, -50], [50, -50], [50, 50], [-50, 50]]),
+    );
+    dense["zoning"]["merge_tolerance"] = json!(0.01);
+    for set in dense["joint_sets"].as_array_mut().unwrap() {
+        set["spacing"] = json!(0.02);
+        let set = set.as_object_mut().unwrap();
+        set.remove("trace");
+        set.remove("gap");
+    }
+    let err = refused(&dense, "joint_sets[1]");
+    assert!(err.contains("blocks"), "{err}");
+    dense["joint_sets"].as_array_mut().unwrap().truncate(1);
+    let err = refused(&dense, "joint_sets[0].spacing");
+    assert!(err.contains("zones"), "{err}");
+    // Explicit joints over the limit are blamed on `joints`, not on the first set.
+    let many: Vec<Value> = (0..100_001)
+        .map(|k| json!({ "from": [-10, k as f64 * 1e-4], "to": [10, 1.0], "material": "joint" }))
+        .collect();
+    refused(&with("/joints", Value::Array(many)), "joints");
+}
+
+/// A scene that passes every bound but whose first cycles blow up (rock of 1 kPa under 0.9 TPa)
+/// fails `adit check` as it fails `run`, naming the cycle and the node, instead of measuring
+/// cycles on exploded positions (in-situ stresses of 1e21 Pa had aborted there).
+#[test]
+fn check_fails_on_first_cycles_that_blow_up() {
+    let mut s = model("tunnel");
+    s["materials"]["rock"] = json!({ "density": 2700, "young": 1e3, "poisson": 0.25 });
+    s["in_situ"]["sxx"] = json!(-9e11);
+    s["in_situ"]["syy"] = json!(-9e11);
+    let err = refused(&s, "the scene's first cycles fail");
+    assert!(err.contains("unstable"), "{err}");
 }

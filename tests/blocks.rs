@@ -755,3 +755,30 @@ mod at_rest {
         assert!(at_rest == 64, "{at_rest} of 64 at rest, worst {worst:?}");
     }
 }
+
+/// A joint set none of whose traces reaches the region (a line of the region's box that misses
+/// a triangular region) is a warning naming it; it had been dropped without a word.
+#[test]
+fn a_joint_set_that_misses_the_region_is_named() {
+    let scene = adit::Scene::from_json(
+        r#"{
+        "name": "missed",
+        "materials": { "rock": { "density": 2500, "young": 1e9, "poisson": 0.2 } },
+        "region": { "polygon": [[0, 0], [20, 0], [0, 20]], "material": "rock" },
+        "zoning": { "edge_at_excavation": 2, "edge_far": 4 },
+        "joint_materials": { "j": { "normal_stiffness": 1e10, "shear_stiffness": 1e9, "friction": 30 } },
+        "joint_sets": [
+            { "dip": 135, "spacing": 1000, "origin": [18, 18], "material": "j" },
+            { "dip": 0, "spacing": 1000, "origin": [0, 5], "material": "j" }
+        ]
+    }"#,
+        "missed",
+    )
+    .unwrap();
+    let built = adit::setup::setup(&scene).unwrap();
+    let named: Vec<&String> = (built.warnings.iter())
+        .filter(|w| w.contains("reaches region.polygon"))
+        .collect();
+    assert_eq!(named.len(), 1, "{:?}", built.warnings);
+    assert!(named[0].starts_with("joint_sets[0]:"), "{named:?}");
+}

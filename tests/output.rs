@@ -104,6 +104,9 @@ fn run_writes_every_contract_file() {
         assert!(summary.get(key).is_some(), "summary.json lacks {key}");
     }
     assert_eq!(summary["status"], "cycle_limit");
+    // No field is ever null (it had been `critical_block` in every run without blocks).
+    let text = std::fs::read_to_string(dir.join("summary.json")).unwrap();
+    assert!(!text.contains("null"), "{text}");
     let leftovers: Vec<_> = std::fs::read_dir(&dir)
         .unwrap()
         .filter_map(|e| e.ok())
@@ -485,5 +488,22 @@ fn excavated_zones_leave_the_zone_files() {
         pvd.contains("stage=\"excavate\" file=\"kirsch_zones_0001.vtu\""),
         "{pvd}"
     );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// A state that is not finite is never written as a result: an in-situ σzz of 1e308 Pa (a scene
+/// file now refuses it) converged, and its recovered nodal stress overflowed to infinity in 4 339
+/// values of a run that said `converged`. The run fails naming the field, and its summary says so.
+#[test]
+fn a_state_that_is_not_finite_fails_the_run() {
+    let dir = out_dir("not-finite");
+    let mut scene = small_scene();
+    scene.in_situ.szz = Some(1e308);
+    let err = run_scene(&scene, &dir, &mut Quiet)
+        .err()
+        .expect("the run fails");
+    assert!(format!("{err:#}").contains("not finite"), "{err:#}");
+    let summary = std::fs::read_to_string(dir.join("summary.json")).unwrap();
+    assert!(summary.contains("\"failed\""), "{summary}");
     std::fs::remove_dir_all(&dir).unwrap();
 }

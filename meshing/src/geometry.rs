@@ -146,6 +146,17 @@ impl Polygon {
         None
     }
 
+    /// Whether segment ab has a point inside or on the polygon: an end inside, or a crossing of
+    /// an edge.
+    pub fn meets_segment(&self, a: Point, b: Point) -> bool {
+        self.contains(a)
+            || self.contains(b)
+            || (0..self.len()).any(|i| {
+                let (c, d) = self.edge(i);
+                segments_intersect(a, b, c, d)
+            })
+    }
+
     /// Whether the boundaries of `self` and `other` share a point (touching counts).
     pub fn touches(&self, other: &Polygon) -> bool {
         let mut segs = self.segments();

@@ -103,9 +103,24 @@ pub fn candidate_pairs(blocks: &Blocks, x: &[[f64; 2]], tol: f64) -> Vec<(u32, u
         .max(4.0 * tol)
         .max(f64::MIN_POSITIVE);
     let index = |v: f64, d: usize| ((v - lo[d]) / cell).floor() as i64;
-    // (cell, block) entries, sorted so that each cell's blocks are contiguous.
+    let overlap = |a: usize, b: usize| {
+        let ((alo, ahi), (blo, bhi)) = (boxes[a], boxes[b]);
+        (0..2).all(|d| blo[d] <= ahi[d] + tol && alo[d] <= bhi[d] + tol)
+    };
+    let mut pairs = Vec::new();
+    // (cell, block) entries, sorted so that each cell's blocks are contiguous. A box over more
+    // than LARGE_CELLS cells (a block that spans the model, or one whose nodes ran away) is
+    // compared with every box instead, so the entries stay within LARGE_CELLS a block.
+    const LARGE_CELLS: f64 = 1024.0;
     let mut entries: Vec<((i64, i64), u32)> = Vec::new();
     for (b, (blo, bhi)) in boxes.iter().enumerate().filter(|(b, _)| live(*b)) {
+        let cells = |d: usize| ((bhi[d] - blo[d] + 2.0 * tol) / cell).floor() + 1.0;
+        let count = cells(0) * cells(1);
+        if count.is_nan() || count > LARGE_CELLS {
+            let others = (0..n).filter(|&o| o != b && live(o) && overlap(b, o));
+            pairs.extend(others.map(|o| (b.min(o) as u32, b.max(o) as u32)));
+            continue;
+        }
         for cx in index(blo[0] - tol, 0)..=index(bhi[0] + tol, 0) {
             for cy in index(blo[1] - tol, 1)..=index(bhi[1] + tol, 1) {
                 entries.push(((cx, cy), b as u32));
@@ -113,11 +128,6 @@ pub fn candidate_pairs(blocks: &Blocks, x: &[[f64; 2]], tol: f64) -> Vec<(u32, u
         }
     }
     entries.sort_unstable();
-    let overlap = |a: usize, b: usize| {
-        let ((alo, ahi), (blo, bhi)) = (boxes[a], boxes[b]);
-        (0..2).all(|d| blo[d] <= ahi[d] + tol && alo[d] <= bhi[d] + tol)
-    };
-    let mut pairs = Vec::new();
     for group in entries.chunk_by(|p, q| p.0 == q.0) {
         for (k, &(_, a)) in group.iter().enumerate() {
             for &(_, b) in &group[k + 1..] {

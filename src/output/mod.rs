@@ -202,13 +202,16 @@ impl OutputWriter {
             files.push(file);
             Ok(())
         };
-        write("zones", vtu::zones_vtu(model, &labels)?)?;
+        write("zones", grid(vtu::zones_vtu(model, &labels))?)?;
         if model.blocks.len() > 1 {
-            write("contacts", vtu::contacts_vtu(model, &labels)?)?;
-            write("joints", joints_vtu::joints_vtu(model, &labels)?)?;
+            write("contacts", grid(vtu::contacts_vtu(model, &labels))?)?;
+            write("joints", grid(joints_vtu::joints_vtu(model, &labels))?)?;
         }
         if !model.supports.is_empty() {
-            write("supports", supports_vtu::supports_vtu(model, &labels)?)?;
+            write(
+                "supports",
+                grid(supports_vtu::supports_vtu(model, &labels))?,
+            )?;
         }
         self.steps.push(Step {
             timestep,
@@ -291,12 +294,37 @@ impl OutputWriter {
         })
     }
 
-    /// Write `summary.json`.
+    /// Write `summary.json`, leaving out every field without a value (a figure not measured, or
+    /// not finite: JSON's `null`), as README promises.
     pub fn write_summary(&self, summary: &Summary) -> std::io::Result<()> {
-        let text = serde_json::to_string_pretty(summary).map_err(std::io::Error::other)?;
+        let mut doc = serde_json::to_value(summary).map_err(std::io::Error::other)?;
+        drop_nulls(&mut doc);
+        let text = serde_json::to_string_pretty(&doc).map_err(std::io::Error::other)?;
         write_atomic(&self.dir.join("summary.json"), |w| {
             w.write_all(text.as_bytes())
         })
+    }
+}
+
+/// A grid file's text, or why it could not be made (vtkio's I/O error unwrapped, whose message
+/// would otherwise say its cause twice).
+fn grid(xml: Result<Vec<u8>, vtkio::Error>) -> anyhow::Result<Vec<u8>> {
+    xml.map_err(|e| match e {
+        vtkio::Error::IO(io) => anyhow::Error::new(io),
+        e => anyhow::Error::new(e),
+    })
+}
+
+/// Remove the members of every object in `v` whose value is `null` (serde writes a non-finite
+/// number and an absent option so).
+fn drop_nulls(v: &mut serde_json::Value) {
+    match v {
+        serde_json::Value::Object(fields) => {
+            fields.retain(|_, x| !x.is_null());
+            fields.values_mut().for_each(drop_nulls);
+        }
+        serde_json::Value::Array(items) => items.iter_mut().for_each(drop_nulls),
+        _ => {}
     }
 }
 
@@ -383,7 +411,8 @@ pub struct Summary {
     /// Critical time step with real masses, s, and the node that sets it.
     pub critical_timestep: f64,
     pub(crate) critical_node: u32,
-    /// The rigid or simple block that sets the critical time step, if one does.
+    /// The rigid or simple block that sets the critical time step, if one does (else absent).
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub(crate) critical_block: Option<u32>,
     /// What sets the critical step: `zones at node N`, `contacts at node N`, `supports`, `block B`.
     pub critical_limiter: String,

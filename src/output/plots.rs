@@ -49,6 +49,11 @@ pub fn write_plots(
         if lines.iter().all(|l| l.points.is_empty()) {
             return;
         }
+        // Plots are the last of a run's outputs: an interrupt skips those not yet drawn.
+        if crate::interrupt::requested() {
+            warnings.push(format!("{file} not written: interrupted"));
+            return;
+        }
         warnings.extend(write_png(dir, file, || draw(title, axes, log_y, &lines)));
     };
     let ratio = history
@@ -128,8 +133,52 @@ fn bolt_lines(model: &Model) -> Vec<Line> {
     lines
 }
 
-/// Draw `lines` as a PNG image.
-fn draw(
+/// The largest size of a value a plot draws: the plotting library's axes loop for ever on an
+/// infinite range and lose their ticks far before it.
+const PLOT_LIMIT: f64 = 1e100;
+
+/// `lines` without their non-finite points (and, on a logarithmic y axis, those not above zero);
+/// an error when a value is beyond [`PLOT_LIMIT`] in size or none is left.
+fn drawable(lines: &[Line], log_y: bool) -> Result<Vec<Line>, String> {
+    let lines: Vec<Line> = lines
+        .iter()
+        .map(|l| Line {
+            label: l.label.clone(),
+            points: (l.points.iter())
+                .filter(|p| p.0.is_finite() && p.1.is_finite() && (p.1 > 0.0 || !log_y))
+                .copied()
+                .collect(),
+        })
+        .collect();
+    let mut all = lines.iter().flat_map(|l| &l.points);
+    if let Some(p) = all.clone().find(|p| p.0.abs().max(p.1.abs()) > PLOT_LIMIT) {
+        return Err(format!(
+            "a value ({:e}, {:e}) is beyond the {PLOT_LIMIT:e} a plot draws",
+            p.0, p.1
+        ));
+    }
+    if all.next().is_none() {
+        return Err("no finite value to draw".into());
+    }
+    Ok(lines)
+}
+
+/// The range (lo, hi) a plot's axis takes for values from `lo` to `hi`: 4 % wider on each side,
+/// and never narrower than a millionth of the values' size (a constant curve), so that its ticks
+/// are distinct numbers.
+fn padded(lo: f64, hi: f64) -> (f64, f64) {
+    let pad = (0.04 * (hi - lo))
+        .max(1e-6 * lo.abs().max(hi.abs()))
+        .max(1e-30);
+    (lo - pad, hi + pad)
+}
+
+/// Draw `lines` as a PNG image (their finite points: [`drawable`]).
+fn draw(title: &str, axes: (&str, &str), log_y: bool, lines: &[Line]) -> Result<Vec<u8>, String> {
+    draw_finite(title, axes, log_y, &drawable(lines, log_y)?)
+}
+
+fn draw_finite(
     title: &str,
     (x_label, y_label): (&str, &str),
     log_y: bool,
@@ -143,8 +192,7 @@ fn draw(
             let (lo, hi) = all().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
                 (a.min(f(p)), b.max(f(p)))
             });
-            let pad = if hi > lo { 0.04 * (hi - lo) } else { 1.0 };
-            (lo - pad, hi + pad)
+            padded(lo, hi)
         };
         let (x0, x1) = span(|p| p.0);
         let err = |e: &dyn std::fmt::Display| e.to_string();
@@ -313,5 +361,31 @@ mod tests {
         assert_eq!(&png[1..4], b"PNG");
         let image = image::load_from_memory(&png).unwrap();
         assert_eq!((image.width(), image.height()), SIZE);
+    }
+
+    /// A plot of extreme or non-finite values ends, drawn from its finite points or refused
+    /// with a reason (an infinite range had looped in the plotting library for ever).
+    #[test]
+    fn extreme_values_are_drawn_or_refused_at_once() {
+        let cases = [
+            ([1e305, 2e305], false),
+            ([f64::INFINITY, 1.0], true),
+            ([1e20, 1e20], true),
+            ([1e-300, 2e-300], true),
+            ([f64::NAN, 1.0], true),
+            ([-1e308, 1e308], false),
+            ([f64::NAN, f64::INFINITY], false),
+            ([-3.0, 2.0], true),
+        ];
+        for (ys, drawn) in cases {
+            for log_y in [false, true] {
+                let line = Line {
+                    label: "a".into(),
+                    points: vec![(0.0, ys[0]), (1.0, ys[1])],
+                };
+                let png = draw("t", ("x", "y"), log_y, &[line]);
+                assert_eq!(png.is_ok(), drawn, "{ys:?}, log {log_y}: {png:?}");
+            }
+        }
     }
 }

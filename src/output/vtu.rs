@@ -4,6 +4,7 @@
 //! indicator per cell, and displacement, velocity and the recovered nodal stress per point (the
 //! output contract of `design.md`); each file's field data names its stage and the materials.
 
+use vtkio::IOBuffer;
 use vtkio::model::{
     Attribute, Attributes, ByteOrder, CellType, Cells, DataSet, UnstructuredGridPiece, Version,
     VertexNumbers, Vtk,
@@ -215,6 +216,7 @@ pub(super) fn xml_of(
     piece: UnstructuredGridPiece,
     labels: &Labels,
 ) -> Result<Vec<u8>, vtkio::Error> {
+    all_finite(&piece)?;
     let vtk = Vtk {
         version: Version::new((1, 0)),
         title: String::new(),
@@ -225,6 +227,30 @@ pub(super) fn xml_of(
     let mut xml = Vec::new();
     vtk.write_xml(&mut xml)?;
     Ok(with_cell_count(with_field_data(xml, labels)))
+}
+
+/// An error naming the first array of `piece` (its points' positions, or a point or cell field)
+/// with a value that is not finite: a grid file never holds one, and a run whose state gives one
+/// fails, naming it, rather than report that state (an in-situ σzz of 1e308 Pa had converged, its
+/// nodal stress infinite).
+fn all_finite(piece: &UnstructuredGridPiece) -> Result<(), vtkio::Error> {
+    let arrays = std::iter::once(("positions", &piece.points)).chain(
+        (piece.data.point.iter().chain(&piece.data.cell)).filter_map(|a| match a {
+            Attribute::DataArray(d) => Some((d.name.as_str(), &d.data)),
+            Attribute::Field { .. } => None,
+        }),
+    );
+    for (name, data) in arrays {
+        if let IOBuffer::F64(values) = data
+            && let Some(i) = values.iter().position(|v| !v.is_finite())
+        {
+            return Err(vtkio::Error::IO(std::io::Error::other(format!(
+                "the state is not finite: value {i} of the output field '{name}' is {}",
+                values[i]
+            ))));
+        }
+    }
+    Ok(())
 }
 
 /// vtkio writes a piece without cells with the polydata counts (`NumberOfVerts`, `NumberOfLines`,

@@ -5,8 +5,8 @@
 
 use adit_meshing::Polygon;
 
-use super::validate::{SceneError, invalid};
-use super::{Excavation, JointSetSpec, Scene};
+use super::validate::{Num, SceneError, invalid};
+use super::{BlockMode, DEFAULT_MERGE, Excavation, JointSetSpec, Scene};
 
 /// Most vertices of the region polygon (a ground surface traced from a terrain model): its
 /// checks, the cutter and the mesher reach its edges through grids and indexes, and 100 000
@@ -22,6 +22,12 @@ pub const MAX_POLYGON_VERTICES: usize = 20_000;
 /// the tunnel model with sets 0.12 m apart (about 45 000 traces, 132 000 blocks, 465 000 zones)
 /// sets up in about 40 s and 0.9 GB.
 pub const MAX_JOINTS: f64 = 100_000.0;
+
+/// Most blocks the joint sets may cut the region into (estimated from their crossings: the
+/// sets' traces and their crossings each add about one block). The tunnel with both sets 0.12 m
+/// apart (estimated at 264 000, cut into 242 471 blocks and 562 544 zones) is checked in 24 s and
+/// 1.2 GB, about 5 kB a block.
+pub const MAX_BLOCKS: f64 = 500_000.0;
 
 /// Most Voronoi grains.
 pub const MAX_GRAINS: f64 = 1_000_000.0;
@@ -78,6 +84,12 @@ impl Scene {
         let (lo, hi) = region.bounds();
         let diagonal = (hi[0] - lo[0]).hypot(hi[1] - lo[1]);
         let mut joints = self.joints.len() as f64;
+        if joints > MAX_JOINTS {
+            return Err(invalid(
+                "joints",
+                format!("{joints} joint traces exceed the limit of {MAX_JOINTS}"),
+            ));
+        }
         for i in 0..self.joint_sets.len() {
             joints += traces_of_set(&self.realized_set(i), diagonal);
             if beyond(joints, MAX_JOINTS) {
@@ -91,12 +103,7 @@ impl Scene {
                 ));
             }
         }
-        if joints > MAX_JOINTS {
-            return Err(invalid(
-                "joints",
-                format!("{joints} joint traces exceed the limit of {MAX_JOINTS}"),
-            ));
-        }
+        self.validate_block_count(&region, joints)?;
         if let Some(v) = &self.voronoi {
             let margin = 4.0 * v.size;
             let grains = (hi[0] - lo[0] + margin) / v.size * ((hi[1] - lo[1] + margin) / v.size);
@@ -123,7 +130,77 @@ impl Scene {
                 ),
             ));
         }
+        if let Some((i, strips)) = self.strip_zone_estimate(&region)
+            && beyond(strips, max as f64)
+        {
+            return Err(invalid(
+                format!("joint_sets[{i}].spacing"),
+                format!(
+                    "the blocks between this set's joints need at least {strips:.4e} zones \
+                     (strips {} m wide, zoned across at that width or zoning.edge_at_excavation / \
+                     4), more than zoning.max_zones ({max}): widen `spacing`, or take thin blocks \
+                     out of the zoning with `blocks.thin`: `rigid`",
+                    Num(self.realized_set(i).spacing)
+                ),
+            ));
+        }
         Ok(())
+    }
+
+    /// Refuse joints that would cut the region into more than [`MAX_BLOCKS`] blocks (estimated
+    /// from the traces and their [`crossings`]), naming the set that passes the limit,
+    /// before the cutter allocates them.
+    fn validate_block_count(&self, region: &Polygon, traces: f64) -> Result<(), SceneError> {
+        let area = region.signed_area().abs();
+        let sets: Vec<JointSetSpec> = (0..self.joint_sets.len())
+            .map(|i| self.realized_set(i))
+            .collect();
+        let mut blocks = 1.0 + traces.min(MAX_JOINTS);
+        for j in 0..sets.len() {
+            blocks += (0..j)
+                .map(|i| crossings(&sets[i], &sets[j], area))
+                .sum::<f64>();
+            if beyond(blocks, MAX_BLOCKS) {
+                return Err(invalid(
+                    format!("joint_sets[{j}]"),
+                    format!(
+                        "the joint sets cut the region into about {blocks:.4e} blocks, more than \
+                         the limit of {MAX_BLOCKS}: widen the sets' `spacing` or shorten their \
+                         `trace`"
+                    ),
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    /// The zones the strips between one set's joints force, where they are narrower than the
+    /// coarsest zone asked for and are zoned (deformable; `blocks.thin` for those under half
+    /// `zoning.edge_at_excavation`): each strip of width s is zoned across with edges
+    /// e = max(s, h0/4) along it (`adit_meshing::spacing`), two zones per e of its length, so the
+    /// region's area A takes about p² A / (s e / 2) zones, p = trace / (trace + gap) the set's
+    /// persistence (p² the share of the area between two overlapping traces); half of that, a
+    /// lower bound on the bundled tunnel's sets (0.2 m apart: 102 400 of its 213 528 zones;
+    /// 0.12 m: 284 444 of 562 544). The largest over the sets, with the set.
+    fn strip_zone_estimate(&self, region: &Polygon) -> Option<(usize, f64)> {
+        if self.blocks.mode != BlockMode::Deformable {
+            return None;
+        }
+        let h0 = self.zoning.edge_at_excavation;
+        let area = region.signed_area().abs();
+        (0..self.joint_sets.len())
+            .filter_map(|i| {
+                let set = self.realized_set(i);
+                let s = set.spacing;
+                let zoned = s >= 0.5 * h0 || self.blocks.thin == BlockMode::Deformable;
+                // A set closer than the merge tolerance is the cutter's to refuse, at once.
+                let cut = s >= self.zoning.merge_tolerance.unwrap_or(DEFAULT_MERGE * h0);
+                (zoned && cut && s < self.zoning.edge_far.min(region.size())).then(|| {
+                    let p = persistence(&set);
+                    (i, 0.5 * p * p * area / (0.5 * s * s.max(0.25 * h0)))
+                })
+            })
+            .max_by(|a, b| a.1.total_cmp(&b.1))
     }
 
     fn validate_bolt_counts(&self, diagonal: f64) -> Result<(), SceneError> {
@@ -213,7 +290,22 @@ fn traces_of_set(set: &JointSetSpec, diagonal: f64) -> f64 {
     lines * per_line
 }
 
+/// A set's persistence: the share of each of its lines its traces cover, trace / (trace + gap)
+/// (1 for a persistent set).
+fn persistence(set: &JointSetSpec) -> f64 {
+    set.trace.map_or(1.0, |t| t / (t + set.gap))
+}
+
+/// About how many times sets `a` and `b` cross in a region of `area` m²: lines s_a and s_b apart
+/// at an angle θ cross once per s_a s_b / |sin θ| of area, each crossing a joint's where both
+/// traces are (p_a p_b); a random spread of dip can bring two sets to any angle within it.
+fn crossings(a: &JointSetSpec, b: &JointSetSpec, area: f64) -> f64 {
+    let spread = (a.spread_dip + b.spread_dip).min(90.0).to_radians().sin();
+    let angle = (a.dip - b.dip).to_radians().sin().abs().max(spread);
+    area * angle * persistence(a) * persistence(b) / (a.spacing * b.spacing)
+}
+
 /// Whether an estimated `count` passes `limit` (a NaN count does: it came from nonsense).
-fn beyond(count: f64, limit: f64) -> bool {
+pub(super) fn beyond(count: f64, limit: f64) -> bool {
     count.is_nan() || count > limit
 }

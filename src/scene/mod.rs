@@ -3,6 +3,7 @@
 //! `docs/scene-format.md`; unknown fields are errors.
 
 mod limits;
+mod magnitudes;
 mod names;
 mod realization;
 mod supports;
@@ -554,6 +555,9 @@ pub struct ZoningSpec {
     pub mixed: bool,
 }
 
+/// `zoning.merge_tolerance` when the scene gives none, as a fraction of `edge_at_excavation`.
+pub const DEFAULT_MERGE: f64 = 0.3;
+
 fn default_grading() -> f64 {
     0.2
 }
@@ -849,12 +853,15 @@ impl Scene {
     pub fn from_json(text: &str, source: &str) -> Result<Scene, SceneError> {
         // A byte-order mark, as some Windows editors write, is not part of the JSON.
         let text = text.strip_prefix('\u{feff}').unwrap_or(text);
-        let scene: Scene = serde_json::from_str(text).map_err(|e| SceneError::Parse {
+        let parse_error = |e: serde_json::Error| SceneError::Parse {
             source_name: source.to_string(),
             line: e.line(),
             column: e.column(),
             message: e.to_string(),
-        })?;
+        };
+        let scene: Scene = serde_json::from_str(text).map_err(parse_error)?;
+        let numbers: serde_json::Value = serde_json::from_str(text).map_err(parse_error)?;
+        magnitudes::check_numbers(&numbers)?;
         scene.validate()?;
         Ok(scene)
     }
@@ -898,11 +905,17 @@ mod tests {
             .to_string()
     }
 
-    /// Numbers in messages stay short: 1e300 is not written with its 301 digits.
+    /// Numbers in messages stay short: 1e300 is not written with its 301 digits, nor 1e25 with
+    /// its 26.
     #[test]
     fn huge_numbers_are_shown_short() {
+        let msg = error_of(&GOOD.replace("\"edge_far\": 2", "\"edge_far\": 2, \"grading\": 1e25"));
+        assert_eq!(msg, "zoning.grading: must be in (0, 2], got 1.0000e25");
         let msg = error_of(&GOOD.replace("\"edge_far\": 2", "\"edge_far\": 2, \"grading\": 1e300"));
-        assert_eq!(msg, "zoning.grading: must be in (0, 2], got 1.0000e300");
+        assert!(
+            msg.starts_with("zoning.grading: 1.0000e300 is outside"),
+            "{msg}"
+        );
         let msg = error_of(&GOOD.replace("\"poisson\": 0.2", "\"poisson\": 0.75"));
         assert!(msg.ends_with("got 0.75"), "{msg}");
     }

@@ -423,10 +423,22 @@ impl Scene {
             }
             joint_material(format!("{p}.material"), &js.material)?;
         }
+        // (A region of fewer than 3 vertices is the meshing's to refuse, naming it.)
+        let region = (self.region.polygon.len() >= 3)
+            .then(|| adit_meshing::Polygon::new(self.region.polygon.clone()));
         for (i, j) in self.joints.iter().enumerate() {
             joint_material(format!("joints[{i}].material"), &j.material)?;
             if j.from == j.to {
                 return Err(invalid(format!("joints[{i}]"), "`from` and `to` coincide"));
+            }
+            if region
+                .as_ref()
+                .is_some_and(|r| !r.meets_segment(j.from, j.to))
+            {
+                return Err(invalid(
+                    format!("joints[{i}]"),
+                    "lies wholly outside region.polygon, where it cuts nothing",
+                ));
             }
         }
         if let Some(v) = &self.voronoi {
@@ -441,6 +453,18 @@ impl Scene {
         }
         for (i, r) in self.blocks.regions.iter().enumerate() {
             validate_selection(&format!("blocks.regions[{i}]"), &r.polygon, &r.at)?;
+            if let (Some(at), Some(region)) = (r.at, &region)
+                && !region.contains(at)
+            {
+                return Err(invalid(
+                    format!("blocks.regions[{i}].at"),
+                    format!(
+                        "({}, {}) m lies outside region.polygon, where no block is to take the mode",
+                        Num(at[0]),
+                        Num(at[1])
+                    ),
+                ));
+            }
         }
         let s = &self.in_situ;
         for (f, v) in [
@@ -471,6 +495,7 @@ impl Scene {
         self.validate_supports()?;
         self.validate_stages()?;
         self.validate_realization()?;
+        self.validate_stress_magnitudes()?;
         self.validate_limits()
     }
 

@@ -8,7 +8,7 @@ use adit_meshing::{
 };
 
 use super::repair::{MAX_REPAIRS, drop_piece, joint_beside};
-use crate::scene::{BlockMode, Scene, Shape};
+use crate::scene::{BlockMode, DEFAULT_MERGE, Scene, Shape};
 
 /// The domain a scene describes: the region with its excavations, then its inclusions, as holes
 /// (hole j ≥ the number of excavations is inclusion j − that number). Errors name the scene field.
@@ -100,6 +100,10 @@ pub struct Meshed {
     pub repairs: Vec<String>,
     /// The blocks too thin to zone at the finest size asked for (`Thin`), whatever their mode now.
     pub(crate) thin: Vec<Thin>,
+    /// Rock outside a filled hole's profile that fills it (warnings).
+    pub(crate) fill_outside: Vec<FillOutside>,
+    /// The joint sets none of whose traces reaches the region (warnings).
+    pub(crate) sets_outside: Vec<usize>,
     /// The distance within which the cutter merged vertices, m.
     pub merge_tolerance: f64,
 }
@@ -259,6 +263,7 @@ fn mesh_blocks(scene: &Scene, domain: Domain) -> Result<Meshed, MeshError> {
         }
     }
     let mut joints = joint_segments(scene, &domain)?;
+    let sets_outside = sets_outside(scene, &domain, &joints);
     let mut repairs = Vec::new();
     loop {
         let mut meshed = cut_and_zone(scene, domain.clone(), &joints, tolerance)?;
@@ -274,6 +279,7 @@ fn mesh_blocks(scene: &Scene, domain: Domain) -> Result<Meshed, MeshError> {
         });
         let Some((i, angle, at)) = repairable else {
             meshed.repairs = repairs;
+            meshed.sets_outside = sets_outside;
             return Ok(meshed);
         };
         let field = edge_source(scene, joints[i].kind);
@@ -292,8 +298,20 @@ fn mesh_blocks(scene: &Scene, domain: Domain) -> Result<Meshed, MeshError> {
     }
 }
 
-/// `zoning.merge_tolerance` when the scene gives none, as a fraction of `edge_at_excavation`.
-pub const DEFAULT_MERGE: f64 = 0.3;
+/// The joint sets none of whose traces `joints` reaches the region (a set the region's box
+/// holds but a region of another shape misses, or sparse traces drawn around it).
+fn sets_outside(scene: &Scene, domain: &Domain, joints: &[Segment]) -> Vec<usize> {
+    let mut reaches = vec![false; scene.joint_sets.len()];
+    for s in joints {
+        if let EdgeKind::Joint(k) = s.kind
+            && let Some(r) = reaches.get_mut(k as usize)
+            && !*r
+        {
+            *r = domain.outer.meets_segment(s.a, s.b);
+        }
+    }
+    (0..reaches.len()).filter(|&k| !reaches[k]).collect()
+}
 
 /// The distance, m, within which the cutter merges vertices: `zoning.merge_tolerance`, by default
 /// `DEFAULT_MERGE` × `edge_at_excavation`, within the bounds below. Vertices closer than 0.3 of the
@@ -342,16 +360,13 @@ fn cut_and_zone(
     } else {
         cut_blocks_filled(&domain, &filled, joints, tol)?
     };
-    // The hole each block fills: a staged excavation's rock, or an inclusion.
-    let hole: Vec<u32> = blocking
-        .blocks
-        .iter()
-        .map(|b| {
-            (0..domain.holes.len())
-                .find(|&j| filled[j] && b.within(&domain.holes[j].polygon, tol))
-                .map_or(NOT_FILL, |j| j as u32)
-        })
-        .collect();
+    let excavations: Vec<Polygon> = domain.holes.iter().map(|h| h.polygon.clone()).collect();
+    let mut modes = block_modes(scene, &blocking.blocks);
+    let thin = thin_blocks(scene, &blocking.blocks, &zoning, &mut modes);
+    // Two zoned blocks put their nodes at the same places along the joint between them.
+    let zoned: Vec<bool> = modes.iter().map(|&m| m == BlockMode::Deformable).collect();
+    let meshes = triangulate_blocks(&blocking.blocks, &zoned, &excavations, &zoning)?;
+    let (hole, fill_outside) = holes_filled(&blocking.blocks, &meshes, &excavations, &filled);
     let excavations = scene.excavations.len() as u32;
     let fill = hole
         .iter()
@@ -367,12 +382,6 @@ fn cut_and_zone(
             }
         })
         .collect();
-    let excavations: Vec<Polygon> = domain.holes.iter().map(|h| h.polygon.clone()).collect();
-    let mut modes = block_modes(scene, &blocking.blocks);
-    let thin = thin_blocks(scene, &blocking.blocks, &zoning, &mut modes);
-    // Two zoned blocks put their nodes at the same places along the joint between them.
-    let zoned: Vec<bool> = modes.iter().map(|&m| m == BlockMode::Deformable).collect();
-    let meshes = triangulate_blocks(&blocking.blocks, &zoned, &excavations, &zoning)?;
     Ok(Meshed {
         domain,
         blocking,
@@ -382,8 +391,75 @@ fn cut_and_zone(
         inclusion,
         repairs: vec![],
         thin,
+        fill_outside,
+        sets_outside: Vec::new(),
         merge_tolerance: tol,
     })
+}
+
+/// Rock outside a filled hole's profile that fills it all the same (a block mostly inside).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FillOutside {
+    /// The hole (excavation, then inclusion, in the domain's order).
+    pub hole: u32,
+    /// Area of the blocks' zones outside the profile, m².
+    pub area: f64,
+    /// The centroid of the largest such zone, m.
+    pub at: [f64; 2],
+}
+
+/// The hole each block fills (`NOT_FILL` for rock) among the `filled` ones of `holes`: the one
+/// holding more than half of its area, measured over the triangles of its zoning (or outline) by
+/// where their centroids lie. A block lies wholly inside a hole or outside it but for the
+/// vertices the cutter merged within its tolerance, so the measure tells even a sliver of rock
+/// along the wall (all its vertices within the tolerance of it) from the fill; with it, the rock
+/// outside each profile that fills it all the same.
+fn holes_filled(
+    blocks: &[Block],
+    meshes: &[TriMesh],
+    holes: &[Polygon],
+    filled: &[bool],
+) -> (Vec<u32>, Vec<FillOutside>) {
+    let bounds: Vec<_> = holes.iter().map(Polygon::bounds).collect();
+    let mut outside: Vec<FillOutside> = Vec::new();
+    let hole = (blocks.iter().zip(meshes))
+        .map(|(b, mesh)| {
+            let (lo, hi) = b.outer.bounds();
+            let candidates = (0..holes.len()).filter(|&j| {
+                let (hlo, hhi) = bounds[j];
+                filled[j] && (0..2).all(|d| lo[d] <= hhi[d] && hlo[d] <= hi[d])
+            });
+            for j in candidates {
+                let (mut inside, mut out, mut largest) = (0.0, 0.0, (0.0, [0.0; 2]));
+                for t in &mesh.triangles {
+                    let [a, b, c] = t.map(|v| mesh.points[v as usize]);
+                    let area =
+                        0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]));
+                    let centroid = [(a[0] + b[0] + c[0]) / 3.0, (a[1] + b[1] + c[1]) / 3.0];
+                    if holes[j].contains(centroid) {
+                        inside += area;
+                    } else {
+                        out += area;
+                        if area > largest.0 {
+                            largest = (area, centroid);
+                        }
+                    }
+                }
+                if inside > out {
+                    if out > 0.0 {
+                        outside.push(FillOutside {
+                            hole: j as u32,
+                            area: out,
+                            at: largest.1,
+                        });
+                    }
+                    return j as u32;
+                }
+            }
+            NOT_FILL
+        })
+        .collect();
+    (hole, outside)
 }
 
 /// Whether a region selects block `b`: a polygon the blocks whose centroid lies inside it, a
@@ -410,4 +486,69 @@ pub fn block_modes(scene: &Scene, blocks: &[Block]) -> Vec<BlockMode> {
                 .map_or(scene.blocks.mode, |r| r.mode)
         })
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A block of the square `lo`..`hi` (m), meshed as its two triangles.
+    fn square(lo: [f64; 2], hi: [f64; 2]) -> (Block, TriMesh) {
+        let corners = vec![lo, [hi[0], lo[1]], hi, [lo[0], hi[1]]];
+        let block = Block {
+            outer: Polygon::new(corners.clone()),
+            outer_kinds: vec![EdgeKind::Region(0); 4],
+            holes: vec![],
+            hole_kinds: vec![],
+        };
+        let mesh = TriMesh {
+            points: corners,
+            triangles: vec![[0, 1, 2], [0, 2, 3]],
+            boundary: vec![],
+            angle_limit_deg: 0.0,
+        };
+        (block, mesh)
+    }
+
+    /// The block (2, 1)–(4.5, 3) m, 4 m² of it left of x = 4 m and 1 m² right of it, zoned
+    /// along that line.
+    fn straddling() -> (Block, TriMesh) {
+        let (block, _) = square([2.0, 1.0], [4.5, 3.0]);
+        let mesh = TriMesh {
+            points: vec![
+                [2.0, 1.0],
+                [4.0, 1.0],
+                [4.5, 1.0],
+                [4.5, 3.0],
+                [4.0, 3.0],
+                [2.0, 3.0],
+            ],
+            triangles: vec![[0, 1, 4], [0, 4, 5], [1, 2, 3], [1, 3, 4]],
+            boundary: vec![],
+            angle_limit_deg: 0.0,
+        };
+        (block, mesh)
+    }
+
+    /// A block fills the hole holding most of its area; a sliver outside the wall, however
+    /// close, is rock; what of a fill block lies outside is reported.
+    #[test]
+    fn a_block_fills_the_hole_that_holds_most_of_it() {
+        let hole = Polygon::new(vec![[0.0, 0.0], [4.0, 0.0], [4.0, 4.0], [0.0, 4.0]]);
+        let (blocks, meshes): (Vec<Block>, Vec<TriMesh>) = [
+            square([1.0, 1.0], [3.0, 3.0]),  // inside
+            square([4.0, 1.0], [4.05, 3.0]), // a sliver along the wall, outside
+            straddling(),
+            square([10.0, 10.0], [11.0, 11.0]), // far away
+        ]
+        .into_iter()
+        .unzip();
+        let (fill, outside) = holes_filled(&blocks, &meshes, std::slice::from_ref(&hole), &[true]);
+        assert_eq!(fill, vec![0, NOT_FILL, 0, NOT_FILL]);
+        assert_eq!(outside.len(), 1);
+        assert!((outside[0].area - 1.0).abs() < 1e-12, "{outside:?}");
+        // A hole not filled takes nothing.
+        let (fill, _) = holes_filled(&blocks, &meshes, &[hole], &[false]);
+        assert!(fill.iter().all(|&f| f == NOT_FILL));
+    }
 }

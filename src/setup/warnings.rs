@@ -111,6 +111,25 @@ pub(super) fn warnings(scene: &Scene, meshed: &Meshed) -> anyhow::Result<Vec<Str
             o.at[1]
         ));
     }
+    for &k in &meshed.sets_outside {
+        warnings.push(format!(
+            "joint_sets[{k}]: none of its traces reaches region.polygon, so it cuts nothing \
+             (move its `origin`, or lengthen its `trace`)"
+        ));
+    }
+    for f in &meshed.fill_outside {
+        let j = f.hole as usize;
+        let hole = match scene.excavations.get(j) {
+            Some(e) => format!("excavation '{}'", e.name),
+            None => format!("inclusions[{}]", j - scene.excavations.len()),
+        };
+        warnings.push(format!(
+            "{hole}: {:.3e} m² of rock outside its profile (near ({:.3}, {:.3}) m) lies in blocks \
+             mostly inside it and goes with them (the cutter merged their vertices onto the wall \
+             within zoning.merge_tolerance = {:.4} m)",
+            f.area, f.at[0], f.at[1], meshed.merge_tolerance
+        ));
+    }
     if meshed.blocking.absorbed_joint_length > 0.0 {
         warnings.push(format!(
             "{:.3} m of joint traces end inside blocks and were absorbed into them",
