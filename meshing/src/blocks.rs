@@ -39,8 +39,9 @@ impl Block {
         }
     }
 
-    /// Whether every vertex of the block lies inside `polygon` or within `tol` of its boundary
-    /// (the rock of a filled excavation).
+    /// Whether every vertex of the block lies inside `polygon` or within `tol` of its boundary.
+    /// (Not how a block is found to fill an excavation: a sliver of rock along the wall passes
+    /// this too; `adit` weighs where the block's area lies.)
     pub fn within(&self, polygon: &Polygon, tol: f64) -> bool {
         self.outer
             .vertices

@@ -155,7 +155,7 @@ impl Scene {
         let sets: Vec<JointSetSpec> = (0..self.joint_sets.len())
             .map(|i| self.realized_set(i))
             .collect();
-        let mut blocks = 1.0 + traces.min(MAX_JOINTS);
+        let mut blocks = 1.0 + traces;
         for j in 0..sets.len() {
             blocks += (0..j)
                 .map(|i| crossings(&sets[i], &sets[j], area))

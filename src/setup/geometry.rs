@@ -436,7 +436,9 @@ fn holes_filled(
                     let area =
                         0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]));
                     let centroid = [(a[0] + b[0] + c[0]) / 3.0, (a[1] + b[1] + c[1]) / 3.0];
-                    if holes[j].contains(centroid) {
+                    let (hlo, hhi) = bounds[j];
+                    let in_box = (0..2).all(|d| hlo[d] <= centroid[d] && centroid[d] <= hhi[d]);
+                    if in_box && holes[j].contains(centroid) {
                         inside += area;
                     } else {
                         out += area;
