@@ -337,6 +337,10 @@ fn extreme_values_are_refused_naming_the_field() {
     dense["joint_sets"].as_array_mut().unwrap().truncate(1);
     let err = refused(&dense, "joint_sets[0].spacing");
     assert!(err.contains("zones"), "{err}");
+    // A hole too small for the cutter to resolve (1e-18 m in a 50 m model took 20 s to fail).
+    let mut tiny = model("jointed_tunnel");
+    tiny["excavations"][0]["circle"]["radius"] = json!(1e-18);
+    refused(&tiny, "excavations[0].circle.radius");
     // Explicit joints over the limit are blamed on `joints`, not on the first set.
     let many: Vec<Value> = (0..100_001)
         .map(|k| json!({ "from": [-10, k as f64 * 1e-4], "to": [10, 1.0], "material": "joint" }))

@@ -2,10 +2,13 @@
 
 mod corner_return;
 mod elastic;
+mod hoek_brown;
 mod mohr_coulomb;
 mod null;
+mod principal;
 
 pub use elastic::{Elastic, plane_strain_moduli};
+pub use hoek_brown::{HoekBrown, hoek_brown_constants};
 pub use mohr_coulomb::{MohrCoulomb, SHEAR_NOW, SHEAR_PAST, TENSION_NOW, TENSION_PAST};
 pub use null::Null;
 
@@ -27,6 +30,11 @@ pub trait ZoneLaw: Send + Sync + CopyZoneLaw {
     /// `update`, exact for a law whose return does not depend on the increment's size.
     fn trial(&self, stress: &mut Stress, state: &mut u8, plastic: &mut f64, de: &StrainIncrement) {
         self.update(stress, state, plastic, de);
+    }
+    /// Why the implicit path cannot solve with this law yet, if it cannot (`solve.method`:
+    /// `implicit` is then an error naming the reason, and `auto` cycles explicitly).
+    fn implicit_refusal(&self) -> Option<&'static str> {
+        None
     }
     /// Bulk and shear moduli (Pa) that bound the law's tangent stiffness, for the time step.
     fn moduli(&self) -> (f64, f64);

@@ -25,6 +25,7 @@
 //! Δe^ps = √(½[(Δε1 − Δεm)² + Δεm² + (Δε3 − Δεm)²]), Δε1 = λs, Δε3 = −λs Nψ, Δεm = (Δε1 + Δε3)/3.
 
 use super::corner_return::Surface;
+use super::principal::{Principal, state_after};
 use super::{Elastic, StrainIncrement, Stress, ZoneLaw, plane_strain_moduli};
 
 /// Zone state bit: yielding in shear now.
@@ -146,9 +147,7 @@ impl MohrCoulomb {
     }
 
     /// Elastic trial (plane strain), then the return in principal stresses (with the corner return
-    /// when `corners`); the in-plane principal directions are kept: σ = c' I + (r'/r)(σ − c I) in
-    /// the plane, with c, r the centre and radius of the in-plane Mohr circle before and c', r'
-    /// after.
+    /// when `corners`); the in-plane principal directions are kept (`Principal`).
     fn advance(
         &self,
         s: &mut Stress,
@@ -158,12 +157,8 @@ impl MohrCoulomb {
         corners: bool,
     ) {
         self.elastic.update(s, state, plastic, de);
-        let (c, d, t) = (0.5 * (s[0] + s[1]), 0.5 * (s[0] - s[1]), s[3]);
-        let r = (d * d + t * t).sqrt();
-        // Principal values with their origin: 0 in-plane minor, 1 in-plane major, 2 out-of-plane.
-        let mut v = [(c - r, 0u8), (c + r, 1), (s[2], 2)];
-        v.sort_by(|a, b| a.0.total_cmp(&b.0));
-        let mut p = [v[0].0, v[1].0, v[2].0];
+        let principal = Principal::of(s);
+        let mut p = principal.values();
         let softened;
         let surface = if self.softening.is_empty() {
             &self.intact
@@ -174,32 +169,10 @@ impl MohrCoulomb {
         };
         let (now, eps) = Self::correct(surface, &mut p, corners);
         *plastic += eps;
-        *state = (*state & (SHEAR_PAST | TENSION_PAST))
-            | now
-            | if now & SHEAR_NOW != 0 { SHEAR_PAST } else { 0 }
-            | if now & TENSION_NOW != 0 {
-                TENSION_PAST
-            } else {
-                0
-            };
-        if now == 0 {
-            return;
+        *state = state_after(*state, now);
+        if now != 0 {
+            principal.put(&p, s);
         }
-        let mut by_origin = [0.0; 3];
-        for (k, &(_, origin)) in v.iter().enumerate() {
-            by_origin[origin as usize] = p[k];
-        }
-        let (minor, major) = (by_origin[0], by_origin[1]);
-        let c_new = 0.5 * (minor + major);
-        let scale = if r > 0.0 {
-            0.5 * (major - minor) / r
-        } else {
-            0.0
-        };
-        s[0] = c_new + d * scale;
-        s[1] = c_new - d * scale;
-        s[3] = t * scale;
-        s[2] = by_origin[2];
     }
 }
 

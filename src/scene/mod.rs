@@ -21,7 +21,9 @@ pub use limits::{
 };
 pub use realization::Scatter;
 pub use supports::{BoltLine, BoltPattern, BoltSpec, LinerSpec};
-pub use typed::{BoltLayout, Condition, JointLawSpec, Load, Shape, ZoneLawSpec};
+pub use typed::{
+    BoltLayout, Condition, HoekBrownConstants, JointLawSpec, Load, Shape, ZoneLawSpec,
+};
 pub use validate::SceneError;
 
 /// A whole scene, as read from JSON.
@@ -131,7 +133,8 @@ pub struct Stage {
     pub solve: Option<SolveSpec>,
 }
 
-/// A zone material: isotropic elasticity, and the strength of the Mohr–Coulomb law.
+/// A zone material: isotropic elasticity, and the strength of the Mohr–Coulomb or the
+/// generalized Hoek–Brown law.
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Material {
@@ -141,7 +144,7 @@ pub struct Material {
     pub young: f64,
     /// Poisson's ratio (dimensionless, −1 < ν < 0.5).
     pub poisson: f64,
-    /// Zone law: `elastic` (default) or `mohr_coulomb`.
+    /// Zone law: `elastic` (default), `mohr_coulomb` or `hoek_brown`.
     #[serde(default)]
     pub law: ZoneLawKind,
     /// Mohr–Coulomb: cohesion c, Pa (required for that law).
@@ -160,6 +163,25 @@ pub struct Material {
     /// (from `cohesion`, `friction` at 0; linear between points, constant after the last).
     #[serde(default)]
     pub softening: Vec<SofteningPoint>,
+    /// Hoek–Brown: the intact rock's uniaxial compressive strength σci, Pa (required for that law).
+    #[serde(default)]
+    pub sigma_ci: Option<f64>,
+    /// Hoek–Brown: geological strength index GSI (with `mi`; or give `mb`, `s`, `a`).
+    #[serde(default)]
+    pub gsi: Option<f64>,
+    /// Hoek–Brown: the intact rock's constant mi (with `gsi`).
+    #[serde(default)]
+    pub mi: Option<f64>,
+    /// Hoek–Brown: disturbance factor D in [0, 1] (with `gsi`; default 0).
+    #[serde(default)]
+    pub disturbance: Option<f64>,
+    /// Hoek–Brown: the rock mass's mb, s and a given directly (instead of `gsi`, `mi`).
+    #[serde(default)]
+    pub mb: Option<f64>,
+    #[serde(default)]
+    pub s: Option<f64>,
+    #[serde(default)]
+    pub a: Option<f64>,
 }
 
 /// One point of a softening table.
@@ -181,6 +203,7 @@ pub enum ZoneLawKind {
     #[default]
     Elastic,
     MohrCoulomb,
+    HoekBrown,
 }
 
 /// The modelled region: one polygon, its edge names and its material.
@@ -1054,9 +1077,56 @@ mod tests {
             )),
             "materials.rock.softening[1].plastic_strain: must be positive and increase along the table"
         );
+        assert_eq!(
+            error_of(&GOOD.replace("\"poisson\": 0.2", r#""poisson": 0.2, "cohesion": 1e6"#)),
+            "materials.rock.cohesion: belongs to `law: mohr_coulomb`, not this material's law"
+        );
+    }
+
+    /// A Hoek–Brown material needs σci and either GSI and mi or mb, s and a; a field of another
+    /// law is named, and each value's range is checked.
+    #[test]
+    fn hoek_brown_material_needs_its_strength() {
+        let hb = |extra: &str| {
+            GOOD.replace(
+                "\"poisson\": 0.2",
+                &format!(r#""poisson": 0.2, "law": "hoek_brown"{extra}"#),
+            )
+        };
+        assert!(Scene::from_json(&hb(r#", "sigma_ci": 8e7, "gsi": 50, "mi": 12"#), "t").is_ok());
+        let given = r#", "sigma_ci": 8e7, "mb": 2, "s": 0.004, "a": 0.5, "dilation": 10"#;
+        assert!(Scene::from_json(&hb(given), "t").is_ok());
+        assert_eq!(
+            error_of(&hb(r#", "gsi": 50, "mi": 12"#)),
+            "materials.rock: `law: hoek_brown` needs `sigma_ci`"
+        );
         assert!(
-            error_of(&GOOD.replace("\"poisson\": 0.2", r#""poisson": 0.2, "cohesion": 1e6"#))
-                .contains("belong to `law: mohr_coulomb`")
+            error_of(&hb(r#", "sigma_ci": 8e7, "gsi": 50, "mi": 12, "mb": 2"#))
+                .contains("needs either `gsi` and `mi`")
+        );
+        assert_eq!(
+            error_of(&hb(
+                r#", "sigma_ci": 8e7, "gsi": 50, "mi": 12, "friction": 30"#
+            )),
+            "materials.rock.friction: belongs to `law: mohr_coulomb`, not this material's law"
+        );
+        assert!(
+            error_of(&hb(r#", "sigma_ci": 8e7, "gsi": 150, "mi": 12"#))
+                .starts_with("materials.rock.gsi: must be in [1, 100]")
+        );
+        assert!(
+            error_of(&hb(
+                r#", "sigma_ci": 8e7, "gsi": 50, "mi": 12, "disturbance": 2"#
+            ))
+            .starts_with("materials.rock.disturbance:")
+        );
+        assert!(
+            error_of(&hb(r#", "sigma_ci": 8e7, "mb": 2, "s": 0.004, "a": 0.3"#))
+                .starts_with("materials.rock.a:")
+        );
+        assert!(
+            error_of(&GOOD.replace("\"poisson\": 0.2", r#""poisson": 0.2, "gsi": 50"#))
+                .starts_with("materials.rock.gsi: belongs to `law: hoek_brown`")
         );
     }
 

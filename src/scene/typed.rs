@@ -61,28 +61,80 @@ pub enum ZoneLawSpec<'a> {
         /// Strain-softening table.
         softening: &'a [SofteningPoint],
     },
+    HoekBrown {
+        /// The intact rock's uniaxial compressive strength σci, Pa.
+        sigma_ci: f64,
+        /// Where mb, s and a come from.
+        constants: HoekBrownConstants,
+        /// Dilation angle ψ, degrees.
+        dilation: f64,
+        /// Tensile strength σt, Pa (`None`: the apex s σci / mb).
+        tensile_strength: Option<f64>,
+    },
+}
+
+/// The Hoek–Brown constants as a scene gives them.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum HoekBrownConstants {
+    /// From the geological strength index, mi and the disturbance factor D.
+    Gsi { gsi: f64, mi: f64, disturbance: f64 },
+    /// mb, s and a themselves.
+    Given { mb: f64, s: f64, a: f64 },
+}
+
+impl HoekBrownConstants {
+    /// (mb, s, a).
+    pub fn values(self) -> (f64, f64, f64) {
+        match self {
+            HoekBrownConstants::Gsi {
+                gsi,
+                mi,
+                disturbance,
+            } => crate::law::hoek_brown_constants(gsi, mi, disturbance),
+            HoekBrownConstants::Given { mb, s, a } => (mb, s, a),
+        }
+    }
 }
 
 impl Material {
-    /// Its law: Mohr–Coulomb needs `cohesion` and `friction`; the elastic law takes no strength.
+    /// Its law: Mohr–Coulomb needs `cohesion` and `friction`, Hoek–Brown `sigma_ci` and either
+    /// `gsi` and `mi` or `mb`, `s` and `a`; a field of another law than the material's is an
+    /// error (it could not act), as is any strength with the elastic law.
     pub fn law_spec(&self, path: &str) -> Result<ZoneLawSpec<'_>, SceneError> {
+        let mohr_coulomb = [
+            ("cohesion", self.cohesion.is_some()),
+            ("friction", self.friction.is_some()),
+            ("softening", !self.softening.is_empty()),
+        ];
+        let hoek_brown = [
+            ("sigma_ci", self.sigma_ci.is_some()),
+            ("gsi", self.gsi.is_some()),
+            ("mi", self.mi.is_some()),
+            ("disturbance", self.disturbance.is_some()),
+            ("mb", self.mb.is_some()),
+            ("s", self.s.is_some()),
+            ("a", self.a.is_some()),
+        ];
+        let shared = [
+            ("dilation", self.dilation != 0.0),
+            ("tensile_strength", self.tensile_strength.is_some()),
+        ];
+        let foreign = |fields: &[(&str, bool)], law: &str| match fields.iter().find(|f| f.1) {
+            Some((name, _)) => Err(invalid(
+                format!("{path}.{name}"),
+                format!("belongs to `law: {law}`, not this material's law"),
+            )),
+            None => Ok(()),
+        };
         match self.law {
             ZoneLawKind::Elastic => {
-                let given = self.cohesion.is_some()
-                    || self.friction.is_some()
-                    || self.tensile_strength.is_some()
-                    || self.dilation != 0.0
-                    || !self.softening.is_empty();
-                if given {
-                    return Err(invalid(
-                        path,
-                        "cohesion, friction, dilation, tensile_strength and softening belong to \
-                         `law: mohr_coulomb`",
-                    ));
-                }
+                foreign(&mohr_coulomb, "mohr_coulomb")?;
+                foreign(&shared, "mohr_coulomb` or `law: hoek_brown")?;
+                foreign(&hoek_brown, "hoek_brown")?;
                 Ok(ZoneLawSpec::Elastic)
             }
             ZoneLawKind::MohrCoulomb => {
+                foreign(&hoek_brown, "hoek_brown")?;
                 let (Some(cohesion), Some(friction)) = (self.cohesion, self.friction) else {
                     return Err(invalid(
                         path,
@@ -95,6 +147,35 @@ impl Material {
                     dilation: self.dilation,
                     tensile_strength: self.tensile_strength,
                     softening: &self.softening,
+                })
+            }
+            ZoneLawKind::HoekBrown => {
+                foreign(&mohr_coulomb, "mohr_coulomb")?;
+                let Some(sigma_ci) = self.sigma_ci else {
+                    return Err(invalid(path, "`law: hoek_brown` needs `sigma_ci`"));
+                };
+                let constants = match (self.gsi, self.mi, self.mb, self.s, self.a) {
+                    (Some(gsi), Some(mi), None, None, None) => HoekBrownConstants::Gsi {
+                        gsi,
+                        mi,
+                        disturbance: self.disturbance.unwrap_or(0.0),
+                    },
+                    (None, None, Some(mb), Some(s), Some(a)) if self.disturbance.is_none() => {
+                        HoekBrownConstants::Given { mb, s, a }
+                    }
+                    _ => {
+                        return Err(invalid(
+                            path,
+                            "`law: hoek_brown` needs either `gsi` and `mi` (with `disturbance`, \
+                             default 0) or `mb`, `s` and `a`, not both",
+                        ));
+                    }
+                };
+                Ok(ZoneLawSpec::HoekBrown {
+                    sigma_ci,
+                    constants,
+                    dilation: self.dilation,
+                    tensile_strength: self.tensile_strength,
                 })
             }
         }

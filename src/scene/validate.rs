@@ -3,8 +3,8 @@
 use thiserror::Error;
 
 use super::{
-    BoundaryCondition, JointLawSpec, JointMaterial, Material, Rayleigh, Scene, Shape, SolveMethod,
-    SolveMode, SolveSpec, ZoneLawSpec,
+    BoundaryCondition, HoekBrownConstants, JointLawSpec, JointMaterial, Material, Rayleigh, Scene,
+    Shape, SolveMethod, SolveMode, SolveSpec, ZoneLawSpec,
 };
 
 /// Why a scene cannot be used.
@@ -68,6 +68,12 @@ fn validate_material(p: &str, m: &Material) -> Result<(), SceneError> {
 fn validate_strength(p: &str, m: &Material) -> Result<(), SceneError> {
     match m.law_spec(p)? {
         ZoneLawSpec::Elastic => Ok(()),
+        ZoneLawSpec::HoekBrown {
+            sigma_ci,
+            constants,
+            dilation,
+            tensile_strength,
+        } => validate_hoek_brown(p, sigma_ci, constants, dilation, tensile_strength),
         ZoneLawSpec::MohrCoulomb {
             cohesion: c,
             friction: phi,
@@ -122,6 +128,58 @@ fn validate_strength(p: &str, m: &Material) -> Result<(), SceneError> {
             Ok(())
         }
     }
+}
+
+/// The Hoek–Brown fields of a material at `p`.
+fn validate_hoek_brown(
+    p: &str,
+    sigma_ci: f64,
+    constants: HoekBrownConstants,
+    dilation: f64,
+    tensile_strength: Option<f64>,
+) -> Result<(), SceneError> {
+    positive(&format!("{p}.sigma_ci"), sigma_ci)?;
+    let within = |field: &str, v: f64, lo: f64, hi: f64, rule: &str| {
+        if (lo..=hi).contains(&v) {
+            Ok(())
+        } else {
+            Err(invalid(
+                format!("{p}.{field}"),
+                format!("must be {rule}, got {}", Num(v)),
+            ))
+        }
+    };
+    match constants {
+        HoekBrownConstants::Gsi {
+            gsi,
+            mi,
+            disturbance,
+        } => {
+            within("gsi", gsi, 1.0, 100.0, "in [1, 100]")?;
+            positive(&format!("{p}.mi"), mi)?;
+            within("disturbance", disturbance, 0.0, 1.0, "in [0, 1]")?;
+        }
+        HoekBrownConstants::Given { mb, s, a } => {
+            positive(&format!("{p}.mb"), mb)?;
+            within("s", s, 0.0, 1.0, "in [0, 1]")?;
+            within("a", a, 0.5, 1.0, "in [0.5, 1]")?;
+        }
+    }
+    if !(0.0..90.0).contains(&dilation) {
+        return Err(invalid(
+            format!("{p}.dilation"),
+            format!("must be in [0, 90) degrees, got {}", Num(dilation)),
+        ));
+    }
+    if let Some(t) = tensile_strength
+        && (t.is_nan() || t < 0.0)
+    {
+        return Err(invalid(
+            format!("{p}.tensile_strength"),
+            format!("must be zero or positive, got {}", Num(t)),
+        ));
+    }
+    Ok(())
 }
 
 /// A joint material at `p` (top level or a stage's change).
@@ -496,6 +554,7 @@ impl Scene {
         self.validate_stages()?;
         self.validate_realization()?;
         self.validate_stress_magnitudes()?;
+        self.validate_feature_sizes()?;
         self.validate_limits()
     }
 

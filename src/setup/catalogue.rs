@@ -4,7 +4,7 @@
 
 use crate::contact::detect::NO_MATERIAL;
 use crate::joint::{ContinuouslyYielding, CoulombSlip, Glued, JointLaw, tan_deg};
-use crate::law::{Elastic, MohrCoulomb, Null, ZoneLaw};
+use crate::law::{Elastic, HoekBrown, MohrCoulomb, Null, ZoneLaw};
 use crate::model::MaterialId;
 use crate::scene::{JointLawSpec, JointMaterial, Material, Scene, SceneError, ZoneLawSpec};
 
@@ -30,6 +30,18 @@ pub fn zone_law(m: &Material, path: &str) -> Result<Box<dyn ZoneLaw>, SceneError
                 .collect();
             Box::new(law)
         }
+        ZoneLawSpec::HoekBrown {
+            sigma_ci,
+            constants,
+            dilation,
+            tensile_strength,
+        } => Box::new(HoekBrown::new(
+            elastic,
+            sigma_ci,
+            constants.values(),
+            dilation,
+            tensile_strength.unwrap_or(f64::INFINITY),
+        )),
     })
 }
 

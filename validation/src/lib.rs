@@ -3,6 +3,7 @@
 
 pub mod axisymmetric;
 pub mod bundled;
+pub mod carranza_torres;
 pub mod case;
 pub mod cases;
 pub mod corners;

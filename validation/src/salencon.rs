@@ -98,34 +98,64 @@ impl Salencon {
             return u_rp;
         }
         let n_psi = (1.0 + self.dilation.sin()) / (1.0 - self.dilation.sin());
-        let nu = self.poisson;
-        // Plane-strain elastic strains of the stress change from −p0.
-        let elastic = |r: f64| {
-            let (sr, st) = self.stress(r);
-            let (dr, dt) = (sr + self.p0, st + self.p0);
-            let k = 1.0 / (2.0 * self.shear);
-            (
-                k * ((1.0 - nu) * dr - nu * dt),
-                k * ((1.0 - nu) * dt - nu * dr),
-            )
+        let elastic = ElasticStrain {
+            p0: self.p0,
+            shear: self.shear,
+            poisson: self.poisson,
         };
-        let du = |r: f64, u: f64| {
-            let (er, et) = elastic(r);
-            er + n_psi * et - n_psi * u / r
-        };
-        let steps = 20_000;
-        let h = (self.radius - rp) / steps as f64;
-        let (mut r, mut u) = (rp, u_rp);
-        for _ in 0..steps {
-            let k1 = du(r, u);
-            let k2 = du(r + 0.5 * h, u + 0.5 * h * k1);
-            let k3 = du(r + 0.5 * h, u + 0.5 * h * k2);
-            let k4 = du(r + h, u + h * k3);
-            u += h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
-            r += h;
-        }
-        u
+        wall_by_flow(self.radius, rp, u_rp, n_psi, |r| elastic.of(self.stress(r)))
     }
+}
+
+/// The plane-strain elastic strains of a stress change from the hydrostatic −p0.
+pub struct ElasticStrain {
+    /// In-situ pressure (compression positive), Pa.
+    pub p0: f64,
+    /// Shear modulus, Pa.
+    pub shear: f64,
+    pub poisson: f64,
+}
+
+impl ElasticStrain {
+    /// (ε_r, ε_θ) of the stresses (σr, σθ) (Pa, tension positive).
+    pub fn of(&self, (sr, st): (f64, f64)) -> (f64, f64) {
+        let nu = self.poisson;
+        let (dr, dt) = (sr + self.p0, st + self.p0);
+        let k = 1.0 / (2.0 * self.shear);
+        (
+            k * ((1.0 - nu) * dr - nu * dt),
+            k * ((1.0 - nu) * dt - nu * dr),
+        )
+    }
+}
+
+/// The wall's radial displacement u(a), m (negative: inward), of a hole of `radius` a whose
+/// plastic zone reaches `rp` with u(Rp) = `u_rp`: the flow rule ε_r^p = −Nψ ε_θ^p (`n_psi`) and the
+/// elastic strains `elastic(r)` (ε_r^e, ε_θ^e) make du/dr + Nψ u/r = ε_r^e + Nψ ε_θ^e on
+/// a ≤ r ≤ Rp, a linear ODE integrated by RK4 on 20 000 steps (to round-off).
+pub fn wall_by_flow(
+    radius: f64,
+    rp: f64,
+    u_rp: f64,
+    n_psi: f64,
+    elastic: impl Fn(f64) -> (f64, f64),
+) -> f64 {
+    let du = |r: f64, u: f64| {
+        let (er, et) = elastic(r);
+        er + n_psi * et - n_psi * u / r
+    };
+    let steps = 20_000;
+    let h = (radius - rp) / steps as f64;
+    let (mut r, mut u) = (rp, u_rp);
+    for _ in 0..steps {
+        let k1 = du(r, u);
+        let k2 = du(r + 0.5 * h, u + 0.5 * h * k1);
+        let k3 = du(r + 0.5 * h, u + 0.5 * h * k2);
+        let k4 = du(r + h, u + h * k3);
+        u += h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+        r += h;
+    }
+    u
 }
 
 /// Rock and load of one Salençon case (the validation's own: c = 5 MPa, φ = 30°, ψ = 0, ν = 0.25,
@@ -299,12 +329,69 @@ fn measure(
     release: u64,
     method: SolveMethod,
 ) -> anyhow::Result<(CaseReport, f64)> {
+    let (sc, exact) = scene(kirsch, factor, pi, rock);
+    let rp = exact.plastic_radius();
+    let case = if *rock == Rock::SHIPPED {
+        format!(
+            "Salençon: hole in Mohr–Coulomb rock, p0 = 30 MPa, pi = {} MPa, Rp = {rp:.3} m (×{factor}){}",
+            pi / 1e6,
+            crate::method_suffix(method)
+        )
+    } else {
+        format!(
+            "Salençon c = {} MPa, φ = {}°, ψ = {}°, ν = {}, p0 = {} MPa{}, Rp = {rp:.3} m (×{factor}){}",
+            rock.cohesion / 1e6,
+            rock.friction_deg,
+            rock.dilation_deg,
+            rock.poisson,
+            rock.p0 / 1e6,
+            if rock.mixed { ", mixed" } else { "" },
+            crate::method_suffix(method)
+        )
+    };
+    measure_hole(sc, &exact, release, method, case)
+}
+
+/// An axisymmetric hole's closed form, what [`measure_hole`] compares a run with.
+pub trait ClosedHole {
+    /// Plastic radius, m.
+    fn plastic_radius(&self) -> f64;
+    /// Radial and hoop stress at radius r, Pa (tension positive).
+    fn stress(&self, r: f64) -> (f64, f64);
+    /// Radial displacement of the wall, m (negative: inward).
+    fn wall_displacement(&self) -> f64;
+}
+
+impl ClosedHole for Salencon {
+    fn plastic_radius(&self) -> f64 {
+        Salencon::plastic_radius(self)
+    }
+    fn stress(&self, r: f64) -> (f64, f64) {
+        Salencon::stress(self, r)
+    }
+    fn wall_displacement(&self) -> f64 {
+        Salencon::wall_displacement(self)
+    }
+}
+
+/// Solve the hole scene `sc` by `method` (its out-of-balance force released as `release` says,
+/// `crate::release_gradually`) and compare it with `exact`: `plastic_radius` (radius of a circle
+/// with the hole's area plus the yielded zones' area, against Rp), `stress_l2` (area-weighted L2
+/// of (σr, σθ) over zones with centroid r ≤ 3Rp, relative to the exact norm there) and
+/// `wall_displacement` (mean radial displacement of the wall nodes against u(a)); the row named
+/// `case`, with the wall displacement over the closed form's, u_h / u.
+pub fn measure_hole(
+    mut sc: Scene,
+    exact: &dyn ClosedHole,
+    release: u64,
+    method: SolveMethod,
+    case: String,
+) -> anyhow::Result<(CaseReport, f64)> {
     let start = Instant::now();
-    let (mut sc, exact) = scene(kirsch, factor, pi, rock);
     sc.solve.method = method;
     crate::release_gradually(&mut sc.solve, release);
     let mut b = setup(&sc)?;
-    let (cycles, implicit) = crate::settle_by_method(&mut b.model, &sc.solve, "Salençon case")?;
+    let (cycles, implicit) = crate::settle_by_method(&mut b.model, &sc.solve, "hole case")?;
     let (m, rp) = (&b.model, exact.plastic_radius());
     let z = &m.zones;
     let hole_area = b.plan.boundary.domain.holes[0].polygon.signed_area().abs();
@@ -340,24 +427,7 @@ fn measure(
     let u_exact = exact.wall_displacement();
     let h = (h2 / count).sqrt();
     let report = CaseReport::new(
-        if *rock == Rock::SHIPPED {
-            format!(
-                "Salençon: hole in Mohr–Coulomb rock, p0 = 30 MPa, pi = {} MPa, Rp = {rp:.3} m (×{factor}){}",
-                pi / 1e6,
-                crate::method_suffix(method)
-            )
-        } else {
-            format!(
-                "Salençon c = {} MPa, φ = {}°, ψ = {}°, ν = {}, p0 = {} MPa{}, Rp = {rp:.3} m (×{factor}){}",
-                rock.cohesion / 1e6,
-                rock.friction_deg,
-                rock.dilation_deg,
-                rock.poisson,
-                rock.p0 / 1e6,
-                if rock.mixed { ", mixed" } else { "" },
-                crate::method_suffix(method)
-            )
-        },
+        case,
         z.len(),
         cycles,
         start.elapsed().as_secs_f64(),

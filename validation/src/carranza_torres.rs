@@ -1,0 +1,401 @@
+//! Circular hole in generalized Hoek–Brown rock under hydrostatic stress p0 with an internal
+//! pressure pi (Carranza-Torres, "Elasto-plastic solution of tunnel problems using the generalized
+//! form of the Hoek–Brown failure criterion", IJRMMS 41 suppl. 1, 2004). Pressures positive in
+//! compression, q(σ) = σci (mb σ/σci + s)^a the strength σθ − σr at a radial stress σ:
+//!
+//!   critical pressure  pcr:  2 (p0 − pcr) = q(pcr)  (the elastic zone's wall meets the yield
+//!                      surface there: σθ = 2p0 − σr);
+//!   plastic zone       dσr/d(ln r) = q(σr), σr(a) = pi, so ln(Rp/a) = ∫_pi^pcr dσ / q(σ);
+//!   elastic zone       σr = p0 − (p0 − pcr)(Rp/r)²,  σθ = p0 + (p0 − pcr)(Rp/r)².
+//!
+//! Carranza-Torres writes these in scaled stresses and, for a ≠ 1/2, integrates them numerically;
+//! here the integral is Simpson's rule on 20 000 panels and the plastic zone's radial stress a
+//! table of the same ODE by RK4 in ln r (interpolated linearly: to about 1e-9 of p0). The wall's
+//! radial displacement follows from the flow rule's compatibility with the elastic strains
+//! (`salencon::wall_by_flow`, as for Mohr–Coulomb), from u(Rp) = −(p0 − pcr) Rp / (2G).
+
+use adit::Scene;
+use adit::scene::{SolveMethod, ZoneLawKind};
+
+use crate::kirsch_case::scaled;
+use crate::report::CaseReport;
+use crate::salencon::{ClosedHole, ElasticStrain, measure_hole, wall_by_flow};
+
+/// Steps of the quadrature and of the radial-stress table.
+const STEPS: usize = 20_000;
+
+/// The closed form of one case.
+#[derive(Debug, Clone)]
+pub struct CarranzaTorres {
+    /// Hole radius a, m.
+    pub radius: f64,
+    /// In-situ and internal pressures (compression positive), Pa.
+    pub p0: f64,
+    pub pi: f64,
+    /// σci, Pa, and mb, s, a.
+    pub sigma_ci: f64,
+    pub mb: f64,
+    pub s: f64,
+    pub a: f64,
+    /// Dilation angle ψ, rad.
+    pub dilation: f64,
+    /// Shear modulus, Pa, and Poisson's ratio.
+    pub shear: f64,
+    pub poisson: f64,
+    /// pcr (Pa) and Rp (m), computed once by `new`.
+    pcr: f64,
+    rp: f64,
+    /// σr (compression positive, Pa) at ln(r/a) = k ln(Rp/a)/STEPS, k = 0..=STEPS.
+    table: Vec<f64>,
+}
+
+impl CarranzaTorres {
+    #[allow(clippy::too_many_arguments)]
+    pub fn new(
+        radius: f64,
+        (p0, pi): (f64, f64),
+        sigma_ci: f64,
+        (mb, s, a): (f64, f64, f64),
+        dilation: f64,
+        shear: f64,
+        poisson: f64,
+    ) -> CarranzaTorres {
+        let mut c = CarranzaTorres {
+            radius,
+            p0,
+            pi,
+            sigma_ci,
+            mb,
+            s,
+            a,
+            dilation,
+            shear,
+            poisson,
+            pcr: 0.0,
+            rp: radius,
+            table: Vec::new(),
+        };
+        c.pcr = c.solve_critical_pressure();
+        c.rp = c.solve_plastic_radius();
+        c.table = c.radial_table();
+        c
+    }
+
+    /// q(σ) = σci (mb σ/σci + s)^a, Pa (0 beyond the apex).
+    pub fn strength(&self, sigma: f64) -> f64 {
+        self.sigma_ci
+            * (self.mb * sigma / self.sigma_ci + self.s)
+                .max(0.0)
+                .powf(self.a)
+    }
+
+    /// pcr, Pa.
+    pub fn critical_pressure(&self) -> f64 {
+        self.pcr
+    }
+
+    /// Plastic radius Rp, m (a when elastic).
+    pub fn plastic_radius(&self) -> f64 {
+        self.rp
+    }
+
+    /// pcr, Pa: the root of 2 (p0 − p) − q(p) between the apex −s σci/mb and p0 (bisection).
+    fn solve_critical_pressure(&self) -> f64 {
+        let f = |p: f64| 2.0 * (self.p0 - p) - self.strength(p);
+        let (mut lo, mut hi) = (-self.s * self.sigma_ci / self.mb, self.p0);
+        for _ in 0..200 {
+            let mid = 0.5 * (lo + hi);
+            if f(mid) > 0.0 {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        0.5 * (lo + hi)
+    }
+
+    /// Whether the rock yields: the support pressure is below pcr.
+    fn yields(&self) -> bool {
+        self.pi < self.critical_pressure()
+    }
+
+    /// Plastic radius Rp = a exp(∫_pi^pcr dσ / q(σ)), m (Simpson's rule); a when elastic.
+    fn solve_plastic_radius(&self) -> f64 {
+        if !self.yields() {
+            return self.radius;
+        }
+        let (lo, hi) = (self.pi, self.critical_pressure());
+        let h = (hi - lo) / STEPS as f64;
+        let g = |k: usize| 1.0 / self.strength(lo + k as f64 * h);
+        let inner: f64 = (1..STEPS)
+            .map(|k| if k % 2 == 1 { 4.0 * g(k) } else { 2.0 * g(k) })
+            .sum();
+        self.radius * (h / 3.0 * (g(0) + inner + g(STEPS))).exp()
+    }
+
+    /// σr through the plastic zone by RK4 in ln r from σr(a) = pi (see `table`).
+    fn radial_table(&self) -> Vec<f64> {
+        if !self.yields() {
+            return Vec::new();
+        }
+        let h = (self.plastic_radius() / self.radius).ln() / STEPS as f64;
+        let mut sigma = self.pi;
+        let mut table = Vec::with_capacity(STEPS + 1);
+        table.push(sigma);
+        for _ in 0..STEPS {
+            let k1 = self.strength(sigma);
+            let k2 = self.strength(sigma + 0.5 * h * k1);
+            let k3 = self.strength(sigma + 0.5 * h * k2);
+            let k4 = self.strength(sigma + h * k3);
+            sigma += h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+            table.push(sigma);
+        }
+        table
+    }
+
+    /// Radial and hoop stress at radius r ≥ a, Pa (tension positive).
+    pub fn stress(&self, r: f64) -> (f64, f64) {
+        let rp = self.plastic_radius();
+        if r < rp && !self.table.is_empty() {
+            let x = (r / self.radius).ln() / (rp / self.radius).ln() * STEPS as f64;
+            let k = (x.floor() as usize).min(STEPS - 1);
+            let w = x - k as f64;
+            let sr = (1.0 - w) * self.table[k] + w * self.table[k + 1];
+            (-sr, -(sr + self.strength(sr)))
+        } else {
+            let pe = if self.yields() {
+                self.critical_pressure()
+            } else {
+                self.pi
+            };
+            let k = (self.p0 - pe) * (rp / r).powi(2);
+            (-self.p0 + k, -self.p0 - k)
+        }
+    }
+
+    /// Radial displacement of the wall, m (negative: inward).
+    pub fn wall_displacement(&self) -> f64 {
+        let rp = self.plastic_radius();
+        let (sr_e, _) = self.stress(rp);
+        let u_rp = -(self.p0 + sr_e) * rp / (2.0 * self.shear);
+        if rp <= self.radius {
+            return u_rp;
+        }
+        let n_psi = (1.0 + self.dilation.sin()) / (1.0 - self.dilation.sin());
+        let elastic = ElasticStrain {
+            p0: self.p0,
+            shear: self.shear,
+            poisson: self.poisson,
+        };
+        wall_by_flow(self.radius, rp, u_rp, n_psi, |r| elastic.of(self.stress(r)))
+    }
+}
+
+impl ClosedHole for CarranzaTorres {
+    fn plastic_radius(&self) -> f64 {
+        CarranzaTorres::plastic_radius(self)
+    }
+    fn stress(&self, r: f64) -> (f64, f64) {
+        CarranzaTorres::stress(self, r)
+    }
+    fn wall_displacement(&self) -> f64 {
+        CarranzaTorres::wall_displacement(self)
+    }
+}
+
+/// Rock and load of one Hoek–Brown hole.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Rock {
+    pub gsi: f64,
+    pub mi: f64,
+    /// σci, Pa.
+    pub sigma_ci: f64,
+    /// Dilation angle ψ, degrees.
+    pub dilation_deg: f64,
+    /// Young's modulus, Pa, and Poisson's ratio.
+    pub young: f64,
+    pub poisson: f64,
+    /// In-situ pressure p0 (compression positive), Pa.
+    pub p0: f64,
+}
+
+/// Three rock masses of the report (issue 48): good, fair and poor, with their plastic zones
+/// from about 1.2 to 2.8 hole radii, one of them dilatant.
+pub const ROCKS: [Rock; 3] = [
+    Rock {
+        gsi: 75.0,
+        mi: 25.0,
+        sigma_ci: 150e6,
+        dilation_deg: 0.0,
+        young: 40e9,
+        poisson: 0.2,
+        p0: 100e6,
+    },
+    Rock {
+        gsi: 50.0,
+        mi: 12.0,
+        sigma_ci: 80e6,
+        dilation_deg: 5.0,
+        young: 10e9,
+        poisson: 0.25,
+        p0: 30e6,
+    },
+    Rock {
+        gsi: 25.0,
+        mi: 8.0,
+        sigma_ci: 40e6,
+        dilation_deg: 0.0,
+        young: 2e9,
+        poisson: 0.3,
+        p0: 10e6,
+    },
+];
+
+/// The shipped Kirsch geometry (a = 1 m in a 40 m square, its graded zoning scaled by `factor`)
+/// in Hoek–Brown `rock` (D = 0) under its p0, with the closed form.
+pub fn scene(kirsch: &Scene, factor: f64, rock: &Rock) -> (Scene, CarranzaTorres) {
+    let mut s = scaled(kirsch, factor);
+    s.name = "hoek_brown_hole".into();
+    let m = s
+        .materials
+        .get_mut(&s.region.material)
+        .expect("region material");
+    m.law = ZoneLawKind::HoekBrown;
+    m.sigma_ci = Some(rock.sigma_ci);
+    m.gsi = Some(rock.gsi);
+    m.mi = Some(rock.mi);
+    m.dilation = rock.dilation_deg;
+    m.young = rock.young;
+    m.poisson = rock.poisson;
+    s.in_situ.sxx = -rock.p0;
+    s.in_situ.syy = -rock.p0;
+    s.in_situ.szz = Some(-rock.p0);
+    s.solve.ratio = 1e-6;
+    s.solve.max_cycles = 400_000;
+    s.solve.max_iterations = 2_000;
+    let radius = s.excavations[0]
+        .circle
+        .as_ref()
+        .expect("circular hole")
+        .radius;
+    let closed = CarranzaTorres::new(
+        radius,
+        (rock.p0, 0.0),
+        rock.sigma_ci,
+        adit::law::hoek_brown_constants(rock.gsi, rock.mi, 0.0),
+        rock.dilation_deg.to_radians(),
+        rock.young / (2.0 * (1.0 + rock.poisson)),
+        rock.poisson,
+    );
+    (s, closed)
+}
+
+/// The hole in `rock` on the zoning ×`factor`, solved by `method` with its out-of-balance force
+/// released as `release` says (`crate::release_gradually`), against Carranza-Torres's solution
+/// (`salencon::measure_hole`'s measures).
+pub fn run(
+    kirsch: &Scene,
+    factor: f64,
+    rock: &Rock,
+    method: SolveMethod,
+    release: u64,
+) -> anyhow::Result<CaseReport> {
+    let (sc, exact) = scene(kirsch, factor, rock);
+    let case = format!(
+        "Hoek–Brown hole GSI {}, mi {}, σci {} MPa, ψ = {}°, p0 = {} MPa, Rp = {:.3} m (×{factor}){}{}",
+        rock.gsi,
+        rock.mi,
+        rock.sigma_ci / 1e6,
+        rock.dilation_deg,
+        rock.p0 / 1e6,
+        exact.plastic_radius(),
+        if release > 0 { ", slowly" } else { "" },
+        crate::method_suffix(method)
+    );
+    Ok(measure_hole(sc, &exact, release, method, case)?.0)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::salencon::Salencon;
+
+    /// With a = 1 the criterion is Mohr–Coulomb's (Nφ = 1 + mb, σc = s σci): the solution is
+    /// Salençon's, radius, stresses and wall displacement.
+    #[test]
+    fn with_a_of_1_it_is_salencon() {
+        let (phi, c): (f64, f64) = (30f64.to_radians(), 3e6);
+        let n_phi = (1.0 + phi.sin()) / (1.0 - phi.sin());
+        let sigma_c = 2.0 * c * n_phi.sqrt();
+        let (shear, nu) = (4e9, 0.25);
+        for (pi, psi) in [(0.0, 0.0), (2e6, 10f64.to_radians())] {
+            let ct = CarranzaTorres::new(
+                1.0,
+                (30e6, pi),
+                sigma_c,
+                (n_phi - 1.0, 1.0, 1.0),
+                psi,
+                shear,
+                nu,
+            );
+            let sal = Salencon {
+                radius: 1.0,
+                p0: 30e6,
+                pi,
+                cohesion: c,
+                friction: phi,
+                dilation: psi,
+                shear,
+                poisson: nu,
+            };
+            let rel = |x: f64, y: f64| (x - y).abs() / y.abs();
+            assert!(rel(ct.plastic_radius(), sal.plastic_radius()) < 1e-10);
+            assert!(rel(ct.wall_displacement(), sal.wall_displacement()) < 1e-8);
+            for r in [1.0, 1.2, 1.5, 2.5] {
+                let (a, b) = (ct.stress(r), sal.stress(r));
+                assert!(
+                    rel(a.0, b.0) < 1e-8 || (a.0 - b.0).abs() < 1.0,
+                    "{r}: {a:?} {b:?}"
+                );
+                assert!(rel(a.1, b.1) < 1e-8, "{r}: {a:?} {b:?}");
+            }
+        }
+    }
+
+    /// The stresses are continuous across Rp and satisfy the criterion in the plastic zone.
+    #[test]
+    fn stresses_meet_at_the_plastic_radius() {
+        let (mb, s, a) = adit::law::hoek_brown_constants(50.0, 12.0, 0.0);
+        let ct = CarranzaTorres::new(3.0, (30e6, 0.0), 80e6, (mb, s, a), 0.0, 4e9, 0.25);
+        let rp = ct.plastic_radius();
+        assert!(rp > 3.3 && rp < 9.0, "{rp}");
+        let (inside, outside) = (ct.stress(rp * (1.0 - 1e-9)), ct.stress(rp * (1.0 + 1e-9)));
+        assert!(
+            (inside.0 - outside.0).abs() < 1e-4 * 30e6,
+            "{inside:?} {outside:?}"
+        );
+        assert!(
+            (inside.1 - outside.1).abs() < 1e-4 * 30e6,
+            "{inside:?} {outside:?}"
+        );
+        assert!(ct.wall_displacement() < -30e6 * 3.0 / (2.0 * 4e9));
+    }
+}
+
+#[cfg(test)]
+mod coarse {
+    use adit::scene::SolveMethod;
+
+    /// A Hoek–Brown hole in small: the fair rock on the shipped zoning ×2, excavated at once and
+    /// cycled explicitly: its plastic radius within 3 % of Carranza-Torres's. (The wall
+    /// displacement is not bounded here: released at once the explicit solve overshoots
+    /// dynamically, 7 % beyond the quasi-static answer on the shipped zoning.)
+    #[test]
+    fn a_hoek_brown_hole_follows_carranza_torres() {
+        let kirsch = crate::shipped_kirsch().unwrap();
+        let r = super::run(&kirsch, 2.0, &super::ROCKS[1], SolveMethod::Explicit, 0).unwrap();
+        eprintln!("{}: {:?}", r.case, r.errors);
+        assert!(r.errors["plastic_radius"] < 0.03, "{:?}", r.errors);
+        assert!(r.errors["wall_displacement"] < 0.15, "{:?}", r.errors);
+    }
+}
