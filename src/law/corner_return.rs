@@ -93,10 +93,8 @@ impl Surface {
         v
     }
 
-    /// D v: α1 on the diagonal, α2 off it.
     fn elastic(&self, v: &Vector3<f64>) -> Vector3<f64> {
-        let sum = v.sum();
-        Vector3::from_fn(|i, _| self.a2 * sum + (self.a1 - self.a2) * v[i])
+        elastic_times(self.a1, self.a2, v)
     }
 
     /// Whether principal stresses `p` (any order, Pa) satisfy the criterion within `tol` (Pa).
@@ -232,8 +230,15 @@ impl Surface {
     }
 }
 
+/// D v in principal stresses: D the plane-strain elastic matrix, α1 = K + 4G/3 (Pa) on the
+/// diagonal, α2 = K − 2G/3 off it.
+pub(super) fn elastic_times(a1: f64, a2: f64, v: &Vector3<f64>) -> Vector3<f64> {
+    let sum = v.sum();
+    Vector3::from_fn(|i, _| a2 * sum + (a1 - a2) * v[i])
+}
+
 /// The sets of `size` planes out of six (indices ascending, padded with 0 to three).
-fn subsets(size: usize) -> impl Iterator<Item = [usize; 3]> {
+pub(super) fn subsets(size: usize) -> impl Iterator<Item = [usize; 3]> {
     (0u32..64)
         .filter(move |m| m.count_ones() as usize == size)
         .map(|m| {

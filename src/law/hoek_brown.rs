@@ -38,6 +38,7 @@
 
 use nalgebra::{Matrix3, Vector3};
 
+use super::corner_return::{elastic_times, subsets};
 use super::principal::{Principal, state_after};
 use super::{
     Elastic, SHEAR_NOW, StrainIncrement, Stress, TENSION_NOW, ZoneLaw, plane_strain_moduli,
@@ -180,10 +181,8 @@ impl HoekBrown {
         v
     }
 
-    /// D v: α1 on the diagonal, α2 off it.
     fn elastic_times(&self, v: &Vector3<f64>) -> Vector3<f64> {
-        let sum = v.sum();
-        Vector3::from_fn(|i, _| self.a2 * sum + (self.a1 - self.a2) * v[i])
+        elastic_times(self.a1, self.a2, v)
     }
 
     /// Whether principal stresses `p` (any order, Pa) meet the criterion within `tol` (Pa).
@@ -396,19 +395,6 @@ impl HoekBrown {
             principal.put(&p, s);
         }
     }
-}
-
-/// The sets of `size` planes out of six (indices ascending, padded with 0 to three).
-fn subsets(size: usize) -> impl Iterator<Item = [usize; 3]> {
-    (0u32..64)
-        .filter(move |m| m.count_ones() as usize == size)
-        .map(|m| {
-            let mut set = [0; 3];
-            for (slot, i) in (0..6).filter(|i| m & (1 << i) != 0).enumerate() {
-                set[slot] = i;
-            }
-            set
-        })
 }
 
 impl ZoneLaw for HoekBrown {
