@@ -6,11 +6,16 @@ mod hoek_brown;
 mod mohr_coulomb;
 mod null;
 mod principal;
+mod ubiquitous_joint;
 
 pub use elastic::{Elastic, plane_strain_moduli};
-pub use hoek_brown::{HoekBrown, hoek_brown_constants};
+pub use hoek_brown::{HoekBrown, Residual, hoek_brown_constants};
 pub use mohr_coulomb::{MohrCoulomb, SHEAR_NOW, SHEAR_PAST, TENSION_NOW, TENSION_PAST};
 pub use null::Null;
+pub use ubiquitous_joint::{
+    Matrix, PLANE_SHEAR_NOW, PLANE_SHEAR_PAST, PLANE_TENSION_NOW, PLANE_TENSION_PAST,
+    UbiquitousJoint, WeakPlane,
+};
 
 /// Zone stress, Pa, tension positive: [σxx, σyy, σzz, σxy] (σzz from plane strain).
 pub type Stress = [f64; 4];

@@ -163,6 +163,11 @@ pub struct Material {
     /// (from `cohesion`, `friction` at 0; linear between points, constant after the last).
     #[serde(default)]
     pub softening: Vec<SofteningPoint>,
+    /// Mohr–Coulomb cohesion weakening and friction strengthening (CWFS, brittle spalling):
+    /// cohesion from `cohesion` to a residual, friction from `friction` to a mobilized angle,
+    /// each over its own plastic shear strain.
+    #[serde(default)]
+    pub cwfs: Option<CwfsSpec>,
     /// Hoek–Brown: the intact rock's uniaxial compressive strength σci, Pa (required for that law).
     #[serde(default)]
     pub sigma_ci: Option<f64>,
@@ -182,6 +187,86 @@ pub struct Material {
     pub s: Option<f64>,
     #[serde(default)]
     pub a: Option<f64>,
+    /// Hoek–Brown strain softening: the residual constants and the plastic shear strain where
+    /// they are reached.
+    #[serde(default)]
+    pub residual: Option<HoekBrownResidual>,
+    /// Ubiquitous joints: one weak plane through every zone of the material, around a matrix of
+    /// the material's own law.
+    #[serde(default)]
+    pub weak_plane: Option<WeakPlaneSpec>,
+}
+
+/// The residual strength of a softening Hoek–Brown material: `gsi` (with the peak's mi and D)
+/// or `mb`, `s` and `a`, reached at `plastic_strain`.
+#[derive(Debug, Clone, Copy, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct HoekBrownResidual {
+    #[serde(default)]
+    pub gsi: Option<f64>,
+    #[serde(default)]
+    pub mb: Option<f64>,
+    #[serde(default)]
+    pub s: Option<f64>,
+    #[serde(default)]
+    pub a: Option<f64>,
+    /// Plastic shear strain e^ps at which the residual constants hold (dimensionless, > 0).
+    pub plastic_strain: f64,
+}
+
+/// The cohesion-weakening friction-strengthening model of a Mohr–Coulomb material
+/// (Hajiabdolmajid, Kaiser & Martin 2002).
+#[derive(Debug, Clone, Copy, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CwfsSpec {
+    /// Cohesion reached at `cohesion_strain`, Pa.
+    pub residual_cohesion: f64,
+    /// Plastic shear strain e^ps over which cohesion falls (dimensionless, > 0).
+    pub cohesion_strain: f64,
+    /// Friction angle reached at `friction_strain`, degrees.
+    pub mobilized_friction: f64,
+    /// Plastic shear strain e^ps over which friction rises (dimensionless, > 0).
+    pub friction_strain: f64,
+}
+
+impl CwfsSpec {
+    /// The softening table (e^ps, c in Pa, φ in degrees) of cohesion falling linearly from `c0`
+    /// and friction rising linearly from `phi0` (degrees), each constant past its own strain:
+    /// both are linear between the two strains' points, so the table holds them exactly.
+    pub fn table(&self, c0: f64, phi0: f64) -> Vec<(f64, f64, f64)> {
+        let at = |e: f64| {
+            let c = c0 + (self.residual_cohesion - c0) * (e / self.cohesion_strain).min(1.0);
+            let phi = phi0 + (self.mobilized_friction - phi0) * (e / self.friction_strain).min(1.0);
+            (e, c, phi)
+        };
+        let (lo, hi) = (
+            self.cohesion_strain.min(self.friction_strain),
+            self.cohesion_strain.max(self.friction_strain),
+        );
+        if lo == hi {
+            vec![at(lo)]
+        } else {
+            vec![at(lo), at(hi)]
+        }
+    }
+}
+
+/// The weak plane of a ubiquitous-joint material.
+#[derive(Debug, Clone, Copy, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct WeakPlaneSpec {
+    /// Dip of the plane's trace from the x axis, counter-clockwise, degrees.
+    pub dip: f64,
+    /// Cohesion cj, Pa.
+    pub cohesion: f64,
+    /// Friction angle φj, degrees.
+    pub friction: f64,
+    /// Dilation angle ψj, degrees (default 0; at most φj).
+    #[serde(default)]
+    pub dilation: f64,
+    /// Tensile strength σtj across the plane, Pa (default and cap: cj / tan φj).
+    #[serde(default)]
+    pub tensile_strength: Option<f64>,
 }
 
 /// One point of a softening table.
@@ -1128,6 +1213,128 @@ mod tests {
             error_of(&GOOD.replace("\"poisson\": 0.2", r#""poisson": 0.2, "gsi": 50"#))
                 .starts_with("materials.rock.gsi: belongs to `law: hoek_brown`")
         );
+    }
+
+    /// Hoek–Brown softening takes a residual GSI (with the peak's mi and D) or mb, s and a,
+    /// each checked and named.
+    #[test]
+    fn hoek_brown_residual_is_checked() {
+        let hb = |peak: &str, residual: &str| {
+            GOOD.replace(
+                "\"poisson\": 0.2",
+                &format!(
+                    r#""poisson": 0.2, "law": "hoek_brown", "sigma_ci": 8e7, {peak}, "residual": {{ {residual} }}"#
+                ),
+            )
+        };
+        let gsi = r#""gsi": 50, "mi": 12"#;
+        let given = r#""mb": 2, "s": 0.004, "a": 0.5"#;
+        assert!(Scene::from_json(&hb(gsi, r#""gsi": 30, "plastic_strain": 0.01"#), "t").is_ok());
+        let residual = r#""mb": 1, "s": 0.001, "a": 0.55, "plastic_strain": 0.01"#;
+        assert!(Scene::from_json(&hb(given, residual), "t").is_ok());
+        assert!(
+            error_of(&hb(given, r#""gsi": 30, "plastic_strain": 0.01"#))
+                .starts_with("materials.rock.residual: give `gsi`")
+        );
+        assert!(
+            error_of(&hb(gsi, r#""gsi": 300, "plastic_strain": 0.01"#))
+                .starts_with("materials.rock.residual.gsi:")
+        );
+        assert!(
+            error_of(&hb(gsi, r#""gsi": 30, "plastic_strain": 0"#))
+                .starts_with("materials.rock.residual.plastic_strain:")
+        );
+        let mc = GOOD.replace(
+            "\"poisson\": 0.2",
+            r#""poisson": 0.2, "law": "mohr_coulomb", "cohesion": 1e6, "friction": 30, "residual": { "gsi": 30, "plastic_strain": 0.01 }"#,
+        );
+        assert!(error_of(&mc).starts_with("materials.rock.residual: belongs to `law: hoek_brown`"));
+    }
+
+    /// CWFS's table holds cohesion falling and friction rising each linearly over its own
+    /// strain, exactly, in either order of the strains; its fields are checked.
+    #[test]
+    fn cwfs_is_two_linear_laws_in_one_table() {
+        use crate::law::{Elastic, MohrCoulomb};
+        for (ec, ef) in [(0.002, 0.005), (0.005, 0.002), (0.003, 0.003)] {
+            let cwfs = CwfsSpec {
+                residual_cohesion: 15e6,
+                cohesion_strain: ec,
+                mobilized_friction: 48.0,
+                friction_strain: ef,
+            };
+            let mut law =
+                MohrCoulomb::new(Elastic::from_young(60e9, 0.2, 2700.0), 50e6, 0.0, 0.0, 10e6);
+            law.softening = (cwfs.table(50e6, 0.0).into_iter())
+                .map(|(e, c, phi)| (e, c, f64::to_radians(phi)))
+                .collect();
+            for k in 0..=100 {
+                let e = 1e-4 * k as f64;
+                let (c, phi) = law.strength(e);
+                let c_exact = 50e6 - 35e6 * (e / ec).min(1.0);
+                let phi_exact = 48f64.to_radians() * (e / ef).min(1.0);
+                assert!((c - c_exact).abs() < 1e-6, "{ec} {ef} at {e}: c {c}");
+                assert!((phi - phi_exact).abs() < 1e-12, "{ec} {ef} at {e}: φ {phi}");
+            }
+        }
+        let mc = |cwfs: &str| {
+            GOOD.replace(
+                "\"poisson\": 0.2",
+                &format!(
+                    r#""poisson": 0.2, "law": "mohr_coulomb", "cohesion": 5e7, "friction": 0, "tensile_strength": 1e7, "cwfs": {{ {cwfs} }}"#
+                ),
+            )
+        };
+        let ok = r#""residual_cohesion": 1.5e7, "cohesion_strain": 0.002, "mobilized_friction": 48, "friction_strain": 0.005"#;
+        assert!(Scene::from_json(&mc(ok), "t").is_ok());
+        assert!(
+            error_of(&mc(&ok.replace("48", "95")))
+                .starts_with("materials.rock.cwfs.mobilized_friction:")
+        );
+        assert!(
+            error_of(&mc(&ok.replace("0.005", "0")))
+                .starts_with("materials.rock.cwfs.friction_strain:")
+        );
+        let both = mc(ok).replace(
+            r#""cwfs""#,
+            r#""softening": [{ "plastic_strain": 0.01, "cohesion": 1e6, "friction": 30 }], "cwfs""#,
+        );
+        assert!(error_of(&both).starts_with("materials.rock.cwfs: give `cwfs` or a `softening`"));
+    }
+
+    /// A weak plane goes with any law and its fields are checked, each named.
+    #[test]
+    fn a_weak_plane_is_checked_field_by_field() {
+        let plane = |law: &str, plane: &str| {
+            GOOD.replace(
+                "\"poisson\": 0.2",
+                &format!(r#""poisson": 0.2{law}, "weak_plane": {{ {plane} }}"#),
+            )
+        };
+        let ok = r#""dip": 30, "cohesion": 1e5, "friction": 25"#;
+        assert!(Scene::from_json(&plane("", ok), "t").is_ok());
+        let mc = r#", "law": "mohr_coulomb", "cohesion": 1e6, "friction": 35"#;
+        assert!(Scene::from_json(&plane(mc, ok), "t").is_ok());
+        for (fields, field) in [
+            (r#""dip": 30, "cohesion": -1, "friction": 25"#, "cohesion"),
+            (r#""dip": 30, "cohesion": 1e5, "friction": 95"#, "friction"),
+            (
+                r#""dip": 30, "cohesion": 1e5, "friction": 25, "dilation": 30"#,
+                "dilation",
+            ),
+            (
+                r#""dip": 30, "cohesion": 1e5, "friction": 25, "tensile_strength": -5"#,
+                "tensile_strength",
+            ),
+        ] {
+            assert!(
+                error_of(&plane(mc, fields))
+                    .starts_with(&format!("materials.rock.weak_plane.{field}:")),
+                "{fields}: {}",
+                error_of(&plane(mc, fields))
+            );
+        }
+        assert!(error_of(&plane(mc, r#""cohesion": 1e5, "friction": 25"#)).contains("dip"));
     }
 
     /// Mixed zones take dilatant rock, at the top level and in a stage, with the default damping.

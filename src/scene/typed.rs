@@ -6,8 +6,9 @@
 
 use super::validate::{SceneError, invalid};
 use super::{
-    BoltLine, BoltPattern, BoltSpec, BoundaryCondition, Circle, Excavation, Fix, Horseshoe,
-    Inclusion, JointLawKind, JointMaterial, Material, SofteningPoint, StressTensor, ZoneLawKind,
+    BoltLine, BoltPattern, BoltSpec, BoundaryCondition, Circle, CwfsSpec, Excavation, Fix,
+    HoekBrownResidual, Horseshoe, Inclusion, JointLawKind, JointMaterial, Material, SofteningPoint,
+    StressTensor, ZoneLawKind,
 };
 
 /// The outline of an excavation or inclusion.
@@ -60,6 +61,8 @@ pub enum ZoneLawSpec<'a> {
         tensile_strength: Option<f64>,
         /// Strain-softening table.
         softening: &'a [SofteningPoint],
+        /// Cohesion weakening and friction strengthening, instead of `softening`.
+        cwfs: Option<CwfsSpec>,
     },
     HoekBrown {
         /// The intact rock's uniaxial compressive strength σci, Pa.
@@ -70,6 +73,8 @@ pub enum ZoneLawSpec<'a> {
         dilation: f64,
         /// Tensile strength σt, Pa (`None`: the apex s σci / mb).
         tensile_strength: Option<f64>,
+        /// Residual constants and the plastic shear strain where they hold.
+        residual: Option<(HoekBrownConstants, f64)>,
     },
 }
 
@@ -105,6 +110,7 @@ impl Material {
             ("cohesion", self.cohesion.is_some()),
             ("friction", self.friction.is_some()),
             ("softening", !self.softening.is_empty()),
+            ("cwfs", self.cwfs.is_some()),
         ];
         let hoek_brown = [
             ("sigma_ci", self.sigma_ci.is_some()),
@@ -114,6 +120,7 @@ impl Material {
             ("mb", self.mb.is_some()),
             ("s", self.s.is_some()),
             ("a", self.a.is_some()),
+            ("residual", self.residual.is_some()),
         ];
         let shared = [
             ("dilation", self.dilation != 0.0),
@@ -141,12 +148,19 @@ impl Material {
                         "`law: mohr_coulomb` needs `cohesion` and `friction`",
                     ));
                 };
+                if self.cwfs.is_some() && !self.softening.is_empty() {
+                    return Err(invalid(
+                        format!("{path}.cwfs"),
+                        "give `cwfs` or a `softening` table, not both (`cwfs` makes the table)",
+                    ));
+                }
                 Ok(ZoneLawSpec::MohrCoulomb {
                     cohesion,
                     friction,
                     dilation: self.dilation,
                     tensile_strength: self.tensile_strength,
                     softening: &self.softening,
+                    cwfs: self.cwfs,
                 })
             }
             ZoneLawKind::HoekBrown => {
@@ -171,14 +185,49 @@ impl Material {
                         ));
                     }
                 };
+                let residual = match self.residual {
+                    None => None,
+                    Some(r) => Some((residual_constants(&r, constants, path)?, r.plastic_strain)),
+                };
                 Ok(ZoneLawSpec::HoekBrown {
                     sigma_ci,
                     constants,
                     dilation: self.dilation,
                     tensile_strength: self.tensile_strength,
+                    residual,
                 })
             }
         }
+    }
+}
+
+/// The residual constants `r` of a Hoek–Brown material whose peak constants are `peak`: a
+/// residual GSI takes the peak's mi and D.
+fn residual_constants(
+    r: &HoekBrownResidual,
+    peak: HoekBrownConstants,
+    path: &str,
+) -> Result<HoekBrownConstants, SceneError> {
+    match (r.gsi, r.mb, r.s, r.a, peak) {
+        (
+            Some(gsi),
+            None,
+            None,
+            None,
+            HoekBrownConstants::Gsi {
+                mi, disturbance, ..
+            },
+        ) => Ok(HoekBrownConstants::Gsi {
+            gsi,
+            mi,
+            disturbance,
+        }),
+        (None, Some(mb), Some(s), Some(a), _) => Ok(HoekBrownConstants::Given { mb, s, a }),
+        _ => Err(invalid(
+            format!("{path}.residual"),
+            "give `gsi` (with the peak's `gsi` and `mi`, whose mi and D it takes) or `mb`, `s` \
+             and `a`",
+        )),
     }
 }
 

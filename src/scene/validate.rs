@@ -60,7 +60,81 @@ fn validate_material(p: &str, m: &Material) -> Result<(), SceneError> {
             ),
         ));
     }
-    validate_strength(p, m)
+    validate_strength(p, m)?;
+    match &m.weak_plane {
+        Some(w) => validate_weak_plane(&format!("{p}.weak_plane"), w),
+        None => Ok(()),
+    }
+}
+
+/// The CWFS fields of a Mohr–Coulomb material at `p`: a residual cohesion ≥ 0, a mobilized
+/// friction in [0, 90) degrees, both strains positive.
+fn validate_cwfs(p: &str, w: &crate::scene::CwfsSpec) -> Result<(), SceneError> {
+    if !(w.residual_cohesion >= 0.0 && w.residual_cohesion.is_finite()) {
+        return Err(invalid(
+            format!("{p}.residual_cohesion"),
+            format!("must be zero or positive, got {}", Num(w.residual_cohesion)),
+        ));
+    }
+    if !(0.0..90.0).contains(&w.mobilized_friction) {
+        return Err(invalid(
+            format!("{p}.mobilized_friction"),
+            format!(
+                "must be in [0, 90) degrees, got {}",
+                Num(w.mobilized_friction)
+            ),
+        ));
+    }
+    for (field, e) in [
+        ("cohesion_strain", w.cohesion_strain),
+        ("friction_strain", w.friction_strain),
+    ] {
+        if !(e > 0.0 && e.is_finite()) {
+            return Err(invalid(
+                format!("{p}.{field}"),
+                format!("must be a positive plastic shear strain, got {}", Num(e)),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// The weak plane of a ubiquitous-joint material at `p`: a finite dip, cohesion ≥ 0, friction in
+/// [0, 90) degrees, dilation in [0, friction], tensile strength ≥ 0.
+fn validate_weak_plane(p: &str, w: &crate::scene::WeakPlaneSpec) -> Result<(), SceneError> {
+    if !w.dip.is_finite() {
+        return Err(invalid(
+            format!("{p}.dip"),
+            "must be a finite angle in degrees",
+        ));
+    }
+    if !(w.cohesion >= 0.0 && w.cohesion.is_finite()) {
+        return Err(invalid(
+            format!("{p}.cohesion"),
+            format!("must be zero or positive, got {}", Num(w.cohesion)),
+        ));
+    }
+    if !(0.0..90.0).contains(&w.friction) {
+        return Err(invalid(
+            format!("{p}.friction"),
+            format!("must be in [0, 90) degrees, got {}", Num(w.friction)),
+        ));
+    }
+    if !(0.0..=w.friction).contains(&w.dilation) {
+        return Err(invalid(
+            format!("{p}.dilation"),
+            format!("must be in [0, friction] degrees, got {}", Num(w.dilation)),
+        ));
+    }
+    if let Some(t) = w.tensile_strength
+        && (t.is_nan() || t < 0.0)
+    {
+        return Err(invalid(
+            format!("{p}.tensile_strength"),
+            format!("must be zero or positive, got {}", Num(t)),
+        ));
+    }
+    Ok(())
 }
 
 /// The Mohr–Coulomb fields of material `m` (path `p`): required and in range for that law, absent
@@ -73,7 +147,24 @@ fn validate_strength(p: &str, m: &Material) -> Result<(), SceneError> {
             constants,
             dilation,
             tensile_strength,
-        } => validate_hoek_brown(p, sigma_ci, constants, dilation, tensile_strength),
+            residual,
+        } => {
+            validate_hoek_brown(p, sigma_ci, constants, dilation, tensile_strength)?;
+            if let Some((constants, strain)) = residual {
+                let q = format!("{p}.residual");
+                validate_constants(&q, constants, tensile_strength)?;
+                if !(strain > 0.0 && strain.is_finite()) {
+                    return Err(invalid(
+                        format!("{q}.plastic_strain"),
+                        format!(
+                            "must be a positive plastic shear strain, got {}",
+                            Num(strain)
+                        ),
+                    ));
+                }
+            }
+            Ok(())
+        }
         ZoneLawSpec::MohrCoulomb {
             cohesion: c,
             friction: phi,
@@ -104,6 +195,9 @@ fn validate_strength(p: &str, m: &Material) -> Result<(), SceneError> {
                     format!("{p}.tensile_strength"),
                     format!("must be zero or positive, got {}", Num(t)),
                 ));
+            }
+            if let Some(cwfs) = &m.cwfs {
+                validate_cwfs(&format!("{p}.cwfs"), cwfs)?;
             }
             let mut last = 0.0;
             for (i, pt) in m.softening.iter().enumerate() {
@@ -139,6 +233,31 @@ fn validate_hoek_brown(
     tensile_strength: Option<f64>,
 ) -> Result<(), SceneError> {
     positive(&format!("{p}.sigma_ci"), sigma_ci)?;
+    validate_constants(p, constants, tensile_strength)?;
+    if !(0.0..90.0).contains(&dilation) {
+        return Err(invalid(
+            format!("{p}.dilation"),
+            format!("must be in [0, 90) degrees, got {}", Num(dilation)),
+        ));
+    }
+    if let Some(t) = tensile_strength
+        && (t.is_nan() || t < 0.0)
+    {
+        return Err(invalid(
+            format!("{p}.tensile_strength"),
+            format!("must be zero or positive, got {}", Num(t)),
+        ));
+    }
+    Ok(())
+}
+
+/// Hoek–Brown constants at `p` (a material or its `residual`): GSI in [1, 100], mi > 0, D in
+/// [0, 1]; or mb ≥ 0 (0 with s > 0 and a tensile strength), s in [0, 1], a in [0.5, 1].
+fn validate_constants(
+    p: &str,
+    constants: HoekBrownConstants,
+    tensile_strength: Option<f64>,
+) -> Result<(), SceneError> {
     let within = |field: &str, v: f64, lo: f64, hi: f64, rule: &str| {
         if (lo..=hi).contains(&v) {
             Ok(())
@@ -160,24 +279,27 @@ fn validate_hoek_brown(
             within("disturbance", disturbance, 0.0, 1.0, "in [0, 1]")?;
         }
         HoekBrownConstants::Given { mb, s, a } => {
-            positive(&format!("{p}.mb"), mb)?;
+            if mb.is_nan() || mb < 0.0 {
+                return Err(invalid(
+                    format!("{p}.mb"),
+                    format!("must be zero or positive, got {}", Num(mb)),
+                ));
+            }
+            if mb == 0.0 && s == 0.0 {
+                return Err(invalid(
+                    format!("{p}.s"),
+                    "must be positive with mb = 0 (the rock would have no strength)",
+                ));
+            }
+            if mb == 0.0 && tensile_strength.is_none() {
+                return Err(invalid(
+                    format!("{p}.tensile_strength"),
+                    "is required with mb = 0 (the criterion then has no apex to cut tension at)",
+                ));
+            }
             within("s", s, 0.0, 1.0, "in [0, 1]")?;
             within("a", a, 0.5, 1.0, "in [0.5, 1]")?;
         }
-    }
-    if !(0.0..90.0).contains(&dilation) {
-        return Err(invalid(
-            format!("{p}.dilation"),
-            format!("must be in [0, 90) degrees, got {}", Num(dilation)),
-        ));
-    }
-    if let Some(t) = tensile_strength
-        && (t.is_nan() || t < 0.0)
-    {
-        return Err(invalid(
-            format!("{p}.tensile_strength"),
-            format!("must be zero or positive, got {}", Num(t)),
-        ));
     }
     Ok(())
 }

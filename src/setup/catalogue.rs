@@ -4,43 +4,72 @@
 
 use crate::contact::detect::NO_MATERIAL;
 use crate::joint::{ContinuouslyYielding, CoulombSlip, Glued, JointLaw, tan_deg};
-use crate::law::{Elastic, HoekBrown, MohrCoulomb, Null, ZoneLaw};
+use crate::law::{
+    Elastic, HoekBrown, Matrix, MohrCoulomb, Null, Residual, UbiquitousJoint, ZoneLaw,
+};
 use crate::model::MaterialId;
 use crate::scene::{JointLawSpec, JointMaterial, Material, Scene, SceneError, ZoneLawSpec};
 
 use super::geometry::{Meshed, NOT_FILL};
 
-/// The zone law of material `m` (scene field `path`).
+/// The zone law of material `m` (scene field `path`): its law, inside ubiquitous joints when it
+/// has a weak plane.
 pub fn zone_law(m: &Material, path: &str) -> Result<Box<dyn ZoneLaw>, SceneError> {
     let elastic = Elastic::from_young(m.young, m.poisson, m.density);
-    Ok(match m.law_spec(path)? {
-        ZoneLawSpec::Elastic => Box::new(elastic),
+    let matrix = match m.law_spec(path)? {
+        ZoneLawSpec::Elastic => Matrix::Elastic(elastic),
         ZoneLawSpec::MohrCoulomb {
             cohesion,
             friction,
             dilation,
             tensile_strength,
             softening,
+            cwfs,
         } => {
             let tension = tensile_strength.unwrap_or(f64::INFINITY);
             let mut law = MohrCoulomb::new(elastic, cohesion, friction, dilation, tension);
-            law.softening = softening
-                .iter()
-                .map(|p| (p.plastic_strain, p.cohesion, p.friction.to_radians()))
+            let table = match cwfs {
+                Some(cwfs) => cwfs.table(cohesion, friction),
+                None => (softening.iter())
+                    .map(|p| (p.plastic_strain, p.cohesion, p.friction))
+                    .collect(),
+            };
+            law.softening = (table.into_iter())
+                .map(|(e, c, phi)| (e, c, phi.to_radians()))
                 .collect();
-            Box::new(law)
+            Matrix::MohrCoulomb(law)
         }
         ZoneLawSpec::HoekBrown {
             sigma_ci,
             constants,
             dilation,
             tensile_strength,
-        } => Box::new(HoekBrown::new(
-            elastic,
-            sigma_ci,
-            constants.values(),
-            dilation,
-            tensile_strength.unwrap_or(f64::INFINITY),
+            residual,
+        } => {
+            let law = HoekBrown::new(
+                elastic,
+                sigma_ci,
+                constants.values(),
+                dilation,
+                tensile_strength.unwrap_or(f64::INFINITY),
+            );
+            Matrix::HoekBrown(match residual {
+                None => law,
+                Some((constants, strain)) => {
+                    let (mb, s, a) = constants.values();
+                    law.with_residual(Residual { mb, s, a, strain })
+                }
+            })
+        }
+    };
+    Ok(match m.weak_plane {
+        None => matrix.into_law(),
+        Some(w) => Box::new(UbiquitousJoint::new(
+            matrix,
+            w.dip,
+            w.cohesion,
+            (w.friction, w.dilation),
+            w.tensile_strength.unwrap_or(f64::INFINITY),
         )),
     })
 }

@@ -12,7 +12,7 @@
 //! 2G on the last node. The wall pressure falls from p0 to pi in `STEPS` equal steps; each is
 //! solved by the initial-stiffness method (the elastic tridiagonal matrix, Thomas algorithm) with
 //! every zone's stress returned by the law from its state at the start of the step, until the
-//! residual is below 1e-10 p0 a.
+//! residual is below 1e-10 p0 a (or the tolerance `solve_law` is given).
 
 use adit::law::{Elastic, MohrCoulomb, ZoneLaw};
 
@@ -38,6 +38,13 @@ pub struct Hole {
     pub pi: f64,
 }
 
+/// The hole's radius (m) and its pressures (Pa, compression positive).
+struct Pressures {
+    radius: f64,
+    p0: f64,
+    pi: f64,
+}
+
 /// What the reference gives: the wall's radial displacement (m, outward positive), the radius out
 /// to which zones have yielded in shear (m), and whether any zone yielded with σzz as its major or
 /// minor principal stress (outside Salençon's assumption).
@@ -57,6 +64,20 @@ pub fn solve(h: &Hole) -> anyhow::Result<Reference> {
         h.dilation_deg,
         f64::INFINITY,
     );
+    solve_law(&law, h.radius, (h.p0, h.pi), 1e-10)
+}
+
+/// Solve the hole of `radius` (m) in rock of any zone `law`, the wall unloaded from the in-situ
+/// pressure p0 to pi (Pa, compression positive), each step to a residual of `tolerance` p0 a: at
+/// least the relative accuracy of the law's return (Mohr–Coulomb's is closed-form, 1e-10 holds;
+/// Hoek–Brown's is Newton's to 1e-9 of σci, so 1e-8).
+pub fn solve_law(
+    law: &dyn ZoneLaw,
+    radius: f64,
+    (p0, pi): (f64, f64),
+    tolerance: f64,
+) -> anyhow::Result<Reference> {
+    let h = Pressures { radius, p0, pi };
     let (k, g) = law.moduli();
     let (a1, a2) = (k + 4.0 / 3.0 * g, k - 2.0 / 3.0 * g);
     let n = ELEMENTS;
@@ -87,7 +108,7 @@ pub fn solve(h: &Hole) -> anyhow::Result<Reference> {
     }
     let (mut state, mut plastic) = (vec![0u8; n], vec![0.0; n]);
     let mut out_of_plane = false;
-    let tolerance = 1e-10 * h.p0 * h.radius;
+    let tolerance = tolerance * h.p0 * h.radius;
     for step in 1..=STEPS {
         let pi = h.p0 + (h.pi - h.p0) * step as f64 / STEPS as f64;
         let (u0, s0, st0, pl0) = (u.clone(), stress.clone(), state.clone(), plastic.clone());

@@ -386,10 +386,11 @@ mod tests {
 mod coarse {
     use adit::scene::SolveMethod;
 
-    /// A Hoek–Brown hole in small: the fair rock on the shipped zoning ×2, excavated at once and
-    /// cycled explicitly: its plastic radius within 3 % of Carranza-Torres's. (The wall
-    /// displacement is not bounded here: released at once the explicit solve overshoots
-    /// dynamically, 7 % beyond the quasi-static answer on the shipped zoning.)
+    /// A Hoek–Brown hole in small: the fair rock on the shipped zoning ×2, excavated at once
+    /// and cycled explicitly: its plastic radius within 3 % of Carranza-Torres's (the wall
+    /// displacement within 15 %: released at once the explicit solve overshoots dynamically, 6 %
+    /// beyond the quasi-static answer on the shipped zoning); on the shipped zoning (×1) released
+    /// in 16 implicit load steps, both within 3 % (the bar of issue 48).
     #[test]
     fn a_hoek_brown_hole_follows_carranza_torres() {
         let kirsch = crate::shipped_kirsch().unwrap();
@@ -397,5 +398,9 @@ mod coarse {
         eprintln!("{}: {:?}", r.case, r.errors);
         assert!(r.errors["plastic_radius"] < 0.03, "{:?}", r.errors);
         assert!(r.errors["wall_displacement"] < 0.15, "{:?}", r.errors);
+        let r = super::run(&kirsch, 1.0, &super::ROCKS[1], SolveMethod::Implicit, 16).unwrap();
+        eprintln!("{}: {:?}", r.case, r.errors);
+        assert!(r.errors["plastic_radius"] < 0.03, "{:?}", r.errors);
+        assert!(r.errors["wall_displacement"] < 0.03, "{:?}", r.errors);
     }
 }

@@ -41,6 +41,7 @@ pub mod scaling;
 pub mod slivers;
 pub mod softening;
 pub mod stiff_joints;
+pub mod triaxial;
 pub mod unstable;
 
 use std::path::PathBuf;

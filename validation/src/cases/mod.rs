@@ -10,6 +10,7 @@ mod far_field;
 mod glued;
 mod grains;
 mod gravity;
+mod hoek_brown;
 mod impact;
 mod implicit;
 mod incline;
@@ -28,8 +29,10 @@ mod scale;
 mod shallow;
 mod slivers;
 mod softening;
+mod spalling;
 mod stiff_joints;
 mod tunnel;
+mod ubiquitous;
 mod unstable;
 
 use crate::case::Case;
@@ -44,6 +47,9 @@ pub fn all() -> Vec<Box<dyn Case>> {
         Box::new(patch::Patch),
         Box::new(gravity::Gravity),
         Box::new(salencon::Salencon),
+        Box::new(hoek_brown::HoekBrown),
+        Box::new(ubiquitous::Ubiquitous),
+        Box::new(spalling::Spalling),
         Box::new(lined::Lined),
         Box::new(pullout::Pullout),
         Box::new(tunnel::Tunnel),

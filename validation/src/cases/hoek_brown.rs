@@ -1,0 +1,404 @@
+//! Generalized Hoek–Brown rock (issue 48): the element test at ten confining pressures and in
+//! direct tension, and Carranza-Torres's hole, at three rock masses.
+
+use std::fmt::Write as _;
+
+use adit::scene::SolveMethod;
+
+use crate::carranza_torres::{self, ROCKS, Rock};
+use crate::case::{Case, Context, Section, print_row, table};
+use crate::report::CaseReport;
+use crate::triaxial;
+
+/// Zone edge of the element test's specimen, m.
+const EDGE: f64 = 0.5;
+/// Cycles over which the specimen is driven past its peak.
+const DRIVE_CYCLES: u64 = 400_000;
+/// Bar of the element test: relative error of σ1.
+const ELEMENT_BAR: f64 = 1e-6;
+/// Bar of the hole: plastic radius and wall displacement, relative.
+const HOLE_BAR: f64 = 0.03;
+
+/// σ1 = σ3 + σci (mb σ3/σci + s)^a, Pa (compression positive).
+fn strength(rock: &Rock, sigma3: f64) -> f64 {
+    let (mb, s, a) = adit::law::hoek_brown_constants(rock.gsi, rock.mi, 0.0);
+    sigma3 + rock.sigma_ci * (mb * sigma3 / rock.sigma_ci + s).powf(a)
+}
+
+/// The apex σt = s σci / mb, Pa: the tension at which the envelope closes.
+fn apex(rock: &Rock) -> f64 {
+    let (mb, s, _) = adit::law::hoek_brown_constants(rock.gsi, rock.mi, 0.0);
+    s * rock.sigma_ci / mb
+}
+
+/// Uniaxial tensile strength t on the envelope with σ1 = 0: t = σci (s − mb t/σci)^a, by
+/// bisection on [0, apex] (the left side falls from σci s^a to 0 − apex).
+fn uniaxial_tension(rock: &Rock) -> f64 {
+    let (mut lo, mut hi) = (0.0, apex(rock));
+    for _ in 0..200 {
+        let t = 0.5 * (lo + hi);
+        if strength(rock, -t) > 0.0 {
+            lo = t;
+        } else {
+            hi = t;
+        }
+    }
+    0.5 * (lo + hi)
+}
+
+/// The rock as a scene's material object, with a tension cut-off when given (Pa).
+fn material(rock: &Rock, tension: Option<f64>) -> serde_json::Value {
+    let mut m = serde_json::json!({
+        "density": 2600, "young": rock.young, "poisson": rock.poisson, "law": "hoek_brown",
+        "sigma_ci": rock.sigma_ci, "gsi": rock.gsi, "mi": rock.mi, "dilation": rock.dilation_deg
+    });
+    if let Some(t) = tension {
+        m["tensile_strength"] = t.into();
+    }
+    m
+}
+
+/// Ten confining pressures, Pa: 0.5 and 0.25 of the apex in tension, none, and up to 0.4 σci.
+fn confinements(rock: &Rock) -> [f64; 10] {
+    let mut p = [0.0; 10];
+    p[0] = -0.5 * apex(rock);
+    p[1] = -0.25 * apex(rock);
+    for (k, f) in [0.01, 0.02, 0.05, 0.1, 0.2, 0.3, 0.4].iter().enumerate() {
+        p[k + 3] = f * rock.sigma_ci;
+    }
+    p
+}
+
+fn rock_name(rock: &Rock) -> String {
+    format!(
+        "GSI {}, mi {}, σci {} MPa, ψ {}°",
+        rock.gsi,
+        rock.mi,
+        rock.sigma_ci / 1e6,
+        rock.dilation_deg
+    )
+}
+
+/// Direct tension of the rock's specimen (σ3 = 0, the top pulled) with a cut-off at half its
+/// uniaxial tensile strength, by `method`: the relative error of the strength against the
+/// cut-off, and the run.
+fn direct_tension(rock: &Rock, method: SolveMethod) -> anyhow::Result<(f64, triaxial::Strength)> {
+    let e_plane = rock.young / (1.0 - rock.poisson * rock.poisson);
+    let cut_off = 0.5 * uniaxial_tension(rock);
+    let strain = -(1.5 * cut_off / e_plane + 1e-5);
+    let r = triaxial::strength(
+        &material(rock, Some(cut_off)),
+        0.0,
+        EDGE,
+        (strain, DRIVE_CYCLES),
+        method,
+    )?;
+    Ok(((-r.sigma1 - cut_off).abs() / cut_off, r))
+}
+
+/// The element tests of one rock: the envelope at ten confinements (largest relative error of σ1)
+/// and direct tension with a cut-off at half the uniaxial tensile strength.
+fn element_tests(rock: &Rock, method: SolveMethod) -> anyhow::Result<CaseReport> {
+    let e_plane = rock.young / (1.0 - rock.poisson * rock.poisson);
+    let mut worst = 0.0f64;
+    let (mut zones, mut cycles, mut seconds) = (0, 0, 0.0);
+    for sigma3 in confinements(rock) {
+        let exact = strength(rock, sigma3);
+        let strain = 1.5 * (exact - sigma3) / e_plane + 1e-4;
+        let r = triaxial::strength(
+            &material(rock, None),
+            sigma3,
+            EDGE,
+            (strain, DRIVE_CYCLES),
+            method,
+        )?;
+        worst = worst.max((r.sigma1 - exact).abs() / exact);
+        (zones, cycles, seconds) = (r.zones, cycles + r.cycles, seconds + r.seconds);
+    }
+    let t = uniaxial_tension(rock);
+    let (tension, r) = direct_tension(rock, method)?;
+    (cycles, seconds) = (cycles + r.cycles, seconds + r.seconds);
+    Ok(CaseReport::new(
+        format!(
+            "Hoek–Brown element test {}: 10 confinements, direct tension at half its uniaxial σt {:.3} MPa (apex {:.3} MPa){}",
+            rock_name(rock),
+            t / 1e6,
+            apex(rock) / 1e6,
+            crate::method_suffix(method)
+        ),
+        zones,
+        cycles,
+        seconds,
+        Some(EDGE),
+        &[("envelope", worst), ("tension", tension)],
+    ))
+}
+
+/// The one-dimensional axisymmetric solve of a rock's hole with adit's own Hoek–Brown law
+/// (`crate::axisymmetric`, no assumption on σzz) against Carranza-Torres's closed form (σzz the
+/// intermediate stress).
+struct Reference {
+    rock: Rock,
+    /// Wall displacement and plastic radius, relative to the closed form's (signed).
+    wall: f64,
+    radius: f64,
+    out_of_plane: bool,
+}
+
+fn reference(rock: &Rock) -> anyhow::Result<Reference> {
+    let constants = adit::law::hoek_brown_constants(rock.gsi, rock.mi, 0.0);
+    let law = adit::law::HoekBrown::new(
+        adit::law::Elastic::from_young(rock.young, rock.poisson, 1.0),
+        rock.sigma_ci,
+        constants,
+        rock.dilation_deg,
+        f64::INFINITY,
+    );
+    let one_d = crate::axisymmetric::solve_law(&law, 1.0, (rock.p0, 0.0), 1e-8)?;
+    let closed = carranza_torres::CarranzaTorres::new(
+        1.0,
+        (rock.p0, 0.0),
+        rock.sigma_ci,
+        constants,
+        rock.dilation_deg.to_radians(),
+        rock.young / (2.0 * (1.0 + rock.poisson)),
+        rock.poisson,
+    );
+    Ok(Reference {
+        rock: *rock,
+        wall: one_d.wall_displacement / closed.wall_displacement() - 1.0,
+        radius: one_d.plastic_radius / closed.plastic_radius() - 1.0,
+        out_of_plane: one_d.out_of_plane_yield,
+    })
+}
+
+fn write_references(md: &mut String, references: &[Reference]) {
+    let _ = writeln!(
+        md,
+        "\nThe closed form itself, checked by the one-dimensional axisymmetric solve of each hole \
+         with adit's own Hoek–Brown law (`validation/src/axisymmetric.rs`: 1 200 elements, 60 \
+         unloading steps; σzz free to become the major or minor stress, which the closed form \
+         assumes it never does):\n"
+    );
+    let _ = writeln!(
+        md,
+        "| rock | 1D wall displacement vs closed form | 1D plastic radius vs closed form | yields out of plane |"
+    );
+    let _ = writeln!(md, "|---|---:|---:|---|");
+    for r in references {
+        let _ = writeln!(
+            md,
+            "| {} | {:+.2} % | {:+.2} % | {} |",
+            rock_name(&r.rock),
+            100.0 * r.wall,
+            100.0 * r.radius,
+            if r.out_of_plane { "yes" } else { "no" }
+        );
+    }
+}
+
+pub struct HoekBrown;
+
+impl Case for HoekBrown {
+    fn name(&self) -> &'static str {
+        "hoek_brown"
+    }
+
+    fn run(&self, cx: &Context) -> anyhow::Result<Section> {
+        let mut md = String::new();
+        let mut missed = Vec::new();
+        let mut elements = Vec::new();
+        for rock in &ROCKS {
+            for method in [SolveMethod::Explicit, SolveMethod::Implicit] {
+                elements.push(element_tests(rock, method)?);
+            }
+        }
+        for r in &elements {
+            print_row(r);
+            if r.errors.values().any(|&e| e > ELEMENT_BAR) {
+                missed.push(format!("{}: {:?} beyond {ELEMENT_BAR:e}", r.case, r.errors));
+            }
+        }
+        let ramp = crate::bundled::quasi_static(SolveMethod::Explicit);
+        let steps = crate::bundled::quasi_static(SolveMethod::Implicit);
+        let (mut holes, mut unsolved) = (Vec::new(), Vec::new());
+        for rock in &ROCKS {
+            // The explicit release over as many periods of the mesh's slowest mode: its cycles
+            // grow as the zones across the model.
+            let runs = [
+                (1.0, SolveMethod::Explicit, 0),
+                (1.0, SolveMethod::Explicit, ramp),
+                (0.5, SolveMethod::Explicit, 2 * ramp),
+                (1.0, SolveMethod::Implicit, steps),
+                (0.5, SolveMethod::Implicit, steps),
+            ];
+            for (factor, method, release) in runs {
+                let r = match carranza_torres::run(&cx.kirsch, factor, rock, method, release) {
+                    Ok(r) => r,
+                    Err(e) => {
+                        let what = format!(
+                            "{} on the zoning ×{factor}, {}: {e}",
+                            rock_name(rock),
+                            method.name()
+                        );
+                        println!("{what}");
+                        unsolved.push(what);
+                        continue;
+                    }
+                };
+                print_row(&r);
+                if release > 0
+                    && factor == 1.0
+                    && (r.errors["plastic_radius"] > HOLE_BAR
+                        || r.errors["wall_displacement"] > HOLE_BAR)
+                {
+                    missed.push(format!("{}: {:?} beyond {HOLE_BAR}", r.case, r.errors));
+                }
+                holes.push(r);
+            }
+        }
+        let references: Vec<Reference> =
+            ROCKS.iter().map(reference).collect::<anyhow::Result<_>>()?;
+        let mohr_coulomb = crate::salencon::run(&cx.kirsch, 1.0, 0.0)?;
+        print_row(&mohr_coulomb);
+        let hoek_brown_at_once = holes
+            .iter()
+            .find(|r| r.case.starts_with("Hoek–Brown hole GSI 50") && r.case.ends_with("(×1)"))
+            .ok_or_else(|| anyhow::anyhow!("the fair rock's hole released at once"))?;
+        write_section(
+            &mut md,
+            &elements,
+            &holes,
+            (&mohr_coulomb, hoek_brown_at_once),
+        );
+        for what in &unsolved {
+            let _ = writeln!(md, "\nNot solved: {what}.");
+        }
+        write_references(&mut md, &references);
+        let _ = writeln!(
+            md,
+            "\nBars (issue 48): the element test within {ELEMENT_BAR:e} of the envelope and of the \
+             tensile strength, explicit and implicit; the hole released slowly on the shipped \
+             zoning (×1) within {} % in plastic radius and wall displacement, explicit and \
+             implicit: {}.\n",
+            100.0 * HOLE_BAR,
+            if missed.is_empty() {
+                "met".to_string()
+            } else {
+                format!("missed by {}", missed.join("; "))
+            }
+        );
+        let mut rows = elements;
+        rows.extend(holes);
+        rows.push(mohr_coulomb);
+        Ok(Section {
+            markdown: md,
+            rows,
+            missed,
+            ..Default::default()
+        })
+    }
+}
+
+fn write_section(
+    md: &mut String,
+    elements: &[CaseReport],
+    holes: &[CaseReport],
+    (mohr_coulomb, hoek_brown): (&CaseReport, &CaseReport),
+) {
+    let _ = writeln!(
+        md,
+        "\n## Hoek–Brown rock: element tests and Carranza-Torres's hole (issue 48)\n"
+    );
+    let _ = writeln!(
+        md,
+        "Three rock masses (mb, s, a from GSI and mi with D = 0; E, ν and p0 of the hole below): \
+         good (GSI 75, mi 25, σci 150 MPa, E 40 GPa, ν 0.2, p0 100 MPa, ψ 0), fair (GSI 50, mi 12, \
+         σci 80 MPa, E 10 GPa, ν 0.25, p0 30 MPa, ψ 5°) and poor (GSI 25, mi 8, σci 40 MPa, \
+         E 2 GPa, ν 0.3, p0 10 MPa, ψ 0).\n\n\
+         **Element test** (`validation/src/triaxial.rs`): a 1 m × 2 m plane-strain specimen in \
+         zones of {EDGE} m, confined by σ3 on its sides, compressed between smooth platens to 1.5 \
+         times its peak strain over {DRIVE_CYCLES} cycles, brought to rest and relaxed to a ratio \
+         of 1e-10; the platen stress against σ1 = σ3 + σci (mb σ3/σci + s)^a at ten confinements \
+         (0.5 and 0.25 of the apex σt = s σci/mb in tension, 0, and 0.01 to 0.4 σci): `envelope` \
+         is the largest relative error. Direct tension (σ3 = 0, the top pulled) with a cut-off at \
+         half the uniaxial tensile strength t = σci (s − mb t/σci)^a fails at the cut-off: \
+         `tension`. (Pulled with the default cut-off at the apex, the specimen peaks at t to \
+         2e-4 while driven, but t lies within 1e-3 of the apex, where the envelope's slope is \
+         infinite: relaxed, zones slide along it to the apex and the specimen ends 6–9 % below \
+         t, so that test is not a measure of the law; likewise confined by 0.9 of the apex in \
+         tension, where the envelope's slope dσ1/dσ3 reaches 65 in the good rock, the driven \
+         peak is within 1.3e-4 but with ψ = 0 the relaxed specimen localizes and unloads by \
+         40 %: the strongly non-associated flow's instability, not the return.) \
+         Implicitly the specimen is driven in 40 static steps.\n"
+    );
+    table(md, elements);
+    let _ = writeln!(
+        md,
+        "\n**Carranza-Torres's hole** (2004): the Kirsch geometry (a = 1 m, 40 m square, the shipped \
+         graded zoning ×1 and ×0.5) under hydrostatic p0, the hole excavated at once (zones start \
+         at −p0, the wall free), solved explicitly released at once and slowly (the out-of-balance \
+         force over {} cycles on ×1, twice as many on ×0.5, or implicitly in {} load steps: the \
+         closed form's quasi-static path), against the closed form \
+         integrated numerically (`validation/src/carranza_torres.rs`: pcr from 2(p0 − pcr) = \
+         q(pcr), ln(Rp/a) = ∫ dσ/q(σ) from 0 to pcr, σr by RK4 in ln r, the wall displacement \
+         from the flow rule's compatibility with the elastic strains). Measures as for Salençon: \
+         `plastic_radius` (the hole's area plus the yielded zones' as a circle), `stress_l2` \
+         (σr, σθ over r ≤ 3Rp), `wall_displacement` (mean radial displacement of the wall).\n",
+        crate::bundled::QUASI_STATIC_RAMP,
+        crate::bundled::QUASI_STATIC_STEPS
+    );
+    table(md, holes);
+    let _ = writeln!(
+        md,
+        "\n**Speed**: the fair rock's hole released at once runs at {:.2e} zone-cycles per second, \
+         Salençon's Mohr–Coulomb hole on the same zoning at {:.2e} (ratio {:.2}), in this run.\n",
+        hoek_brown.zone_cycles_per_s,
+        mohr_coulomb.zone_cycles_per_s,
+        hoek_brown.zone_cycles_per_s / mohr_coulomb.zone_cycles_per_s
+    );
+}
+
+#[cfg(test)]
+mod coarse {
+    use super::*;
+
+    /// The fair rock's element test: its envelope at three confinements (one near the apex),
+    /// explicit and implicit, and direct tension at a cut-off below its uniaxial strength, each
+    /// within 1e-6.
+    #[test]
+    fn a_hoek_brown_specimen_ends_on_its_envelope() {
+        let rock = &ROCKS[1];
+        let e_plane = rock.young / (1.0 - rock.poisson * rock.poisson);
+        for method in [SolveMethod::Explicit, SolveMethod::Implicit] {
+            for sigma3 in [-0.5 * apex(rock), 0.0, 0.2 * rock.sigma_ci] {
+                let exact = strength(rock, sigma3);
+                let strain = 1.5 * (exact - sigma3) / e_plane + 1e-4;
+                let r = triaxial::strength(
+                    &material(rock, None),
+                    sigma3,
+                    EDGE,
+                    (strain, DRIVE_CYCLES),
+                    method,
+                )
+                .unwrap();
+                assert!(
+                    (r.sigma1 - exact).abs() < ELEMENT_BAR * exact,
+                    "{method:?} σ3 {sigma3}: {} against {exact}",
+                    r.sigma1
+                );
+            }
+        }
+        let t = uniaxial_tension(rock);
+        assert!(t > 0.0 && t < apex(rock));
+        for method in [SolveMethod::Explicit, SolveMethod::Implicit] {
+            let (error, r) = direct_tension(rock, method).unwrap();
+            assert!(
+                error < ELEMENT_BAR,
+                "{method:?}: {} against {}",
+                -r.sigma1,
+                0.5 * t
+            );
+        }
+    }
+}
