@@ -165,19 +165,19 @@ impl Case for Ubiquitous {
             ("β, angle between σ1 and the plane's normal (°)", "σ1 (MPa)"),
             &[
                 Curve {
-                    label: "Jaeger".into(),
+                    label: "closed form (Jaeger)".into(),
                     points: fine,
                     color: RGBColor(0, 0, 0),
                     dots: false,
                 },
                 Curve {
-                    label: "adit explicit, ψj = φj".into(),
+                    label: "adit explicit, dilation = friction".into(),
                     points: dots(SolveMethod::Explicit),
                     color: RGBColor(214, 39, 40),
                     dots: true,
                 },
                 Curve {
-                    label: "adit implicit, ψj = φj".into(),
+                    label: "adit implicit, dilation = friction".into(),
                     points: dots(SolveMethod::Implicit),
                     color: RGBColor(31, 119, 180),
                     dots: true,
