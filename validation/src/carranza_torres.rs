@@ -6,6 +6,8 @@
 //!   critical pressure  pcr:  2 (p0 − pcr) = q(pcr)  (the elastic zone's wall meets the yield
 //!                      surface there: σθ = 2p0 − σr);
 //!   plastic zone       dσr/d(ln r) = q(σr), σr(a) = pi, so ln(Rp/a) = ∫_pi^pcr dσ / q(σ);
+//!                      (elastic–brittle–plastic rock: q of the residual constants here, the
+//!                      peak's in pcr, the strength dropping at once at Rp);
 //!   elastic zone       σr = p0 − (p0 − pcr)(Rp/r)²,  σθ = p0 + (p0 − pcr)(Rp/r)².
 //!
 //! Carranza-Torres writes these in scaled stresses and, for a ≠ 1/2, integrates them numerically;
@@ -42,6 +44,9 @@ pub struct CarranzaTorres {
     /// Shear modulus, Pa, and Poisson's ratio.
     pub shear: f64,
     pub poisson: f64,
+    /// The residual rock's mb, s and a: the plastic zone's strength (the peak's unless
+    /// `with_residual` gives others: the elastic–brittle–plastic rock).
+    pub residual: (f64, f64, f64),
     /// pcr (Pa) and Rp (m), computed once by `new`.
     pcr: f64,
     rp: f64,
@@ -71,6 +76,7 @@ impl CarranzaTorres {
             dilation,
             shear,
             poisson,
+            residual: (mb, s, a),
             pcr: 0.0,
             rp: radius,
             table: Vec::new(),
@@ -81,12 +87,28 @@ impl CarranzaTorres {
         c
     }
 
-    /// q(σ) = σci (mb σ/σci + s)^a, Pa (0 beyond the apex).
+    /// The elastic–brittle–plastic rock (Carranza-Torres 2004, his second case): the peak
+    /// constants bound the elastic zone (pcr), the residual ones `(mb, s, a)` the plastic zone,
+    /// where the strength drops at once at Rp.
+    pub fn with_residual(mut self, residual: (f64, f64, f64)) -> CarranzaTorres {
+        self.residual = residual;
+        self.rp = self.solve_plastic_radius();
+        self.table = self.radial_table();
+        self
+    }
+
+    /// q(σ) = σci (mb σ/σci + s)^a of the peak constants, Pa (0 beyond the apex).
     pub fn strength(&self, sigma: f64) -> f64 {
-        self.sigma_ci
-            * (self.mb * sigma / self.sigma_ci + self.s)
-                .max(0.0)
-                .powf(self.a)
+        self.strength_of((self.mb, self.s, self.a), sigma)
+    }
+
+    /// q(σ) of the residual constants, Pa: the plastic zone's strength.
+    fn residual_strength(&self, sigma: f64) -> f64 {
+        self.strength_of(self.residual, sigma)
+    }
+
+    fn strength_of(&self, (mb, s, a): (f64, f64, f64), sigma: f64) -> f64 {
+        self.sigma_ci * (mb * sigma / self.sigma_ci + s).max(0.0).powf(a)
     }
 
     /// pcr, Pa.
@@ -119,14 +141,14 @@ impl CarranzaTorres {
         self.pi < self.critical_pressure()
     }
 
-    /// Plastic radius Rp = a exp(∫_pi^pcr dσ / q(σ)), m (Simpson's rule); a when elastic.
+    /// Plastic radius Rp = a exp(∫_pi^pcr dσ / q_res(σ)), m (Simpson's rule); a when elastic.
     fn solve_plastic_radius(&self) -> f64 {
         if !self.yields() {
             return self.radius;
         }
         let (lo, hi) = (self.pi, self.critical_pressure());
         let h = (hi - lo) / STEPS as f64;
-        let g = |k: usize| 1.0 / self.strength(lo + k as f64 * h);
+        let g = |k: usize| 1.0 / self.residual_strength(lo + k as f64 * h);
         let inner: f64 = (1..STEPS)
             .map(|k| if k % 2 == 1 { 4.0 * g(k) } else { 2.0 * g(k) })
             .sum();
@@ -143,10 +165,10 @@ impl CarranzaTorres {
         let mut table = Vec::with_capacity(STEPS + 1);
         table.push(sigma);
         for _ in 0..STEPS {
-            let k1 = self.strength(sigma);
-            let k2 = self.strength(sigma + 0.5 * h * k1);
-            let k3 = self.strength(sigma + 0.5 * h * k2);
-            let k4 = self.strength(sigma + h * k3);
+            let k1 = self.residual_strength(sigma);
+            let k2 = self.residual_strength(sigma + 0.5 * h * k1);
+            let k3 = self.residual_strength(sigma + 0.5 * h * k2);
+            let k4 = self.residual_strength(sigma + h * k3);
             sigma += h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
             table.push(sigma);
         }
@@ -161,7 +183,7 @@ impl CarranzaTorres {
             let k = (x.floor() as usize).min(STEPS - 1);
             let w = x - k as f64;
             let sr = (1.0 - w) * self.table[k] + w * self.table[k + 1];
-            (-sr, -(sr + self.strength(sr)))
+            (-sr, -(sr + self.residual_strength(sr)))
         } else {
             let pe = if self.yields() {
                 self.critical_pressure()
@@ -315,6 +337,42 @@ pub fn run(
     Ok(measure_hole(sc, &exact, release, method, case)?.0)
 }
 
+/// The hole in `rock` softening to the constants of `residual_gsi` (the rock's mi, D = 0) over
+/// the plastic shear strain `strain` (small: the elastic–brittle–plastic rock) against Carranza-
+/// Torres's elastic–brittle–plastic solution, otherwise as [`run`].
+pub fn run_brittle(
+    kirsch: &Scene,
+    factor: f64,
+    rock: &Rock,
+    (residual_gsi, strain): (f64, f64),
+    (method, release): (SolveMethod, u64),
+) -> anyhow::Result<CaseReport> {
+    let (mut sc, exact) = scene(kirsch, factor, rock);
+    let residual = adit::law::hoek_brown_constants(residual_gsi, rock.mi, 0.0);
+    let exact = exact.with_residual(residual);
+    sc.materials
+        .get_mut(&sc.region.material)
+        .expect("region material")
+        .residual = Some(adit::scene::HoekBrownResidual {
+        gsi: Some(residual_gsi),
+        mb: None,
+        s: None,
+        a: None,
+        plastic_strain: strain,
+    });
+    let case = format!(
+        "Hoek–Brown hole GSI {} → {residual_gsi} at e^ps = {strain}, mi {}, σci {} MPa, p0 = {} MPa, Rp = {:.3} m (×{factor}){}{}",
+        rock.gsi,
+        rock.mi,
+        rock.sigma_ci / 1e6,
+        rock.p0 / 1e6,
+        exact.plastic_radius(),
+        if release > 0 { ", slowly" } else { "" },
+        crate::method_suffix(method)
+    );
+    Ok(measure_hole(sc, &exact, release, method, case)?.0)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -360,6 +418,37 @@ mod tests {
                 assert!(rel(a.1, b.1) < 1e-8, "{r}: {a:?} {b:?}");
             }
         }
+    }
+
+    /// The elastic–brittle–plastic rock: with the peak's own constants as residual it is the
+    /// perfectly plastic rock; with weaker ones the plastic zone grows, σr stays continuous at
+    /// Rp and σθ drops there from the peak's surface to the residual's.
+    #[test]
+    fn a_brittle_drop_widens_the_plastic_zone() {
+        let peak = adit::law::hoek_brown_constants(50.0, 12.0, 0.0);
+        let plastic = CarranzaTorres::new(3.0, (30e6, 0.0), 80e6, peak, 0.0, 4e9, 0.25);
+        let same = plastic.clone().with_residual(peak);
+        assert!((same.plastic_radius() - plastic.plastic_radius()).abs() < 1e-12);
+        assert!((same.wall_displacement() - plastic.wall_displacement()).abs() < 1e-12);
+        let residual = adit::law::hoek_brown_constants(30.0, 12.0, 0.0);
+        let brittle = plastic.clone().with_residual(residual);
+        let rp = brittle.plastic_radius();
+        assert!(rp > 1.2 * plastic.plastic_radius(), "{rp}");
+        let (inside, outside) = (
+            brittle.stress(rp * (1.0 - 1e-9)),
+            brittle.stress(rp * (1.0 + 1e-9)),
+        );
+        assert!(
+            (inside.0 - outside.0).abs() < 1e-4 * 30e6,
+            "{inside:?} {outside:?}"
+        );
+        let pcr = brittle.critical_pressure();
+        let drop = brittle.strength(pcr) - brittle.residual_strength(pcr);
+        assert!(
+            ((inside.1 - outside.1) - drop).abs() < 1e-4 * 30e6,
+            "{inside:?} {outside:?}"
+        );
+        assert!(brittle.wall_displacement() < plastic.wall_displacement());
     }
 
     /// The stresses are continuous across Rp and satisfy the criterion in the plastic zone.

@@ -48,6 +48,7 @@ pub fn all() -> Vec<Box<dyn Case>> {
         Box::new(gravity::Gravity),
         Box::new(salencon::Salencon),
         Box::new(hoek_brown::HoekBrown),
+        Box::new(hoek_brown::HoekBrownBrittle),
         Box::new(ubiquitous::Ubiquitous),
         Box::new(spalling::Spalling),
         Box::new(lined::Lined),
