@@ -152,14 +152,7 @@ pub fn run_scene_from(
 fn stage_method(plan: &Plan, i: usize, model: &Model) -> anyhow::Result<Method> {
     let spec = &plan.stages[i].solve;
     let scheme = ZoneScheme::of(model, spec.large_strain);
-    implicit::method(
-        spec.method,
-        spec.mode,
-        scheme,
-        &model.materials.zone,
-        &model.materials.joint,
-    )
-    .map_err(|reason| {
+    implicit::method(spec.method, spec.mode, scheme, &model.materials.joint).map_err(|reason| {
         let field = if plan.staged {
             format!("stages[{i}].solve.method (or the scene's solve.method)")
         } else {

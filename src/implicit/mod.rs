@@ -59,7 +59,6 @@ use std::time::Instant;
 
 use crate::cycle::{Cycle, CycleParams, ZoneScheme};
 use crate::joint::JointLaw;
-use crate::law::ZoneLaw;
 use crate::model::Model;
 use crate::scene::{SolveMethod, SolveMode, SolveSpec};
 use crate::solve::{HistoryRow, Observer, Solution, Status};
@@ -84,16 +83,11 @@ const RESTART_RISE: f64 = 2.0;
 
 /// Why the implicit path cannot solve a model of zone `scheme` and joint laws `joints`, or
 /// `None` if it can.
-pub fn unsupported(
-    scheme: ZoneScheme,
-    zones: &[Box<dyn ZoneLaw>],
-    joints: &[Box<dyn JointLaw>],
-) -> Option<&'static str> {
+pub fn unsupported(scheme: ZoneScheme, joints: &[Box<dyn JointLaw>]) -> Option<&'static str> {
     if scheme == ZoneScheme::LargeStrain {
         Some("the large-strain zone update (`solve.large_strain`) is not assembled")
     } else {
-        (zones.iter().find_map(|law| law.implicit_refusal()))
-            .or_else(|| joints.iter().find_map(|law| law.implicit_refusal()))
+        joints.iter().find_map(|law| law.implicit_refusal())
     }
 }
 
@@ -160,17 +154,16 @@ pub fn method(
     asked: SolveMethod,
     mode: SolveMode,
     scheme: ZoneScheme,
-    zones: &[Box<dyn ZoneLaw>],
     joints: &[Box<dyn JointLaw>],
 ) -> Result<Method, &'static str> {
     match (asked, mode) {
         (SolveMethod::Explicit, _) => Ok(Method::Explicit),
         (SolveMethod::Auto, SolveMode::Dynamic) => Ok(Method::Explicit),
-        (SolveMethod::Auto, SolveMode::Static) => Ok(match unsupported(scheme, zones, joints) {
+        (SolveMethod::Auto, SolveMode::Static) => Ok(match unsupported(scheme, joints) {
             Some(reason) => Method::Fallback(reason),
             None => Method::Implicit,
         }),
-        (SolveMethod::Implicit, _) => match unsupported(scheme, zones, joints) {
+        (SolveMethod::Implicit, _) => match unsupported(scheme, joints) {
             Some(reason) => Err(reason),
             None => Ok(Method::Implicit),
         },

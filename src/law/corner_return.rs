@@ -19,16 +19,17 @@
 
 use nalgebra::{Matrix3, Vector3};
 
-/// One bounding plane of the Mohr–Coulomb criterion in principal stresses.
+/// One bounding plane of a criterion in principal stresses (Mohr–Coulomb's here, Hoek–Brown's
+/// curved surfaces by the same indices).
 #[derive(Clone, Copy, Debug, PartialEq)]
-enum Plane {
+pub(super) enum Plane {
     /// Shear between principal values `minor` and `major` (indices 0..3).
     Shear { minor: usize, major: usize },
     /// Tension cut-off on principal value `k`.
     Tension { k: usize },
 }
 
-const PLANES: [Plane; 6] = [
+pub(super) const PLANES: [Plane; 6] = [
     Plane::Shear { minor: 0, major: 2 },
     Plane::Shear { minor: 1, major: 2 },
     Plane::Shear { minor: 0, major: 1 },
@@ -39,12 +40,12 @@ const PLANES: [Plane; 6] = [
 
 /// An admissible return: its planes (`set[..size]`, indices into [`PLANES`]), multipliers,
 /// corrected principal stresses (Pa) and complementary energy (Pa).
-struct Candidate {
-    size: usize,
-    energy: f64,
-    stress: [f64; 3],
-    lambda: Vector3<f64>,
-    set: [usize; 3],
+pub(super) struct Candidate {
+    pub size: usize,
+    pub energy: f64,
+    pub stress: [f64; 3],
+    pub lambda: Vector3<f64>,
+    pub set: [usize; 3],
 }
 
 /// The Mohr–Coulomb criterion in principal stresses with the elastic matrix it returns through.

@@ -38,7 +38,7 @@
 
 use nalgebra::{Matrix3, Vector3};
 
-use super::corner_return::{elastic_times, subsets};
+use super::corner_return::{Candidate, PLANES, Plane, elastic_times, subsets};
 use super::principal::{Principal, state_after};
 use super::{
     Elastic, SHEAR_NOW, StrainIncrement, Stress, TENSION_NOW, ZoneLaw, plane_strain_moduli,
@@ -87,35 +87,8 @@ pub struct Residual {
     pub strain: f64,
 }
 
-/// One bounding surface of the criterion in principal stresses.
-#[derive(Clone, Copy, Debug, PartialEq)]
-enum Plane {
-    /// Shear between principal values `minor` and `major` (indices 0..3, minor < major).
-    Shear { minor: usize, major: usize },
-    /// Tension cut-off on principal value `k`.
-    Tension { k: usize },
-}
-
-const PLANES: [Plane; 6] = [
-    Plane::Shear { minor: 0, major: 2 },
-    Plane::Shear { minor: 1, major: 2 },
-    Plane::Shear { minor: 0, major: 1 },
-    Plane::Tension { k: 2 },
-    Plane::Tension { k: 1 },
-    Plane::Tension { k: 0 },
-];
-
 /// Newton iterations allowed for one active set.
 const NEWTON: usize = 60;
-
-/// A return onto a set of planes: the corrected stresses (Pa), the multipliers and the energy.
-struct Candidate {
-    size: usize,
-    set: [usize; 3],
-    stress: [f64; 3],
-    mu: Vector3<f64>,
-    energy: f64,
-}
 
 impl HoekBrown {
     /// From σci (Pa), mb, s, a, ψ (degrees) and σt (Pa, capped at the apex s σci / mb).
@@ -274,7 +247,7 @@ impl HoekBrown {
             size,
             set,
             stress,
-            mu,
+            lambda: mu,
             ..
         }) = best
         else {
@@ -327,7 +300,7 @@ impl HoekBrown {
                     size,
                     set,
                     stress: q,
-                    mu,
+                    lambda: mu,
                     energy,
                 });
             }

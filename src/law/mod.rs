@@ -36,11 +36,6 @@ pub trait ZoneLaw: Send + Sync + CopyZoneLaw {
     fn trial(&self, stress: &mut Stress, state: &mut u8, plastic: &mut f64, de: &StrainIncrement) {
         self.update(stress, state, plastic, de);
     }
-    /// Why the implicit path cannot solve with this law yet, if it cannot (`solve.method`:
-    /// `implicit` is then an error naming the reason, and `auto` cycles explicitly).
-    fn implicit_refusal(&self) -> Option<&'static str> {
-        None
-    }
     /// Bulk and shear moduli (Pa) that bound the law's tangent stiffness, for the time step.
     fn moduli(&self) -> (f64, f64);
     /// Mass density, kg/m³.

@@ -213,7 +213,8 @@ impl UbiquitousJoint {
         trial: bool,
     ) {
         let past = *state & (PLANE_SHEAR_PAST | PLANE_TENSION_PAST);
-        let mut matrix_state = *state & !(PLANE_SHEAR_NOW | PLANE_TENSION_NOW | past);
+        let mut matrix_state =
+            *state & !(PLANE_SHEAR_NOW | PLANE_TENSION_NOW | PLANE_SHEAR_PAST | PLANE_TENSION_PAST);
         self.matrix_step(s, &mut matrix_state, plastic, de, trial);
         let tol = 1e-9 * (s.iter().fold(0.0f64, |m, v| m.max(v.abs())) + self.plane.cohesion);
         let mut plane_now = 0;

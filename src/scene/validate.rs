@@ -67,6 +67,52 @@ fn validate_material(p: &str, m: &Material) -> Result<(), SceneError> {
     }
 }
 
+/// An angle of friction or dilation at `path`: in [0, 90) degrees.
+fn angle_below_90(path: &str, v: f64) -> Result<(), SceneError> {
+    if (0.0..90.0).contains(&v) {
+        Ok(())
+    } else {
+        Err(invalid(
+            path,
+            format!("must be in [0, 90) degrees, got {}", Num(v)),
+        ))
+    }
+}
+
+/// A tensile strength at `path`, if given: zero or positive (infinite allowed).
+fn tensile(path: &str, t: Option<f64>) -> Result<(), SceneError> {
+    match t {
+        Some(t) if t.is_nan() || t < 0.0 => Err(invalid(
+            path,
+            format!("must be zero or positive, got {}", Num(t)),
+        )),
+        _ => Ok(()),
+    }
+}
+
+/// A Coulomb criterion's fields at `p` (a Mohr–Coulomb material, a weak plane): cohesion ≥ 0
+/// and finite, friction in [0, 90) degrees, dilation in [0, friction], tensile strength ≥ 0.
+fn validate_coulomb(
+    p: &str,
+    (cohesion, friction, dilation): (f64, f64, f64),
+    tension: Option<f64>,
+) -> Result<(), SceneError> {
+    if !(cohesion >= 0.0 && cohesion.is_finite()) {
+        return Err(invalid(
+            format!("{p}.cohesion"),
+            format!("must be zero or positive, got {}", Num(cohesion)),
+        ));
+    }
+    angle_below_90(&format!("{p}.friction"), friction)?;
+    if !(0.0..=friction).contains(&dilation) {
+        return Err(invalid(
+            format!("{p}.dilation"),
+            format!("must be in [0, friction] degrees, got {}", Num(dilation)),
+        ));
+    }
+    tensile(&format!("{p}.tensile_strength"), tension)
+}
+
 /// The CWFS fields of a Mohr–Coulomb material at `p`: a residual cohesion ≥ 0, a mobilized
 /// friction in [0, 90) degrees, both strains positive.
 fn validate_cwfs(p: &str, w: &crate::scene::CwfsSpec) -> Result<(), SceneError> {
@@ -76,15 +122,7 @@ fn validate_cwfs(p: &str, w: &crate::scene::CwfsSpec) -> Result<(), SceneError> 
             format!("must be zero or positive, got {}", Num(w.residual_cohesion)),
         ));
     }
-    if !(0.0..90.0).contains(&w.mobilized_friction) {
-        return Err(invalid(
-            format!("{p}.mobilized_friction"),
-            format!(
-                "must be in [0, 90) degrees, got {}",
-                Num(w.mobilized_friction)
-            ),
-        ));
-    }
+    angle_below_90(&format!("{p}.mobilized_friction"), w.mobilized_friction)?;
     for (field, e) in [
         ("cohesion_strain", w.cohesion_strain),
         ("friction_strain", w.friction_strain),
@@ -108,33 +146,7 @@ fn validate_weak_plane(p: &str, w: &crate::scene::WeakPlaneSpec) -> Result<(), S
             "must be a finite angle in degrees",
         ));
     }
-    if !(w.cohesion >= 0.0 && w.cohesion.is_finite()) {
-        return Err(invalid(
-            format!("{p}.cohesion"),
-            format!("must be zero or positive, got {}", Num(w.cohesion)),
-        ));
-    }
-    if !(0.0..90.0).contains(&w.friction) {
-        return Err(invalid(
-            format!("{p}.friction"),
-            format!("must be in [0, 90) degrees, got {}", Num(w.friction)),
-        ));
-    }
-    if !(0.0..=w.friction).contains(&w.dilation) {
-        return Err(invalid(
-            format!("{p}.dilation"),
-            format!("must be in [0, friction] degrees, got {}", Num(w.dilation)),
-        ));
-    }
-    if let Some(t) = w.tensile_strength
-        && (t.is_nan() || t < 0.0)
-    {
-        return Err(invalid(
-            format!("{p}.tensile_strength"),
-            format!("must be zero or positive, got {}", Num(t)),
-        ));
-    }
-    Ok(())
+    validate_coulomb(p, (w.cohesion, w.friction, w.dilation), w.tensile_strength)
 }
 
 /// The Mohr–Coulomb fields of material `m` (path `p`): required and in range for that law, absent
@@ -170,32 +182,7 @@ fn validate_strength(p: &str, m: &Material) -> Result<(), SceneError> {
             friction: phi,
             ..
         } => {
-            if !(c >= 0.0 && c.is_finite()) {
-                return Err(invalid(
-                    format!("{p}.cohesion"),
-                    format!("must be zero or positive, got {}", Num(c)),
-                ));
-            }
-            if !(0.0..90.0).contains(&phi) {
-                return Err(invalid(
-                    format!("{p}.friction"),
-                    format!("must be in [0, 90) degrees, got {}", Num(phi)),
-                ));
-            }
-            if !(0.0..=phi).contains(&m.dilation) {
-                return Err(invalid(
-                    format!("{p}.dilation"),
-                    format!("must be in [0, friction] degrees, got {}", Num(m.dilation)),
-                ));
-            }
-            if let Some(t) = m.tensile_strength
-                && (t.is_nan() || t < 0.0)
-            {
-                return Err(invalid(
-                    format!("{p}.tensile_strength"),
-                    format!("must be zero or positive, got {}", Num(t)),
-                ));
-            }
+            validate_coulomb(p, (c, phi, m.dilation), m.tensile_strength)?;
             if let Some(cwfs) = &m.cwfs {
                 validate_cwfs(&format!("{p}.cwfs"), cwfs)?;
             }
@@ -234,21 +221,8 @@ fn validate_hoek_brown(
 ) -> Result<(), SceneError> {
     positive(&format!("{p}.sigma_ci"), sigma_ci)?;
     validate_constants(p, constants, tensile_strength)?;
-    if !(0.0..90.0).contains(&dilation) {
-        return Err(invalid(
-            format!("{p}.dilation"),
-            format!("must be in [0, 90) degrees, got {}", Num(dilation)),
-        ));
-    }
-    if let Some(t) = tensile_strength
-        && (t.is_nan() || t < 0.0)
-    {
-        return Err(invalid(
-            format!("{p}.tensile_strength"),
-            format!("must be zero or positive, got {}", Num(t)),
-        ));
-    }
-    Ok(())
+    angle_below_90(&format!("{p}.dilation"), dilation)?;
+    tensile(&format!("{p}.tensile_strength"), tensile_strength)
 }
 
 /// Hoek–Brown constants at `p` (a material or its `residual`): GSI in [1, 100], mi > 0, D in
@@ -308,18 +282,8 @@ fn validate_constants(
 fn validate_joint_material(p: &str, j: &JointMaterial) -> Result<(), SceneError> {
     positive(&format!("{p}.normal_stiffness"), j.normal_stiffness)?;
     positive(&format!("{p}.shear_stiffness"), j.shear_stiffness)?;
-    if !(0.0..90.0).contains(&j.friction) {
-        return Err(invalid(
-            format!("{p}.friction"),
-            format!("must be in [0, 90) degrees, got {}", Num(j.friction)),
-        ));
-    }
-    if !(0.0..90.0).contains(&j.dilation) {
-        return Err(invalid(
-            format!("{p}.dilation"),
-            format!("must be in [0, 90) degrees, got {}", Num(j.dilation)),
-        ));
-    }
+    angle_below_90(&format!("{p}.friction"), j.friction)?;
+    angle_below_90(&format!("{p}.dilation"), j.dilation)?;
     if let JointLawSpec::ContinuouslyYielding { roughness, .. } = j.law_spec(p)? {
         positive(&format!("{p}.roughness"), roughness)?;
         if let Some(f) = j.initial_friction

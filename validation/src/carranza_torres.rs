@@ -14,14 +14,14 @@
 //! here the integral is Simpson's rule on 20 000 panels and the plastic zone's radial stress a
 //! table of the same ODE by RK4 in ln r (interpolated linearly: to about 1e-9 of p0). The wall's
 //! radial displacement follows from the flow rule's compatibility with the elastic strains
-//! (`salencon::wall_by_flow`, as for Mohr–Coulomb), from u(Rp) = −(p0 − pcr) Rp / (2G).
+//! (`salencon::wall_of`, as for Mohr–Coulomb), from u(Rp) = −(p0 − pcr) Rp / (2G).
 
 use adit::Scene;
 use adit::scene::{SolveMethod, ZoneLawKind};
 
 use crate::kirsch_case::scaled;
 use crate::report::CaseReport;
-use crate::salencon::{ClosedHole, ElasticStrain, measure_hole, wall_by_flow};
+use crate::salencon::{ClosedHole, ElasticStrain, elastic_zone_stress, measure_hole, wall_of};
 
 /// Steps of the quadrature and of the radial-stress table.
 const STEPS: usize = 20_000;
@@ -190,26 +190,23 @@ impl CarranzaTorres {
             } else {
                 self.pi
             };
-            let k = (self.p0 - pe) * (rp / r).powi(2);
-            (-self.p0 + k, -self.p0 - k)
+            elastic_zone_stress(self.p0, (pe, rp), r)
         }
     }
 
     /// Radial displacement of the wall, m (negative: inward).
     pub fn wall_displacement(&self) -> f64 {
-        let rp = self.plastic_radius();
-        let (sr_e, _) = self.stress(rp);
-        let u_rp = -(self.p0 + sr_e) * rp / (2.0 * self.shear);
-        if rp <= self.radius {
-            return u_rp;
-        }
-        let n_psi = (1.0 + self.dilation.sin()) / (1.0 - self.dilation.sin());
         let elastic = ElasticStrain {
             p0: self.p0,
             shear: self.shear,
             poisson: self.poisson,
         };
-        wall_by_flow(self.radius, rp, u_rp, n_psi, |r| elastic.of(self.stress(r)))
+        wall_of(
+            (self.radius, self.plastic_radius()),
+            &elastic,
+            self.dilation,
+            |r| self.stress(r),
+        )
     }
 }
 

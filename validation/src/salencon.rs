@@ -83,28 +83,51 @@ impl Salencon {
             } else {
                 self.pi
             };
-            let k = (self.p0 - pe) * (rp / r).powi(2);
-            (-self.p0 + k, -self.p0 - k)
+            elastic_zone_stress(self.p0, (pe, rp), r)
         }
     }
 
     /// Radial displacement of the wall, m (negative: inward), from the compatibility ODE above.
     pub fn wall_displacement(&self) -> f64 {
-        let rp = self.plastic_radius();
-        let (sr_e, _) = self.stress(rp);
-        // Elastic zone: u = −(p0 − pe) Rp²/(2G r), pe = −σr(Rp).
-        let u_rp = -(self.p0 + sr_e) * rp / (2.0 * self.shear);
-        if rp <= self.radius {
-            return u_rp;
-        }
-        let n_psi = (1.0 + self.dilation.sin()) / (1.0 - self.dilation.sin());
         let elastic = ElasticStrain {
             p0: self.p0,
             shear: self.shear,
             poisson: self.poisson,
         };
-        wall_by_flow(self.radius, rp, u_rp, n_psi, |r| elastic.of(self.stress(r)))
+        wall_of(
+            (self.radius, self.plastic_radius()),
+            &elastic,
+            self.dilation,
+            |r| self.stress(r),
+        )
     }
+}
+
+/// (σr, σθ) at r ≥ Rp (Pa, tension positive) in the elastic zone around a hole's plastic zone of
+/// radius `rp` whose boundary carries the radial pressure `pe` (compression positive) under the
+/// in-situ pressure `p0`: Lamé's σr, σθ = −p0 ± (p0 − pe)(Rp/r)².
+pub fn elastic_zone_stress(p0: f64, (pe, rp): (f64, f64), r: f64) -> (f64, f64) {
+    let k = (p0 - pe) * (rp / r).powi(2);
+    (-p0 + k, -p0 - k)
+}
+
+/// The wall's radial displacement u(a), m (negative: inward), of a hole of radius a plastic out
+/// to Rp (`(a, rp)`) whose closed-form stresses (Pa, tension positive) are `stress(r)`: the
+/// elastic zone's u(Rp) = −(p0 − pe) Rp/(2G), pe = −σr(Rp), then in to the wall by the flow
+/// rule's compatibility with the elastic strains (`wall_by_flow`, Nψ of `dilation`, rad).
+pub fn wall_of(
+    (radius, rp): (f64, f64),
+    elastic: &ElasticStrain,
+    dilation: f64,
+    stress: impl Fn(f64) -> (f64, f64),
+) -> f64 {
+    let (sr_e, _) = stress(rp);
+    let u_rp = -(elastic.p0 + sr_e) * rp / (2.0 * elastic.shear);
+    if rp <= radius {
+        return u_rp;
+    }
+    let n_psi = (1.0 + dilation.sin()) / (1.0 - dilation.sin());
+    wall_by_flow(radius, rp, u_rp, n_psi, |r| elastic.of(stress(r)))
 }
 
 /// The plane-strain elastic strains of a stress change from the hydrostatic −p0.
