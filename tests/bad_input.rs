@@ -348,6 +348,45 @@ fn extreme_values_are_refused_naming_the_field() {
     refused(&with("/joints", Value::Array(many)), "joints");
 }
 
+/// The Barton–Bandis law's fields are checked by the CLI, each refusal naming its field.
+#[test]
+fn barton_bandis_fields_are_checked() {
+    let tunnel = model("tunnel");
+    let name = tunnel["joint_sets"][0]["material"]
+        .as_str()
+        .unwrap()
+        .to_string();
+    let path = format!("joint_materials.{name}");
+    let with = |fields: Value| {
+        let mut s = tunnel.clone();
+        let j = s["joint_materials"][&name].as_object_mut().unwrap();
+        for key in ["cohesion", "tensile_strength", "dilation"] {
+            j.remove(key);
+        }
+        j.insert("law".into(), json!("barton_bandis"));
+        for (k, v) in fields.as_object().unwrap() {
+            j.insert(k.clone(), v.clone());
+        }
+        s
+    };
+    let good = json!({ "jrc": 8, "jcs": 60e6, "max_closure": 4e-4 });
+    let bad = |key: &str, v: Value| {
+        let mut f = good.clone();
+        f[key] = v;
+        refused(&with(f), &format!("{path}.{key}"))
+    };
+    bad("jrc", json!(25));
+    bad("jcs", json!(-1));
+    bad("max_closure", json!(0));
+    bad("block_size", json!(0));
+    bad("dilation_divisor", json!(0.5));
+    bad("max_normal_stiffness", json!(1));
+    bad("cohesion", json!(1e5));
+    let mut missing = good.clone();
+    missing.as_object_mut().unwrap().remove("jcs");
+    refused(&with(missing), &format!("{path}.jcs"));
+}
+
 /// A scene that passes every bound but whose first cycles blow up (rock of 1 kPa under 0.9 TPa)
 /// fails `adit check` as it fails `run`, naming the cycle and the node, instead of measuring
 /// cycles on exploded positions (in-situ stresses of 1e21 Pa had aborted there).

@@ -286,7 +286,7 @@ m = meshio.read(sys.argv[1])
 lines = [c for c in m.cells if c.type == "line"]
 assert len(lines) == 1 and lines[0].data.shape[0] > 100, [c.type for c in m.cells]
 n = lines[0].data.shape[0]
-for name in ["normal_stress", "shear_stress", "shear_displacement", "aperture", "state", "material", "block"]:
+for name in ["normal_stress", "shear_stress", "shear_displacement", "aperture", "jrc_mobilized", "state", "material", "block"]:
     assert m.cell_data[name][0].shape[0] == n, name
 assert (m.cell_data["normal_stress"][0] < 0).mean() > 0.9
 print("meshio ok")

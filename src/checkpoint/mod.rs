@@ -24,8 +24,9 @@ use crate::output::StageSummary;
 use crate::solve::HistoryRow;
 
 /// The format's version: a checkpoint of another version is refused. 2: each stage's summary
-/// holds the block still moving at its convergence (`StageSummary::moving`).
-pub const VERSION: u32 = 2;
+/// holds the block still moving at its convergence (`StageSummary::moving`). 3: a joint's state
+/// holds its shear path and mobilized JRC (the Barton–Bandis law).
+pub const VERSION: u32 = 3;
 
 const MAGIC: &[u8; 8] = b"ADITCKPT";
 

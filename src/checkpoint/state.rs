@@ -26,6 +26,8 @@ impl Codec for JointState {
             self.dilation,
             self.bounding_friction,
             self.reversal,
+            self.shear_path,
+            self.jrc_mobilized,
         ] {
             x.put(out);
         }
@@ -41,7 +43,9 @@ impl Codec for JointState {
             dilation,
             bounding_friction,
             reversal,
-        ] = <[f64; 8]>::get(r)?;
+            shear_path,
+            jrc_mobilized,
+        ] = <[f64; 10]>::get(r)?;
         Ok(JointState {
             normal,
             shear,
@@ -51,6 +55,8 @@ impl Codec for JointState {
             dilation,
             bounding_friction,
             reversal,
+            shear_path,
+            jrc_mobilized,
             flags: u8::get(r)?,
         })
     }

@@ -344,7 +344,7 @@ pub fn compressed(
 
 /// The contacts' stiffness over the unknowns (lower triangle), at the current positions `x`:
 /// a contact of node i against the point ξ of edge (j, k), of length L, normal n and tangent t,
-/// with its joint law's stiffnesses kn, ks (Pa/m), adds
+/// with its joint law's stiffnesses kn, ks (Pa/m) in the contact's state (`JointLaw::tangent`), adds
 /// K_c = L (w wᵀ) ⊗ (kn n nᵀ + ks t tᵀ), w = (1, −(1 − ξ), −ξ) over the components of (i, j, k):
 /// the linearization of the contact stage's forces F = −L(σn n + τ t) on i, −(1 − ξ)F on j and
 /// −ξF on k for a contact that neither slips nor opens (the initial stiffness of a joint).
@@ -363,7 +363,7 @@ pub fn contact_stiffness(
             let (i, e) = (contacts.node[c], contacts.edge[c]);
             let n = contact_normal(blocks, &at, i, e, contacts.corner[c]);
             let t = [-n[1], n[0]];
-            let (kn, ks) = laws[contacts.material[c] as usize].stiffness();
+            let (kn, ks) = laws[contacts.material[c] as usize].tangent(&contacts.state[c]);
             let (len, xi) = (contacts.length[c], contacts.xi[c]);
             let w = [1.0, -(1.0 - xi), -xi];
             let [j, k] = blocks.edges[e as usize];

@@ -8,8 +8,8 @@
 //! by Anderson mixing of the last iterates (`anderson`).
 //!
 //! Contacts enter the matrix with their joints' elastic stiffness (the initial stiffness of a
-//! joint: in the matrix it neither slips nor opens, while the residual carries the joint law's own
-//! forces), and the matrix is factorized again when a detection finds a node touching a block it
+//! joint, at its state where it depends on it, as the Barton–Bandis hyperbola's: in the matrix it
+//! neither slips nor opens, while the residual carries the joint law's own forces), and the matrix is factorized again when a detection finds a node touching a block it
 //! did not touch at the last factorization (a contact that slid onto the next edge, or opened,
 //! leaves the matrix close enough or too stiff, and the iterations converge on it). Slip alone
 //! converges linearly and slowly (`models/jointed_tunnel.json`: ratio 2.2e-3 after 200 plain

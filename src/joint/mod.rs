@@ -1,9 +1,11 @@
 //! Joint constitutive laws behind one small trait; each law is one file.
 
+mod barton_bandis;
 mod coulomb;
 mod glued;
 mod yielding;
 
+pub use barton_bandis::{BartonBandis, Roughness};
 pub use coulomb::{CoulombSlip, tan_deg};
 pub use glued::Glued;
 pub use yielding::{ContinuouslyYielding, SHEAR_NEGATIVE};
@@ -34,6 +36,12 @@ pub struct JointState {
     pub(crate) bounding_friction: f64,
     /// Reversal factor r of the continuously yielding law (τ/τm at the last shear reversal).
     pub(crate) reversal: f64,
+    /// The shear path Σ|Δus| since the contact was made, m: the Barton–Bandis law's mobilization
+    /// coordinate (counted by that law only).
+    pub shear_path: f64,
+    /// The mobilized joint roughness coefficient JRCmob of the Barton–Bandis law (0 for the other
+    /// laws).
+    pub jrc_mobilized: f64,
     /// `SLIPPING`, `OPEN`, `FAILED` bit flags (and a law's own, such as `SHEAR_NEGATIVE`).
     pub flags: u8,
 }
@@ -49,8 +57,13 @@ pub trait JointLaw: Send + Sync + CopyJointLaw {
     fn trial(&self, state: &mut JointState, dn: f64, ds: f64) {
         self.update(state, dn, ds)
     }
-    /// Normal and shear stiffness (Pa/m), for the time step.
+    /// Normal and shear stiffness (Pa/m), for the time step: the stiffest the law gets.
     fn stiffness(&self) -> (f64, f64);
+    /// The normal and shear stiffness (Pa/m) of a contact in `state`, for the implicit path's
+    /// matrix; the default is `stiffness`, for the laws whose elastic stiffness is constant.
+    fn tangent(&self, _state: &JointState) -> (f64, f64) {
+        self.stiffness()
+    }
     /// Why the implicit path cannot integrate this law, or `None` (the default). The implicit
     /// path steps the joints through its iterations' corrections, which go back and forth on
     /// their way to equilibrium: a law whose response depends on the history of its increments

@@ -115,6 +115,7 @@ impl Tables {
             float("shear_stress_pa", 1, state(|s| s.shear)),
             float("normal_displacement_m", 1, state(|s| s.normal_displacement)),
             float("shear_displacement_m", 1, state(|s| s.shear_displacement)),
+            float("jrc_mobilized", 1, state(|s| s.jrc_mobilized)),
             int(
                 "state",
                 1,

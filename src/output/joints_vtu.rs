@@ -6,7 +6,8 @@
 //! contacts from both sides; drawing one side keeps the traces from overlapping). Each line's data
 //! is the mean over the contacts of its two nodes: `normal_stress` and `shear_stress` (Pa, tension
 //! positive), `shear_displacement` (m), `aperture` (m: the opening max(uₙ, 0), joints starting
-//! closed), and `state` the worse of the two ends (0 elastic, 1 slipping, 2 open), `material` the
+//! closed), `jrc_mobilized` (the Barton–Bandis law's mobilized roughness, 0 for the other laws),
+//! and `state` the worse of the two ends (0 elastic, 1 slipping, 2 open), `material` the
 //! joint material of the first node's contact (names in the field data).
 
 use vtkio::model::{Attribute, Attributes, CellType, Cells, UnstructuredGridPiece, VertexNumbers};
@@ -22,6 +23,7 @@ struct End {
     shear: f64,
     slip: f64,
     opening: f64,
+    jrc: f64,
     state: i32,
     material: u32,
     /// The lowest block number of the contacts' other blocks.
@@ -45,12 +47,14 @@ pub fn joints_vtu(model: &Model, labels: &Labels) -> Result<Vec<u8>, vtkio::Erro
         e.shear += s.shear;
         e.slip += s.shear_displacement;
         e.opening += s.normal_displacement.max(0.0);
+        e.jrc += s.jrc_mobilized;
         e.state = e.state.max(state_code(s));
         e.other = e.other.min(c.block[k]);
     }
     let mut points = Vec::new();
     let mut lines = 0u64;
     let (mut normal, mut shear, mut slip, mut aperture) = (vec![], vec![], vec![], vec![]);
+    let mut jrc = vec![];
     let (mut state, mut material, mut block) = (vec![], vec![], vec![]);
     for b in 0..blocks.len() {
         if blocks.is_removed(b) {
@@ -71,6 +75,7 @@ pub fn joints_vtu(model: &Model, labels: &Labels) -> Result<Vec<u8>, vtkio::Erro
             shear.push(mean(|e| e.shear));
             slip.push(mean(|e| e.slip));
             aperture.push(mean(|e| e.opening));
+            jrc.push(mean(|e| e.jrc));
             state.push(p.state.max(q.state));
             material.push(p.material as i32);
             block.push(b as i32);
@@ -93,6 +98,7 @@ pub fn joints_vtu(model: &Model, labels: &Labels) -> Result<Vec<u8>, vtkio::Erro
                 Attribute::generic("shear_stress", 1).with_data(shear),
                 Attribute::generic("shear_displacement", 1).with_data(slip),
                 Attribute::generic("aperture", 1).with_data(aperture),
+                Attribute::generic("jrc_mobilized", 1).with_data(jrc),
                 Attribute::generic("state", 1).with_data(state),
                 Attribute::generic("material", 1).with_data(material),
                 Attribute::generic("block", 1).with_data(block),

@@ -477,8 +477,8 @@ pub struct JointMaterial {
     /// Dilation angle, degrees (default 0).
     #[serde(default)]
     pub dilation: f64,
-    /// Joint law: `coulomb` (default), `continuously_yielding` or `glued` (a construction joint:
-    /// elastic springs that never slip or open).
+    /// Joint law: `coulomb` (default), `continuously_yielding`, `barton_bandis` or `glued` (a
+    /// construction joint: elastic springs that never slip or open).
     #[serde(default)]
     pub law: JointLawKind,
     /// Continuously yielding: initial bounding friction angle φm0, degrees (default `friction`).
@@ -487,6 +487,31 @@ pub struct JointMaterial {
     /// Continuously yielding: roughness length R, m (required for that law).
     #[serde(default)]
     pub roughness: Option<f64>,
+    /// Barton–Bandis: joint roughness coefficient JRC0 of the sample (required for that law).
+    #[serde(default)]
+    pub jrc: Option<f64>,
+    /// Barton–Bandis: joint wall compressive strength JCS0 of the sample, Pa (required).
+    #[serde(default)]
+    pub jcs: Option<f64>,
+    /// Barton–Bandis: maximum closure Vm of the normal hyperbola, m (required; `normal_stiffness`
+    /// is its initial stiffness Kni).
+    #[serde(default)]
+    pub max_closure: Option<f64>,
+    /// Barton–Bandis: length L0 of the sample JRC0 and JCS0 were measured on, m (default 0.1).
+    #[serde(default)]
+    pub sample_length: Option<f64>,
+    /// Barton–Bandis: block size Ln, m, to scale JRC and JCS to (Barton & Bandis 1982; default:
+    /// none, the sample's values).
+    #[serde(default)]
+    pub block_size: Option<f64>,
+    /// Barton–Bandis: the largest normal stiffness Kmax, Pa/m, where the hyperbola ends and the
+    /// time step is taken (default its tangent at σ′ = JCS; at least `normal_stiffness`).
+    #[serde(default)]
+    pub max_normal_stiffness: Option<f64>,
+    /// Barton–Bandis: the divisor M of the mobilized dilation angle JRCmob log10(JCS/σ′)/M
+    /// (default 2).
+    #[serde(default)]
+    pub dilation_divisor: Option<f64>,
 }
 
 /// Which joint law a joint material follows.
@@ -496,6 +521,7 @@ pub enum JointLawKind {
     #[default]
     Coulomb,
     ContinuouslyYielding,
+    BartonBandis,
     Glued,
 }
 

@@ -243,12 +243,48 @@ pub enum JointLawSpec {
         /// Initial friction angle, degrees (default: the friction angle).
         initial_friction: f64,
     },
+    BartonBandis {
+        /// JRC0 of the sample.
+        jrc: f64,
+        /// JCS0 of the sample, Pa.
+        jcs: f64,
+        /// Maximum closure Vm, m.
+        max_closure: f64,
+        /// Kmax, Pa/m (default: the tangent at JCS).
+        max_normal_stiffness: Option<f64>,
+        /// Sample length L0, m.
+        sample_length: f64,
+        /// Block size Ln to scale to, m.
+        block_size: Option<f64>,
+        /// Divisor M of the mobilized dilation angle.
+        dilation_divisor: f64,
+    },
 }
 
 impl JointMaterial {
-    /// Its law: the continuously yielding law needs `roughness`; the others take neither
-    /// `roughness` nor `initial_friction`.
+    /// Its law: the continuously yielding law needs `roughness`, the Barton–Bandis law `jrc`,
+    /// `jcs` and `max_closure`; each law's own fields belong to it alone, and the Barton–Bandis
+    /// law, whose strength and dilation come from its roughness, takes no `cohesion`,
+    /// `tensile_strength` or `dilation`.
     pub fn law_spec(&self, path: &str) -> Result<JointLawSpec, SceneError> {
+        let barton_bandis = [
+            ("jrc", self.jrc),
+            ("jcs", self.jcs),
+            ("max_closure", self.max_closure),
+            ("max_normal_stiffness", self.max_normal_stiffness),
+            ("sample_length", self.sample_length),
+            ("block_size", self.block_size),
+            ("dilation_divisor", self.dilation_divisor),
+        ];
+        if self.law == JointLawKind::BartonBandis {
+            return self.barton_bandis_spec(path);
+        }
+        if let Some((field, _)) = barton_bandis.iter().find(|(_, v)| v.is_some()) {
+            return Err(invalid(
+                format!("{path}.{field}"),
+                "belongs to the Barton–Bandis law (`law: barton_bandis`)",
+            ));
+        }
         match self.law {
             JointLawKind::ContinuouslyYielding => match self.roughness {
                 Some(roughness) => Ok(JointLawSpec::ContinuouslyYielding {
@@ -266,7 +302,48 @@ impl JointMaterial {
             )),
             JointLawKind::Glued => Ok(JointLawSpec::Glued),
             JointLawKind::Coulomb => Ok(JointLawSpec::Coulomb),
+            JointLawKind::BartonBandis => unreachable!("returned above"),
         }
+    }
+
+    /// The Barton–Bandis law's fields (`friction` is its residual friction angle φr).
+    fn barton_bandis_spec(&self, path: &str) -> Result<JointLawSpec, SceneError> {
+        let required = |field: &str, v: Option<f64>| {
+            v.ok_or_else(|| {
+                invalid(
+                    format!("{path}.{field}"),
+                    "required by the Barton–Bandis law",
+                )
+            })
+        };
+        for (field, v) in [
+            ("cohesion", self.cohesion),
+            ("tensile_strength", self.tensile_strength),
+            ("dilation", self.dilation),
+        ] {
+            if v != 0.0 {
+                return Err(invalid(
+                    format!("{path}.{field}"),
+                    "cannot act in the Barton–Bandis law (its strength and dilation come from \
+                     `jrc` and `jcs`, and it carries no tension)",
+                ));
+            }
+        }
+        if self.roughness.is_some() || self.initial_friction.is_some() {
+            return Err(invalid(
+                path,
+                "`roughness` and `initial_friction` belong to the continuously yielding law",
+            ));
+        }
+        Ok(JointLawSpec::BartonBandis {
+            jrc: required("jrc", self.jrc)?,
+            jcs: required("jcs", self.jcs)?,
+            max_closure: required("max_closure", self.max_closure)?,
+            max_normal_stiffness: self.max_normal_stiffness,
+            sample_length: self.sample_length.unwrap_or(0.1),
+            block_size: self.block_size,
+            dilation_divisor: self.dilation_divisor.unwrap_or(2.0),
+        })
     }
 }
 
@@ -463,5 +540,29 @@ mod tests {
         );
         let coulomb_rough = j(&format!(r#"{{ {k}, "roughness": 1e-3 }}"#));
         assert!(coulomb_rough.law_spec("j").is_err());
+
+        let bb = r#""law": "barton_bandis", "jrc": 10, "jcs": 100e6, "max_closure": 5e-4"#;
+        assert_eq!(
+            j(&format!("{{ {k}, {bb} }}")).law_spec("j").unwrap(),
+            JointLawSpec::BartonBandis {
+                jrc: 10.0,
+                jcs: 100e6,
+                max_closure: 5e-4,
+                max_normal_stiffness: None,
+                sample_length: 0.1,
+                block_size: None,
+                dilation_divisor: 2.0
+            }
+        );
+        let err = |json: String| j(&json).law_spec("j").unwrap_err().to_string();
+        assert!(
+            err(format!(
+                r#"{{ {k}, "law": "barton_bandis", "jrc": 10, "jcs": 100e6 }}"#
+            ))
+            .starts_with("j.max_closure")
+        );
+        assert!(err(format!(r#"{{ {k}, {bb}, "cohesion": 1e5 }}"#)).starts_with("j.cohesion"));
+        assert!(err(format!(r#"{{ {k}, {bb}, "dilation": 5 }}"#)).starts_with("j.dilation"));
+        assert!(err(format!(r#"{{ {k}, "jrc": 10 }}"#)).starts_with("j.jrc"));
     }
 }

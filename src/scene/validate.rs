@@ -284,6 +284,46 @@ fn validate_joint_material(p: &str, j: &JointMaterial) -> Result<(), SceneError>
     positive(&format!("{p}.shear_stiffness"), j.shear_stiffness)?;
     angle_below_90(&format!("{p}.friction"), j.friction)?;
     angle_below_90(&format!("{p}.dilation"), j.dilation)?;
+    if let JointLawSpec::BartonBandis {
+        jrc,
+        jcs,
+        max_closure,
+        max_normal_stiffness,
+        sample_length,
+        block_size,
+        dilation_divisor,
+    } = j.law_spec(p)?
+    {
+        if let Some(k) = max_normal_stiffness
+            && !(k >= j.normal_stiffness && k.is_finite())
+        {
+            return Err(invalid(
+                format!("{p}.max_normal_stiffness"),
+                format!(
+                    "must be at least normal_stiffness (the hyperbola's initial tangent), got {}",
+                    Num(k)
+                ),
+            ));
+        }
+        if !(0.0..=20.0).contains(&jrc) {
+            return Err(invalid(
+                format!("{p}.jrc"),
+                format!("must be in [0, 20] (Barton's scale), got {}", Num(jrc)),
+            ));
+        }
+        positive(&format!("{p}.jcs"), jcs)?;
+        positive(&format!("{p}.max_closure"), max_closure)?;
+        positive(&format!("{p}.sample_length"), sample_length)?;
+        if let Some(b) = block_size {
+            positive(&format!("{p}.block_size"), b)?;
+        }
+        if !(dilation_divisor >= 1.0 && dilation_divisor.is_finite()) {
+            return Err(invalid(
+                format!("{p}.dilation_divisor"),
+                format!("must be at least 1, got {}", Num(dilation_divisor)),
+            ));
+        }
+    }
     if let JointLawSpec::ContinuouslyYielding { roughness, .. } = j.law_spec(p)? {
         positive(&format!("{p}.roughness"), roughness)?;
         if let Some(f) = j.initial_friction

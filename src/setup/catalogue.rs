@@ -3,7 +3,9 @@
 //! staged fills and inclusions), with the material of each block, joint feature and hole wall.
 
 use crate::contact::detect::NO_MATERIAL;
-use crate::joint::{ContinuouslyYielding, CoulombSlip, Glued, JointLaw, tan_deg};
+use crate::joint::{
+    BartonBandis, ContinuouslyYielding, CoulombSlip, Glued, JointLaw, Roughness, tan_deg,
+};
 use crate::law::{
     Elastic, HoekBrown, Matrix, MohrCoulomb, Null, Residual, UbiquitousJoint, ZoneLaw,
 };
@@ -100,6 +102,32 @@ pub fn joint_law(j: &JointMaterial, path: &str) -> Result<Box<dyn JointLaw>, Sce
             initial_friction: initial_friction.to_radians(),
             roughness,
         }),
+        JointLawSpec::BartonBandis {
+            jrc,
+            jcs,
+            max_closure,
+            max_normal_stiffness,
+            sample_length,
+            block_size,
+            dilation_divisor,
+        } => {
+            let law = BartonBandis::new(
+                (normal_stiffness, max_closure),
+                shear_stiffness,
+                Roughness {
+                    jrc,
+                    jcs,
+                    sample_length,
+                    block_size,
+                },
+                j.friction,
+                dilation_divisor,
+            );
+            Box::new(match max_normal_stiffness {
+                Some(k) => law.with_max_normal_stiffness(k),
+                None => law,
+            })
+        }
     })
 }
 

@@ -23,6 +23,13 @@ pub fn glued_scene(kirsch: &Scene, k: f64) -> Scene {
             law: JointLawKind::Glued,
             initial_friction: None,
             roughness: None,
+            jrc: None,
+            jcs: None,
+            max_closure: None,
+            max_normal_stiffness: None,
+            sample_length: None,
+            block_size: None,
+            dilation_divisor: None,
         },
     );
     let set = |dip: f64, spacing: f64, origin: [f64; 2]| JointSetSpec {

@@ -89,8 +89,8 @@ class Results:
       (1 when its block was excavated);
     - ``contacts``: ``node``, ``edge_nodes`` (c, 2), ``block`` (the edge's block),
       ``position_m`` (c, 2), ``length_m``, ``normal_stress_pa``, ``shear_stress_pa``,
-      ``normal_displacement_m``, ``shear_displacement_m``, ``state`` (0 elastic, 1 slipping,
-      2 open), ``material`` (index into ``joint_materials``);
+      ``normal_displacement_m``, ``shear_displacement_m``, ``jrc_mobilized`` (Barton–Bandis
+      joints; 0 for the other laws), ``state`` (0 elastic, 1 slipping, 2 open), ``material`` (index into ``joint_materials``);
     - ``bolts`` (one row per segment) and ``liners`` (one row per element): ``ends_m`` (s, 4:
       x0, y0, x1, y1), ``group`` (index into ``bolt_groups`` or ``liner_groups``),
       ``installed``, ``axial_force_n_per_m`` (tension positive, per metre of tunnel); bolts

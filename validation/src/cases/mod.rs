@@ -1,6 +1,7 @@
 //! The report's sections, one module each, in the order `docs/validation.md` gives them: each
 //! runs its case and writes its own explanation, tables and plots.
 
+mod barton_bandis;
 mod column;
 mod corners;
 mod detection;
@@ -70,6 +71,7 @@ pub fn all() -> Vec<Box<dyn Case>> {
         Box::new(equivalent::Equivalent),
         Box::new(incline::Incline),
         Box::new(direct_shear::DirectShear),
+        Box::new(barton_bandis::BartonBandis),
         Box::new(modes::Modes),
         Box::new(detection::Detection),
         Box::new(column::Column),
