@@ -6,6 +6,7 @@ pub mod bundled;
 pub mod carranza_torres;
 pub mod case;
 pub mod cases;
+pub mod column_slide;
 pub mod corners;
 pub mod direct_shear;
 pub mod drop;

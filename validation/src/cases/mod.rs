@@ -3,6 +3,7 @@
 
 mod barton_bandis;
 mod column;
+mod column_slide;
 mod corners;
 mod detection;
 mod direct_shear;
@@ -75,5 +76,6 @@ pub fn all() -> Vec<Box<dyn Case>> {
         Box::new(modes::Modes),
         Box::new(detection::Detection),
         Box::new(column::Column),
+        Box::new(column_slide::ColumnSlide),
     ]
 }
