@@ -320,14 +320,17 @@ impl JointLaw for BartonBandis {
         let tan_dilation = m.dilation.tan();
         if tan_dilation > 0.0 {
             let h = 1e-6 * compression.max(1.0);
-            let slope = (self.strength(s.shear_path, compression + h) - limit) / h;
+            // The strength rises with the compression wherever the criterion holds; a
+            // negative difference (rounding, or the 70° cap's kink) is taken as none.
+            let slope = ((self.strength(s.shear_path, compression + h) - limit) / h).max(0.0);
             let kn = self.tangent_normal_stiffness(compression);
             let slip = (trial.abs() - limit) / (self.shear_stiffness + kn * tan_dilation * slope);
             s.dilation += tan_dilation * slip.max(0.0);
             let opening = s.normal_displacement - s.dilation;
+            // Dilating only closes the joint further: it stays in compression.
             let compression = self
                 .compression_of(s.initial_normal, opening)
-                .expect("dilation only closes a joint");
+                .unwrap_or(compression);
             s.normal = -compression;
             s.shear = sign * self.strength(s.shear_path, compression);
         } else {

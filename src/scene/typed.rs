@@ -286,6 +286,17 @@ impl JointMaterial {
             ));
         }
         match self.law {
+            JointLawKind::ContinuouslyYielding => self.refuse_coulomb_strength(
+                path,
+                "the continuously yielding law (its strength is |σn| tan φm, its dilation \
+                 tan(φm − φ), and it carries no tension)",
+            )?,
+            JointLawKind::Glued => {
+                self.refuse_coulomb_strength(path, "a glued joint (it never slips or opens)")?
+            }
+            JointLawKind::Coulomb | JointLawKind::BartonBandis => {}
+        }
+        match self.law {
             JointLawKind::ContinuouslyYielding => match self.roughness {
                 Some(roughness) => Ok(JointLawSpec::ContinuouslyYielding {
                     roughness,
@@ -306,6 +317,24 @@ impl JointMaterial {
         }
     }
 
+    /// The Coulomb law's `cohesion`, `tensile_strength` and `dilation` refused where they
+    /// cannot act, in `law` (words).
+    fn refuse_coulomb_strength(&self, path: &str, law: &str) -> Result<(), SceneError> {
+        for (field, v) in [
+            ("cohesion", self.cohesion),
+            ("tensile_strength", self.tensile_strength),
+            ("dilation", self.dilation),
+        ] {
+            if v != 0.0 {
+                return Err(invalid(
+                    format!("{path}.{field}"),
+                    format!("cannot act in {law}"),
+                ));
+            }
+        }
+        Ok(())
+    }
+
     /// The Barton–Bandis law's fields (`friction` is its residual friction angle φr).
     fn barton_bandis_spec(&self, path: &str) -> Result<JointLawSpec, SceneError> {
         let required = |field: &str, v: Option<f64>| {
@@ -316,19 +345,11 @@ impl JointMaterial {
                 )
             })
         };
-        for (field, v) in [
-            ("cohesion", self.cohesion),
-            ("tensile_strength", self.tensile_strength),
-            ("dilation", self.dilation),
-        ] {
-            if v != 0.0 {
-                return Err(invalid(
-                    format!("{path}.{field}"),
-                    "cannot act in the Barton–Bandis law (its strength and dilation come from \
-                     `jrc` and `jcs`, and it carries no tension)",
-                ));
-            }
-        }
+        self.refuse_coulomb_strength(
+            path,
+            "the Barton–Bandis law (its strength and dilation come from `jrc` and `jcs`, and it \
+             carries no tension)",
+        )?;
         if self.roughness.is_some() || self.initial_friction.is_some() {
             return Err(invalid(
                 path,
@@ -540,6 +561,13 @@ mod tests {
         );
         let coulomb_rough = j(&format!(r#"{{ {k}, "roughness": 1e-3 }}"#));
         assert!(coulomb_rough.law_spec("j").is_err());
+        // Strength fields that cannot act are refused.
+        let cy_cohesive = j(&format!(
+            r#"{{ {k}, "law": "continuously_yielding", "roughness": 1e-3, "cohesion": 1e5 }}"#
+        ));
+        assert!((cy_cohesive.law_spec("j").unwrap_err().to_string()).starts_with("j.cohesion"));
+        let glued_dilating = j(&format!(r#"{{ {k}, "law": "glued", "dilation": 5 }}"#));
+        assert!((glued_dilating.law_spec("j").unwrap_err().to_string()).starts_with("j.dilation"));
 
         let bb = r#""law": "barton_bandis", "jrc": 10, "jcs": 100e6, "max_closure": 5e-4"#;
         assert_eq!(
