@@ -24,17 +24,20 @@
 //! with the explicit cycle's small increments is one or two passes.
 
 use super::Elastic;
-use super::mohr_coulomb::{SHEAR_NOW, TENSION_NOW};
+use super::mohr_coulomb::{SHEAR_NOW, SHEAR_PAST, TENSION_NOW, TENSION_PAST};
+use super::principal::state_after;
 use super::{HoekBrown, MohrCoulomb, StrainIncrement, Stress, ZoneLaw, plane_strain_moduli};
 
+/// The weak plane's state bits are the matrix's (`SHEAR_NOW` … `TENSION_PAST`) shifted by this.
+const PLANE_SHIFT: u32 = 4;
 /// Zone state bit: slipping on the weak plane now.
-pub const PLANE_SHEAR_NOW: u8 = 16;
+pub const PLANE_SHEAR_NOW: u8 = SHEAR_NOW << PLANE_SHIFT;
 /// Zone state bit: the weak plane opening in tension now.
-pub const PLANE_TENSION_NOW: u8 = 32;
+pub const PLANE_TENSION_NOW: u8 = TENSION_NOW << PLANE_SHIFT;
 /// Zone state bit: has slipped on the weak plane at some time.
-pub const PLANE_SHEAR_PAST: u8 = 64;
+pub const PLANE_SHEAR_PAST: u8 = SHEAR_PAST << PLANE_SHIFT;
 /// Zone state bit: the weak plane has opened in tension at some time.
-pub const PLANE_TENSION_PAST: u8 = 128;
+pub const PLANE_TENSION_PAST: u8 = TENSION_PAST << PLANE_SHIFT;
 
 /// Alternations of the matrix's and the plane's returns allowed in one update.
 const PASSES: usize = 8;
@@ -212,7 +215,6 @@ impl UbiquitousJoint {
         de: &StrainIncrement,
         trial: bool,
     ) {
-        let past = *state & (PLANE_SHEAR_PAST | PLANE_TENSION_PAST);
         let mut matrix_state =
             *state & !(PLANE_SHEAR_NOW | PLANE_TENSION_NOW | PLANE_SHEAR_PAST | PLANE_TENSION_PAST);
         self.matrix_step(s, &mut matrix_state, plastic, de, trial);
@@ -231,17 +233,9 @@ impl UbiquitousJoint {
                 break;
             }
         }
-        let plane_past =
-            past | if plane_now & PLANE_SHEAR_NOW != 0 {
-                PLANE_SHEAR_PAST
-            } else {
-                0
-            } | if plane_now & PLANE_TENSION_NOW != 0 {
-                PLANE_TENSION_PAST
-            } else {
-                0
-            };
-        *state = matrix_state | plane_now | plane_past;
+        // The plane's bits follow the matrix's rule (`state_after`), shifted.
+        let plane = state_after(*state >> PLANE_SHIFT, plane_now >> PLANE_SHIFT) << PLANE_SHIFT;
+        *state = matrix_state | plane;
     }
 }
 

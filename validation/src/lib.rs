@@ -180,13 +180,24 @@ pub fn settle_by_method(
     spec: &SolveSpec,
     what: &str,
 ) -> anyhow::Result<(u64, Option<adit::implicit::Cost>)> {
-    let (_, sol, cost) = solve_by_method(model, spec);
+    let (_, cycles, cost) = settle_keeping_solver(model, spec, what)?;
+    Ok((cycles, cost))
+}
+
+/// [`settle_by_method`], also returning the solver, for a test that drives the settled model on
+/// (`drive_nodes`, `drive_sample`).
+pub fn settle_keeping_solver(
+    model: &mut Model,
+    spec: &SolveSpec,
+    what: &str,
+) -> anyhow::Result<(Solver, u64, Option<adit::implicit::Cost>)> {
+    let (solver, sol, cost) = solve_by_method(model, spec);
     anyhow::ensure!(
         sol.status == Status::Converged,
         "{what} did not converge: {:?}",
         sol.status
     );
-    Ok((sol.cycles, cost))
+    Ok((solver, sol.cycles, cost))
 }
 
 /// Release the out-of-balance force of the solve `spec` gradually, as its method can: over

@@ -15,7 +15,6 @@ use adit::Scene;
 use adit::implicit::Cost;
 use adit::scene::{SolveMethod, SolveSpec};
 use adit::setup::setup;
-use adit::solve::Status;
 use serde::Serialize;
 
 use crate::report::{CaseReport, StepInfo};
@@ -134,13 +133,8 @@ pub fn run_by(
         method,
         ..sc.solve.clone()
     };
-    let (mut solver, settled, mut cost) = crate::solve_by_method(&mut b.model, &spec);
-    anyhow::ensure!(
-        settled.status == Status::Converged,
-        "softening specimen: confinement did not converge: {:?}",
-        settled.status
-    );
-    let mut cycles = settled.cycles;
+    let (mut solver, mut cycles, mut cost) =
+        crate::settle_keeping_solver(&mut b.model, &spec, "softening specimen: confinement")?;
     let top = b.plan.boundary.part_nodes["top"].clone();
     let chunk = 200u64;
     let drive = crate::drive_nodes(&mut b.model, &top, 1, -rate, chunk, method);

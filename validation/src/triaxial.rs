@@ -63,13 +63,11 @@ pub fn strength(
         method,
         ..sc.solve.clone()
     };
-    let (mut solver, settled, mut cost) = crate::solve_by_method(&mut b.model, &spec);
-    anyhow::ensure!(
-        settled.status == Status::Converged,
-        "element test under σ3 = {sigma3:e} Pa: the confinement did not converge: {:?}",
-        settled.status
-    );
-    let mut cycles = settled.cycles;
+    let (mut solver, mut cycles, mut cost) = crate::settle_keeping_solver(
+        &mut b.model,
+        &spec,
+        &format!("element test under σ3 = {sigma3:e} Pa: the confinement"),
+    )?;
     let top = b.plan.boundary.part_nodes["top"].clone();
     let chunk = match method {
         SolveMethod::Explicit => CHUNK,
