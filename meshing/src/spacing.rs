@@ -157,7 +157,7 @@ impl BoundarySpacing {
     }
 
     /// Target zone edge length at `p`, m, graded from the excavation walls:
-    /// `h(p) = min(h_far, h_exc + g · d(p))`.
+    /// `Zoning::size_at` of the distance d(p) to the nearest wall.
     pub fn target(&self, p: Point) -> f64 {
         let z = &self.zoning;
         let d = self
@@ -165,11 +165,7 @@ impl BoundarySpacing {
             .iter()
             .map(|h| h.boundary_distance(p))
             .fold(f64::INFINITY, f64::min);
-        if d.is_finite() {
-            (z.h_excavation + z.grading * d).min(z.h_far)
-        } else {
-            z.h_far
-        }
+        if d.is_finite() { z.size_at(d) } else { z.h_far }
     }
 
     /// The split points of the edge a–b of a block that shares no edge with another zoned block,
@@ -457,6 +453,7 @@ mod tests {
             h_excavation: 0.1,
             h_far: 2.0,
             grading: 0.25,
+            fine_depth: 0.0,
             min_angle_deg: 28.0,
             max_zones: 1_000_000,
         }

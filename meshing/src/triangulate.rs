@@ -32,6 +32,9 @@ pub struct Zoning {
     pub h_far: f64,
     /// Growth of the edge length per metre of distance from the nearest excavation (dimensionless).
     pub grading: f64,
+    /// Depth from the excavation walls over which the edge length stays `h_excavation` before it
+    /// grades, m (0: grading starts at the wall).
+    pub fine_depth: f64,
     /// Minimum interior angle the refinement aims for, degrees (at most 33).
     pub min_angle_deg: f64,
     /// Upper bound on the number of triangles; exceeding it is an error rather than a runaway.
@@ -72,6 +75,12 @@ pub struct TriMesh {
 }
 
 impl Zoning {
+    /// Target zone edge length at distance `d` (m) from the nearest excavation wall, m:
+    /// h(d) = min(h_far, h_exc + g · max(0, d − fine_depth)).
+    pub fn size_at(&self, d: f64) -> f64 {
+        (self.h_excavation + self.grading * (d - self.fine_depth).max(0.0)).min(self.h_far)
+    }
+
     fn check(&self) -> Result<(), MeshError> {
         let bad = |what: &str| Err(MeshError::Zoning(what.into()));
         if !(self.h_excavation > 0.0 && self.h_excavation.is_finite()) {
@@ -82,6 +91,9 @@ impl Zoning {
         }
         if !(self.grading > 0.0 && self.grading <= 2.0) {
             return bad("grading must be in (0, 2]");
+        }
+        if !(self.fine_depth >= 0.0 && self.fine_depth.is_finite()) {
+            return bad("fine depth must be finite and not negative");
         }
         if !(self.min_angle_deg > 0.0 && self.min_angle_deg <= 33.0) {
             return bad("minimum angle must be in (0, 33] degrees");
@@ -522,14 +534,14 @@ fn graded_rings(block: &Block, excavations: &[Polygon], z: &Zoning) -> Vec<Point
         let mut d = 0.0;
         let mut ring = 0;
         loop {
-            let h = (z.h_excavation + z.grading * d).min(z.h_far);
+            let h = z.size_at(d);
             d += h;
             if h >= z.h_far || d > reach + distance(c, lo).max(distance(c, hi)) {
                 break;
             }
             ring += 1;
             let r = r0 + d;
-            let hr = (z.h_excavation + z.grading * d).min(z.h_far);
+            let hr = z.size_at(d);
             let m = ((std::f64::consts::TAU * r / hr).ceil() as usize).max(6);
             let shift = if ring % 2 == 1 { 0.5 } else { 0.0 };
             for k in 0..m {
@@ -549,7 +561,7 @@ fn graded_rings(block: &Block, excavations: &[Polygon], z: &Zoning) -> Vec<Point
                 // `target_size`, from the distances just taken.
                 let nearest = distances.iter().copied().fold(f64::INFINITY, f64::min);
                 let hp = if nearest.is_finite() {
-                    (z.h_excavation + z.grading * nearest).min(z.h_far)
+                    z.size_at(nearest)
                 } else {
                     z.h_far
                 };
@@ -759,6 +771,7 @@ mod tests {
             h_excavation: 0.05,
             h_far: 1.0,
             grading: 0.3,
+            fine_depth: 0.0,
             min_angle_deg: 30.0,
             max_zones: 1_000_000,
         };
@@ -784,6 +797,7 @@ mod tests {
             h_excavation: 0.1,
             h_far: 3.0,
             grading: 0.25,
+            fine_depth: 0.0,
             min_angle_deg: 28.0,
             max_zones: 1_000_000,
         }
@@ -851,6 +865,51 @@ mod tests {
         for l in outer_len {
             assert_relative_eq!(l, 40.0, max_relative = 1e-12);
         }
+    }
+
+    /// `fine_depth` keeps the wall's edge length out to that depth, and grading starts there:
+    /// the zones within it are as small as the wall's, those beyond as large as `size_at` says.
+    #[test]
+    fn fine_depth_holds_the_wall_size() {
+        let d = kirsch_domain();
+        let longest_within = |z: &Zoning, r0: f64, r1: f64| {
+            let mesh = triangulate(&d, z).unwrap();
+            let mut longest: f64 = 0.0;
+            for t in &mesh.triangles {
+                let p = t.map(|n| mesh.points[n as usize]);
+                let c = [
+                    (p[0][0] + p[1][0] + p[2][0]) / 3.0,
+                    (p[0][1] + p[1][1] + p[2][1]) / 3.0,
+                ];
+                let r = c[0].hypot(c[1]);
+                if r > r0 && r < r1 {
+                    for k in 0..3 {
+                        longest = longest.max(distance(p[k], p[(k + 1) % 3]));
+                    }
+                }
+            }
+            (longest, mesh.triangles.len())
+        };
+        let graded = zoning();
+        let held = Zoning {
+            fine_depth: 1.5,
+            ..zoning()
+        };
+        assert_eq!(held.size_at(1.2), held.h_excavation);
+        assert_relative_eq!(held.size_at(2.5), 0.1 + 0.25 * 1.0);
+        let (near_graded, n_graded) = longest_within(&graded, 1.0, 2.2);
+        let (near_held, n_held) = longest_within(&held, 1.0, 2.2);
+        assert!(near_held < 1.6 * held.h_excavation, "{near_held}");
+        assert!(near_graded > 2.0 * graded.h_excavation, "{near_graded}");
+        assert!(n_held > n_graded, "{n_held} {n_graded}");
+        let (far_held, _) = longest_within(&held, 6.0, 8.0);
+        let expected = held.size_at(5.0);
+        assert!(far_held > 0.8 * expected, "{far_held} {expected}");
+        let bad = Zoning {
+            fine_depth: -1.0,
+            ..zoning()
+        };
+        assert!(matches!(triangulate(&d, &bad), Err(MeshError::Zoning(_))));
     }
 
     #[test]

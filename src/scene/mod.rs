@@ -666,6 +666,10 @@ pub struct ZoningSpec {
     /// Growth of edge length per metre of distance from the excavation (default 0.2).
     #[serde(default = "default_grading")]
     pub grading: f64,
+    /// Depth from each excavation wall over which zones keep `edge_at_excavation` before the
+    /// grading starts, m (default 0): a plastic zone's depth, zoned as finely as the wall.
+    #[serde(default)]
+    pub fine_depth: f64,
     /// Minimum zone angle, degrees (default 30).
     #[serde(default = "default_min_angle")]
     pub min_angle: f64,
@@ -1052,6 +1056,19 @@ mod tests {
         );
         let msg = error_of(&GOOD.replace("\"poisson\": 0.2", "\"poisson\": 0.75"));
         assert!(msg.ends_with("got 0.75"), "{msg}");
+    }
+
+    /// `zoning.fine_depth` defaults to 0 (grading from the wall) and refuses a negative depth.
+    #[test]
+    fn fine_depth_is_checked() {
+        let s = Scene::from_json(GOOD, "scene.json").unwrap();
+        assert_eq!(s.zoning.fine_depth, 0.0);
+        let msg =
+            error_of(&GOOD.replace("\"edge_far\": 2", "\"edge_far\": 2, \"fine_depth\": -0.5"));
+        assert_eq!(
+            msg,
+            "zoning.fine_depth: must be finite and not negative, got -0.5"
+        );
     }
 
     #[test]

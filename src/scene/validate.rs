@@ -555,6 +555,12 @@ impl Scene {
                 format!("must be in (0, 2], got {}", Num(z.grading)),
             ));
         }
+        if !(z.fine_depth >= 0.0 && z.fine_depth.is_finite()) {
+            return Err(invalid(
+                "zoning.fine_depth",
+                format!("must be finite and not negative, got {}", Num(z.fine_depth)),
+            ));
+        }
         if let Some(m) = z.merge_tolerance
             && !(m > 0.0 && m <= z.edge_at_excavation)
         {

@@ -78,6 +78,7 @@ pub fn zoning(scene: &Scene) -> Zoning {
         h_excavation: z.edge_at_excavation,
         h_far: z.edge_far,
         grading: z.grading,
+        fine_depth: z.fine_depth,
         min_angle_deg: z.min_angle,
         max_zones: z.max_zones,
     }

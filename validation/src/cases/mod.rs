@@ -22,6 +22,7 @@ mod kirsch;
 mod lined;
 mod modes;
 mod patch;
+mod plastic_zoning;
 mod pullout;
 mod random_scenes;
 mod recovery;
@@ -49,6 +50,7 @@ pub fn all() -> Vec<Box<dyn Case>> {
         Box::new(patch::Patch),
         Box::new(gravity::Gravity),
         Box::new(salencon::Salencon),
+        Box::new(plastic_zoning::PlasticZoning),
         Box::new(hoek_brown::HoekBrown),
         Box::new(hoek_brown::HoekBrownBrittle),
         Box::new(ubiquitous::Ubiquitous),
