@@ -246,21 +246,23 @@ impl Scene {
 
     /// A lower bound on the zone count of the graded zoning (joints only add zones): equilateral
     /// zones of the target edge h over the region at `edge_far`, plus the band graded from each
-    /// excavation wall: the band of `fine_depth` D at h0, (P0 D + π D²) / h0², then the graded
+    /// excavation wall: the band of `fine_depth` D at h0, min(P0 D + π D², A) / h0², then the graded
     /// one, h = h0 + g (d − D) up to h_far, of perimeter P = P0 + 2π d at distance d:
     ///
-    ///   N ≈ [A / h_far² + Σ_walls ((P0 D + π D²)/h0² + P_D/g (1/h0 − 1/h_far)
+    ///   N ≈ [A / h_far² + Σ_walls (min(P0 D + π D², A)/h0² + P_D/g (1/h0 − 1/h_far)
     ///        + 2π/g² (ln(h_far/h0) + h0/h_far − 1))] / (√3/4),   P_D = P0 + 2π D.
     /// (No zone edge is longer than the region's box, whatever `edge_far` says.)
     fn zone_estimate(&self, region: &Polygon) -> f64 {
         let z = &self.zoning;
         let (h0, g) = (z.edge_at_excavation, z.grading);
         let h_far = z.edge_far.min(region.size());
-        let mut per_area = region.signed_area().abs() / (h_far * h_far);
+        let area = region.signed_area().abs();
+        let mut per_area = area / (h_far * h_far);
         let depth = z.fine_depth.min(region.size());
         for e in &self.excavations {
             let p0 = wall_length(e);
-            per_area += (p0 * depth + std::f64::consts::PI * depth * depth) / (h0 * h0);
+            let band = (p0 * depth + std::f64::consts::PI * depth * depth).min(area);
+            per_area += band / (h0 * h0);
             let p0 = p0 + std::f64::consts::TAU * depth;
             if h_far > h0 {
                 per_area += p0 / g * (1.0 / h0 - 1.0 / h_far)
