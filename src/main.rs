@@ -225,6 +225,12 @@ fn check(scene_path: &Path) -> anyhow::Result<()> {
     let scene = load(scene_path)?;
     let meshed = mesh(&scene)?;
     let s = meshed.stats();
+    let depth = adit::setup::zoning(&scene)?.plastic_depth;
+    let refined = if depth > 0.0 {
+        format!(", zones halved out to {depth:.3} m from the walls (zoning.plastic_depth)")
+    } else {
+        String::new()
+    };
     let lines = [
         format!("scene {}: valid", scene.name),
         format!(
@@ -239,7 +245,8 @@ fn check(scene_path: &Path) -> anyhow::Result<()> {
             meshed.blocking.absorbed_joint_length
         ),
         format!(
-            "mesh: {} zones, {} nodes, min angle {:.1}°, edges {:.4}–{:.4} m, zoned area {:.6} m²",
+            "mesh: {} zones, {} nodes, min angle {:.1}°, edges {:.4}–{:.4} m, zoned area {:.6} m²\
+             {refined}",
             s.zones, s.nodes, s.min_angle_deg, s.min_edge, s.max_edge, s.area
         ),
     ];

@@ -454,6 +454,7 @@ mod tests {
             h_far: 2.0,
             grading: 0.25,
             fine_depth: 0.0,
+            plastic_depth: 0.0,
             min_angle_deg: 28.0,
             max_zones: 1_000_000,
         }

@@ -35,6 +35,9 @@ pub struct Zoning {
     /// Depth from the excavation walls over which the edge length stays `h_excavation` before it
     /// grades, m (0: grading starts at the wall).
     pub fine_depth: f64,
+    /// Depth from the excavation walls where the rock is expected to yield, m (0: none): zones
+    /// there are `PLASTIC_SCALE` of the graded size, and grade on from that size beyond it.
+    pub plastic_depth: f64,
     /// Minimum interior angle the refinement aims for, degrees (at most 33).
     pub min_angle_deg: f64,
     /// Upper bound on the number of triangles; exceeding it is an error rather than a runaway.
@@ -74,11 +77,23 @@ pub struct TriMesh {
     pub angle_limit_deg: f64,
 }
 
+/// Share of the graded zone size kept within `Zoning::plastic_depth` of a wall.
+pub const PLASTIC_SCALE: f64 = 0.5;
+
 impl Zoning {
     /// Target zone edge length at distance `d` (m) from the nearest excavation wall, m:
-    /// h(d) = min(h_far, h_exc + g · max(0, d − fine_depth)).
+    /// h(d) = min(h_far, g(d) − (1 − k) g(min(d, D_p))) with the graded size
+    /// g(d) = h_exc + grading · max(0, d − fine_depth), k = `PLASTIC_SCALE` and D_p the plastic
+    /// depth: k g(d) within the plastic zone, growing on by the grading (continuous) beyond it.
     pub fn size_at(&self, d: f64) -> f64 {
-        (self.h_excavation + self.grading * (d - self.fine_depth).max(0.0)).min(self.h_far)
+        let graded = |d: f64| self.h_excavation + self.grading * (d - self.fine_depth).max(0.0);
+        let refined = (1.0 - PLASTIC_SCALE) * graded(d.min(self.plastic_depth));
+        let refined = if self.plastic_depth > 0.0 {
+            refined
+        } else {
+            0.0
+        };
+        (graded(d) - refined).min(self.h_far)
     }
 
     fn check(&self) -> Result<(), MeshError> {
@@ -94,6 +109,9 @@ impl Zoning {
         }
         if !(self.fine_depth >= 0.0 && self.fine_depth.is_finite()) {
             return bad("fine depth must be finite and not negative");
+        }
+        if !(self.plastic_depth >= 0.0 && self.plastic_depth.is_finite()) {
+            return bad("plastic depth must be finite and not negative");
         }
         if !(self.min_angle_deg > 0.0 && self.min_angle_deg <= 33.0) {
             return bad("minimum angle must be in (0, 33] degrees");
@@ -772,6 +790,7 @@ mod tests {
             h_far: 1.0,
             grading: 0.3,
             fine_depth: 0.0,
+            plastic_depth: 0.0,
             min_angle_deg: 30.0,
             max_zones: 1_000_000,
         };
@@ -798,6 +817,7 @@ mod tests {
             h_far: 3.0,
             grading: 0.25,
             fine_depth: 0.0,
+            plastic_depth: 0.0,
             min_angle_deg: 28.0,
             max_zones: 1_000_000,
         }
@@ -867,6 +887,40 @@ mod tests {
         }
     }
 
+    /// `plastic_depth` halves the graded size out to that depth and grades on from the halved
+    /// size beyond it, continuously; 0 leaves the graded size.
+    #[test]
+    fn plastic_depth_halves_the_graded_size() {
+        let graded = Zoning {
+            fine_depth: 0.4,
+            ..zoning()
+        };
+        let refined = Zoning {
+            plastic_depth: 2.0,
+            ..graded
+        };
+        for d in [0.0, 0.3, 1.0, 1.999] {
+            assert_relative_eq!(refined.size_at(d), PLASTIC_SCALE * graded.size_at(d));
+        }
+        let at = refined.size_at(2.0);
+        assert_relative_eq!(
+            at,
+            PLASTIC_SCALE * graded.size_at(2.0),
+            max_relative = 1e-12
+        );
+        assert_relative_eq!(
+            refined.size_at(3.0),
+            at + graded.grading,
+            max_relative = 1e-12
+        );
+        assert_eq!(refined.size_at(1e3), graded.h_far);
+        let bad = Zoning {
+            plastic_depth: f64::NAN,
+            ..graded
+        };
+        assert!(bad.check().is_err());
+    }
+
     /// `fine_depth` keeps the wall's edge length out to that depth, and grading starts there:
     /// the zones within it are as small as the wall's, those beyond as large as `size_at` says.
     #[test]
@@ -893,6 +947,7 @@ mod tests {
         let graded = zoning();
         let held = Zoning {
             fine_depth: 1.5,
+            plastic_depth: 0.0,
             ..zoning()
         };
         assert_eq!(held.size_at(1.2), held.h_excavation);
@@ -907,6 +962,7 @@ mod tests {
         assert!(far_held > 0.8 * expected, "{far_held} {expected}");
         let bad = Zoning {
             fine_depth: -1.0,
+            plastic_depth: 0.0,
             ..zoning()
         };
         assert!(matches!(triangulate(&d, &bad), Err(MeshError::Zoning(_))));

@@ -87,6 +87,12 @@ impl MohrCoulomb {
         law
     }
 
+    /// The intact rock's deviator at failure q = σ1 − σ3 = 2c√Nφ + (Nφ − 1) σ3 under a
+    /// confinement σ3 (Pa, compression positive), Pa: the peak envelope, before any softening.
+    pub fn peak_deviator(&self, confinement: f64) -> f64 {
+        self.intact.k + (self.intact.n_phi - 1.0) * confinement
+    }
+
     /// Cohesion (Pa) and friction (rad) at plastic shear strain `eps`.
     pub fn strength(&self, eps: f64) -> (f64, f64) {
         let mut prev = (0.0, self.cohesion, self.friction);

@@ -51,6 +51,16 @@ pub enum Matrix {
 }
 
 impl Matrix {
+    /// The deviator at failure σ1 − σ3 of the matrix's peak envelope under a confinement σ3 (Pa,
+    /// compression positive), Pa; `None` for an elastic matrix.
+    pub fn peak_deviator(&self, confinement: f64) -> Option<f64> {
+        match self {
+            Matrix::Elastic(_) => None,
+            Matrix::MohrCoulomb(m) => Some(m.peak_deviator(confinement)),
+            Matrix::HoekBrown(h) => Some(h.strength(-confinement)),
+        }
+    }
+
     /// The matrix law alone, without a weak plane.
     pub fn into_law(self) -> Box<dyn ZoneLaw> {
         match self {

@@ -244,7 +244,8 @@ impl Scene {
         Ok(())
     }
 
-    /// A lower bound on the zone count of the graded zoning (joints only add zones): equilateral
+    /// A lower bound on the zone count of the graded zoning (joints and the plastic zone's
+    /// refinement, `zoning.plastic_depth`, only add zones): equilateral
     /// zones of the target edge h over the region at `edge_far`, plus the band graded from each
     /// excavation wall: the band of `fine_depth` D at h0, min(P0 D + π D², A) / h0², then the graded
     /// one, h = h0 + g (d − D) up to h_far, of perimeter P = P0 + 2π d at distance d:

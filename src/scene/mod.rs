@@ -670,6 +670,11 @@ pub struct ZoningSpec {
     /// grading starts, m (default 0): a plastic zone's depth, zoned as finely as the wall.
     #[serde(default)]
     pub fine_depth: f64,
+    /// Depth from each excavation wall where the rock is expected to yield, zoned at half the
+    /// graded size: `"auto"` estimates it from the closed form of a circular hole in the
+    /// region's rock, a number gives it (m); default 0, no refinement.
+    #[serde(default)]
+    pub plastic_depth: PlasticDepth,
     /// Minimum zone angle, degrees (default 30).
     #[serde(default = "default_min_angle")]
     pub min_angle: f64,
@@ -691,6 +696,38 @@ pub struct ZoningSpec {
     /// (default false).
     #[serde(default)]
     pub mixed: bool,
+}
+
+/// `zoning.plastic_depth`: estimated before meshing (`"auto"`), or given in metres (default 0:
+/// no refinement).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum PlasticDepth {
+    Auto,
+    Depth(f64),
+}
+
+impl Default for PlasticDepth {
+    fn default() -> Self {
+        PlasticDepth::Depth(0.0)
+    }
+}
+
+impl<'de> Deserialize<'de> for PlasticDepth {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        #[derive(Deserialize)]
+        #[serde(untagged)]
+        enum Given {
+            Depth(f64),
+            Word(String),
+        }
+        match Given::deserialize(d)? {
+            Given::Depth(v) => Ok(PlasticDepth::Depth(v)),
+            Given::Word(w) if w == "auto" => Ok(PlasticDepth::Auto),
+            Given::Word(w) => Err(serde::de::Error::custom(format!(
+                "zoning.plastic_depth: expected \"auto\" or a depth in metres, got \"{w}\""
+            ))),
+        }
+    }
 }
 
 /// `zoning.merge_tolerance` when the scene gives none, as a fraction of `edge_at_excavation`.
@@ -1056,6 +1093,34 @@ mod tests {
         );
         let msg = error_of(&GOOD.replace("\"poisson\": 0.2", "\"poisson\": 0.75"));
         assert!(msg.ends_with("got 0.75"), "{msg}");
+    }
+
+    /// `zoning.plastic_depth` defaults to 0, takes `"auto"` or a depth, and refuses a negative
+    /// depth or another word, naming the field.
+    #[test]
+    fn plastic_depth_is_checked() {
+        let with = |v: &str| {
+            GOOD.replace(
+                "\"edge_far\": 2",
+                &format!("\"edge_far\": 2, \"plastic_depth\": {v}"),
+            )
+        };
+        let s = Scene::from_json(GOOD, "scene.json").unwrap();
+        assert_eq!(s.zoning.plastic_depth, PlasticDepth::Depth(0.0));
+        let s = Scene::from_json(&with("\"auto\""), "scene.json").unwrap();
+        assert_eq!(s.zoning.plastic_depth, PlasticDepth::Auto);
+        let s = Scene::from_json(&with("1.5"), "scene.json").unwrap();
+        assert_eq!(s.zoning.plastic_depth, PlasticDepth::Depth(1.5));
+        let msg = error_of(&with("-1"));
+        assert_eq!(
+            msg,
+            "zoning.plastic_depth: must be \"auto\" or finite and not negative, got -1"
+        );
+        let msg = error_of(&with("\"deep\""));
+        assert!(
+            msg.contains("plastic_depth") && msg.contains("\"auto\""),
+            "{msg}"
+        );
     }
 
     /// `zoning.fine_depth` defaults to 0 (grading from the wall) and refuses a negative depth.

@@ -3,8 +3,8 @@
 use thiserror::Error;
 
 use super::{
-    BoundaryCondition, HoekBrownConstants, JointLawSpec, JointMaterial, Material, Rayleigh, Scene,
-    Shape, SolveMethod, SolveMode, SolveSpec, ZoneLawSpec,
+    BoundaryCondition, HoekBrownConstants, JointLawSpec, JointMaterial, Material, PlasticDepth,
+    Rayleigh, Scene, Shape, SolveMethod, SolveMode, SolveSpec, ZoneLawSpec,
 };
 
 /// Why a scene cannot be used.
@@ -553,6 +553,17 @@ impl Scene {
             return Err(invalid(
                 "zoning.grading",
                 format!("must be in (0, 2], got {}", Num(z.grading)),
+            ));
+        }
+        if let PlasticDepth::Depth(d) = z.plastic_depth
+            && !(d >= 0.0 && d.is_finite())
+        {
+            return Err(invalid(
+                "zoning.plastic_depth",
+                format!(
+                    "must be \"auto\" or finite and not negative, got {}",
+                    Num(d)
+                ),
             ));
         }
         if !(z.fine_depth >= 0.0 && z.fine_depth.is_finite()) {

@@ -17,8 +17,23 @@ use super::geometry::{Meshed, NOT_FILL};
 /// The zone law of material `m` (scene field `path`): its law, inside ubiquitous joints when it
 /// has a weak plane.
 pub fn zone_law(m: &Material, path: &str) -> Result<Box<dyn ZoneLaw>, SceneError> {
+    let matrix = matrix_law(m, path)?;
+    Ok(match m.weak_plane {
+        None => matrix.into_law(),
+        Some(w) => Box::new(UbiquitousJoint::new(
+            matrix,
+            w.dip,
+            w.cohesion,
+            (w.friction, w.dilation),
+            w.tensile_strength.unwrap_or(f64::INFINITY),
+        )),
+    })
+}
+
+/// The law of material `m` (scene field `path`) without its weak plane.
+pub fn matrix_law(m: &Material, path: &str) -> Result<Matrix, SceneError> {
     let elastic = Elastic::from_young(m.young, m.poisson, m.density);
-    let matrix = match m.law_spec(path)? {
+    Ok(match m.law_spec(path)? {
         ZoneLawSpec::Elastic => Matrix::Elastic(elastic),
         ZoneLawSpec::MohrCoulomb {
             cohesion,
@@ -63,16 +78,6 @@ pub fn zone_law(m: &Material, path: &str) -> Result<Box<dyn ZoneLaw>, SceneError
                 }
             })
         }
-    };
-    Ok(match m.weak_plane {
-        None => matrix.into_law(),
-        Some(w) => Box::new(UbiquitousJoint::new(
-            matrix,
-            w.dip,
-            w.cohesion,
-            (w.friction, w.dilation),
-            w.tensile_strength.unwrap_or(f64::INFINITY),
-        )),
     })
 }
 

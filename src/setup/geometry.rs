@@ -7,17 +7,22 @@ use adit_meshing::{
     voronoi::voronoi_segments,
 };
 
+use super::plastic_depth::plastic_depth;
 use super::repair::{MAX_REPAIRS, drop_piece, joint_beside};
-use crate::scene::{BlockMode, DEFAULT_MERGE, Scene, Shape};
+use crate::scene::{BlockMode, DEFAULT_MERGE, Scene, SceneError, Shape};
+
+/// The polygon of an excavation's or an inclusion's shape.
+pub fn outline(shape: Shape) -> Polygon {
+    match shape {
+        Shape::Circle(c) => Polygon::circle(c.center, c.radius, c.segments),
+        Shape::Polygon(p) => Polygon::new(p.to_vec()),
+        Shape::Horseshoe(h) => Polygon::new(h.polygon()),
+    }
+}
 
 /// The domain a scene describes: the region with its excavations, then its inclusions, as holes
 /// (hole j ≥ the number of excavations is inclusion j − that number). Errors name the scene field.
 pub fn domain(scene: &Scene) -> anyhow::Result<Domain> {
-    let outline = |shape: Shape| match shape {
-        Shape::Circle(c) => Polygon::circle(c.center, c.radius, c.segments),
-        Shape::Polygon(p) => Polygon::new(p.to_vec()),
-        Shape::Horseshoe(h) => Polygon::new(h.polygon()),
-    };
     let mut holes = Vec::with_capacity(scene.excavations.len() + scene.inclusions.len());
     for (i, e) in scene.excavations.iter().enumerate() {
         holes.push(Hole {
@@ -71,17 +76,18 @@ pub fn joint_segments(scene: &Scene, domain: &Domain) -> Result<Vec<Segment>, Me
     Ok(out)
 }
 
-/// Zoning controls of a scene.
-pub fn zoning(scene: &Scene) -> Zoning {
+/// Zoning controls of a scene, with its plastic depth (estimated for `"auto"`).
+pub fn zoning(scene: &Scene) -> Result<Zoning, SceneError> {
     let z = &scene.zoning;
-    Zoning {
+    Ok(Zoning {
         h_excavation: z.edge_at_excavation,
         h_far: z.edge_far,
         grading: z.grading,
         fine_depth: z.fine_depth,
+        plastic_depth: plastic_depth(scene)?,
         min_angle_deg: z.min_angle,
         max_zones: z.max_zones,
-    }
+    })
 }
 
 /// A scene's geometry, cut into blocks and zoned.
@@ -237,7 +243,8 @@ pub(super) fn edge_source(scene: &Scene, kind: EdgeKind) -> String {
 /// boundary that crosses itself, the joints, walls or region edges there).
 pub fn mesh(scene: &Scene) -> anyhow::Result<Meshed> {
     let domain = domain(scene)?;
-    mesh_blocks(scene, domain).map_err(|e| {
+    let zoning = zoning(scene)?;
+    mesh_blocks(scene, domain, &zoning).map_err(|e| {
         let field = field_of(scene, &e);
         match &e {
             MeshError::Crossing { kinds, .. } if !kinds.is_empty() => {
@@ -251,7 +258,7 @@ pub fn mesh(scene: &Scene) -> anyhow::Result<Meshed> {
 
 /// Cut and zone, dropping the piece of a joint that leaves a zone under `zoning.accept_angle`
 /// (`repair`) and cutting again, at most `MAX_REPAIRS` times; each repair is in `Meshed::repairs`.
-fn mesh_blocks(scene: &Scene, domain: Domain) -> Result<Meshed, MeshError> {
+fn mesh_blocks(scene: &Scene, domain: Domain, zoning: &Zoning) -> Result<Meshed, MeshError> {
     let tolerance = merge_tolerance(scene, &domain);
     for set in 0..scene.joint_sets.len() {
         let spacing = scene.realized_set(set).spacing;
@@ -267,7 +274,7 @@ fn mesh_blocks(scene: &Scene, domain: Domain) -> Result<Meshed, MeshError> {
     let sets_outside = sets_outside(scene, &domain, &joints);
     let mut repairs = Vec::new();
     loop {
-        let mut meshed = cut_and_zone(scene, domain.clone(), &joints, tolerance)?;
+        let mut meshed = cut_and_zone(scene, domain.clone(), &joints, tolerance, zoning)?;
         let accept = scene.zoning.accept_angle;
         let needle = meshed
             .sharpest_zone()
@@ -332,7 +339,7 @@ fn merge_tolerance(scene: &Scene, domain: &Domain) -> f64 {
     let asked = scene
         .zoning
         .merge_tolerance
-        .unwrap_or(DEFAULT_MERGE * zoning(scene).h_excavation);
+        .unwrap_or(DEFAULT_MERGE * scene.zoning.edge_at_excavation);
     asked.min(0.02 * grain).min(0.9 * fixed_edge)
 }
 
@@ -342,8 +349,8 @@ fn cut_and_zone(
     domain: Domain,
     joints: &[Segment],
     tol: f64,
+    zoning: &Zoning,
 ) -> Result<Meshed, MeshError> {
-    let zoning = zoning(scene);
     let filled: Vec<bool> = scene
         .excavations
         .iter()
@@ -363,10 +370,10 @@ fn cut_and_zone(
     };
     let excavations: Vec<Polygon> = domain.holes.iter().map(|h| h.polygon.clone()).collect();
     let mut modes = block_modes(scene, &blocking.blocks);
-    let thin = thin_blocks(scene, &blocking.blocks, &zoning, &mut modes);
+    let thin = thin_blocks(scene, &blocking.blocks, zoning, &mut modes);
     // Two zoned blocks put their nodes at the same places along the joint between them.
     let zoned: Vec<bool> = modes.iter().map(|&m| m == BlockMode::Deformable).collect();
-    let meshes = triangulate_blocks(&blocking.blocks, &zoned, &excavations, &zoning)?;
+    let meshes = triangulate_blocks(&blocking.blocks, &zoned, &excavations, zoning)?;
     let (hole, fill_outside) = holes_filled(&blocking.blocks, &meshes, &excavations, &filled);
     let excavations = scene.excavations.len() as u32;
     let fill = hole

@@ -10,6 +10,7 @@ mod catalogue;
 mod far_field;
 mod geometry;
 mod plan;
+mod plastic_depth;
 mod repair;
 mod stage_regions;
 mod supports;
@@ -27,7 +28,8 @@ pub use geometry::{Meshed, NOT_FILL, domain, joint_segments, mesh, zoning};
 pub use plan::{Boundary, InSituField, Plan, StagePlan};
 
 use catalogue::{JointCatalogue, ZoneCatalogue};
-pub use catalogue::{joint_law, zone_law};
+pub use catalogue::{joint_law, matrix_law, zone_law};
+pub use plastic_depth::{DEPTH_MARGIN, plastic_depth, plastic_radius};
 use warnings::warnings;
 
 use crate::contact::detect::{Detection, Touch, detect};

@@ -1,11 +1,12 @@
 //! Plastic zones against zoning (issue 48): Salençon's hole in the weak rock of issue 13 and in
-//! the issue's rock with a plastic zone four hole radii deep, on the shipped graded zoning, on
+//! the issue's rock with a plastic zone four hole radii deep, on the shipped graded zoning as a
+//! user writes it, the same with its plastic zone refined (`zoning.plastic_depth: "auto"`), on
 //! zones half the size, and on the shipped zoning held at its wall size through the plastic zone
 //! (`zoning.fine_depth`): error against cost.
 
 use std::fmt::Write as _;
 
-use adit::scene::SolveMethod;
+use adit::scene::{PlasticDepth, SolveMethod};
 
 use crate::case::{Case, Context, Section, print_row, table};
 use crate::report::CaseReport;
@@ -27,37 +28,62 @@ pub const DEEP_ROCK: Rock = Rock {
 /// Rp − a (the zone size stays the wall's a fifth beyond the plastic zone).
 pub const DEPTH_MARGIN: f64 = 1.2;
 
-/// The hole in `rock` on the shipped zoning ×`factor`, held at its wall size to `DEPTH_MARGIN`
-/// times the plastic depth when `held`, released slowly (explicitly, over the quasi-static ramp,
-/// twice as long on the finer zoning), against Salençon's closed form.
-pub fn run(
-    kirsch: &adit::Scene,
-    rock: &Rock,
-    factor: f64,
-    held: bool,
-) -> anyhow::Result<(CaseReport, f64)> {
+/// A zoning of the hole: the shipped one ×`factor`, its plastic zone refined or not, or held at
+/// its wall size.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Zoning {
+    /// `zoning.plastic_depth: "auto"` on the shipped zoning.
+    Auto,
+    /// As a user writes it (`zoning.plastic_depth` 0): graded from the wall, ×`factor`.
+    Graded(f64),
+    /// Held at the wall's size to `DEPTH_MARGIN` times the closed form's plastic depth
+    /// (`zoning.fine_depth`), not refined further.
+    Held,
+}
+
+/// The hole in `rock` on `zoning`, released slowly (explicitly, over the quasi-static ramp, twice
+/// as long on a zoning refined through its plastic zone or halved), against Salençon's closed
+/// form.
+pub fn run(kirsch: &adit::Scene, rock: &Rock, zoning: Zoning) -> anyhow::Result<(CaseReport, f64)> {
+    let factor = match zoning {
+        Zoning::Graded(f) => f,
+        _ => 1.0,
+    };
     let (mut sc, exact) = salencon::scene(kirsch, factor, 0.0, rock);
     let depth = DEPTH_MARGIN * (exact.plastic_radius() - exact.radius);
-    if held {
-        sc.zoning.fine_depth = depth;
-    }
+    let name = match zoning {
+        Zoning::Auto => {
+            sc.zoning.plastic_depth = PlasticDepth::Auto;
+            let auto = adit::setup::plastic_depth(&sc)?;
+            format!("zoning ×1, plastic_depth auto ({auto:.2} m)")
+        }
+        Zoning::Graded(f) => format!("zoning ×{f}"),
+        Zoning::Held => {
+            sc.zoning.fine_depth = depth;
+            format!("zoning ×1, fine_depth {depth:.2} m")
+        }
+    };
     let method = SolveMethod::Explicit;
-    let release = crate::bundled::quasi_static(method) * if factor < 1.0 { 2 } else { 1 };
+    let slower = if zoning == Zoning::Graded(1.0) { 1 } else { 2 };
+    let release = crate::bundled::quasi_static(method) * slower;
     let case = format!(
-        "Salençon c = {} MPa, φ = {}°, ν = {}, p0 = {} MPa, Rp = {:.2} m: zoning ×{factor}{}",
+        "Salençon c = {} MPa, φ = {}°, ν = {}, p0 = {} MPa, Rp = {:.2} m: {name}",
         rock.cohesion / 1e6,
         rock.friction_deg,
         rock.poisson,
         rock.p0 / 1e6,
         exact.plastic_radius(),
-        if held {
-            format!(", fine_depth {depth:.2} m")
-        } else {
-            String::new()
-        }
     );
     salencon::measure_hole(sc, &exact, release, method, case)
 }
+
+/// The zonings of the section, the one a user writes first.
+const ZONINGS: [Zoning; 4] = [
+    Zoning::Graded(1.0),
+    Zoning::Auto,
+    Zoning::Graded(0.5),
+    Zoning::Held,
+];
 
 pub struct PlasticZoning;
 
@@ -73,60 +99,64 @@ impl Case for PlasticZoning {
             md,
             "\n## Plastic zones against zoning (issue 48)\n\n\
              Salençon's hole (the Kirsch geometry, a = 1 m, plain zones, released slowly over {} \
-             explicit cycles, twice as many on the finer zoning) in the weak rock of issue 13 and \
-             in a rock whose plastic zone reaches 4.2 a, on the shipped graded zoning (×1: \
-             `edge_at_excavation` 0.035 m growing by 0.105 per metre), on zones half the size \
-             (×0.5) and on the shipped zoning held at its wall size out to {DEPTH_MARGIN} times the \
-             closed form's plastic depth Rp − a (`zoning.fine_depth`). Measures as for Salençon's \
-             hole above. The issue's bar: closure and plastic radius within 3 % on the zoning a \
-             user gets by default.\n",
-            crate::bundled::quasi_static(SolveMethod::Explicit)
+             explicit cycles, twice as many on the refined zonings) in the weak rock of issue 13 \
+             and in a rock whose plastic zone reaches 4.2 a, on the shipped graded zoning as a \
+             user writes it (×1: `edge_at_excavation` 0.035 m growing by 0.105 per metre), the \
+             same with `zoning.plastic_depth: \"auto\"` (zones of half the graded size out to \
+             {margin} times the plastic depth Rp − a estimated from the rock and the in-situ \
+             stress before meshing), on zones half the size everywhere (×0.5) and on the shipped \
+             zoning held at its wall size out to {DEPTH_MARGIN} times the closed form's plastic \
+             depth (`zoning.fine_depth`). Measures as for Salençon's hole above. The issue's bar: \
+             closure and plastic radius within 3 % on the zoning a user gets by default.\n",
+            crate::bundled::quasi_static(SolveMethod::Explicit),
+            margin = adit::setup::DEPTH_MARGIN,
         );
+        let mut missed = Vec::new();
+        let meets = |r: &CaseReport| {
+            r.errors["wall_displacement"] <= 0.03 && r.errors["plastic_radius"] <= 0.03
+        };
         for rock in [WEAK_ROCK, DEEP_ROCK] {
-            for (factor, held) in [(1.0, false), (0.5, false), (1.0, true)] {
-                let (r, ratio) = run(&cx.kirsch, &rock, factor, held)?;
+            for zoning in ZONINGS {
+                let (r, ratio) = run(&cx.kirsch, &rock, zoning)?;
                 println!("{}: u_h/u = {ratio:.4}", r.case);
                 print_row(&r);
+                if zoning == Zoning::Auto && !meets(&r) {
+                    missed.push(r.case.clone());
+                }
                 rows.push(r);
             }
         }
         table(&mut md, &rows);
-        let meets = |r: &CaseReport| {
-            r.errors["wall_displacement"] <= 0.03 && r.errors["plastic_radius"] <= 0.03
-        };
-        let cheapest: Vec<String> = rows
-            .chunks(3)
-            .filter_map(|rock| {
-                rock.iter()
-                    .filter(|r| meets(r))
-                    .min_by(|a, b| a.wall_s.total_cmp(&b.wall_s))
-                    .map(|r| format!("{} ({} zones, {:.0} s)", r.case, r.zones, r.wall_s))
+        let cost: Vec<String> = rows
+            .chunks(ZONINGS.len())
+            .map(|rock| {
+                format!(
+                    "{:.1}× the zones and {:.1}× the seconds",
+                    rock[1].zones as f64 / rock[0].zones as f64,
+                    rock[1].wall_s / rock[0].wall_s
+                )
             })
             .collect();
         let _ = writeln!(
             md,
-            "\nOn the default zoning: {}. Plain triangles converge from the stiff side, locked \
-             by the plastic flow's incompressibility (ψ = 0), and meet the bar refined: the \
-             cheapest zoning that does, of those above, is {}. Holding the wall's size through \
-             the plastic zone costs more zones than halving the whole graded zoning for the same \
-             error: the closure is set by the zones at the wall as much as by those at Rp.\n",
-            if rows.iter().filter(|r| r.case.ends_with("×1")).all(meets) {
+            "\nWith the plastic zone refined (`plastic_depth: \"auto\"`): {}, at {} of the \
+             zoning as written (the two rocks). Plain triangles converge from the stiff side, locked by the plastic flow's \
+             incompressibility (ψ = 0): the zoning as written misses the bar. Holding the wall's \
+             size through the plastic zone costs more zones than halving the graded size there \
+             for the same error. The refinement is not yet the default (`docs/scene-format.md`).\n",
+            if missed.is_empty() {
                 "within 3 %".to_string()
             } else {
-                format!(
-                    "bar missed by {}",
-                    rows.iter()
-                        .filter(|r| r.case.ends_with("×1") && !meets(r))
-                        .map(|r| r.case.clone())
-                        .collect::<Vec<_>>()
-                        .join("; ")
-                )
+                format!("bar missed by {}", missed.join("; "))
             },
-            cheapest.join("; ")
+            cost.join(" and ")
         );
         Ok(Section {
             markdown: md,
             rows,
+            missed: (missed.iter())
+                .map(|case| format!("plastic zones refined: {case}"))
+                .collect(),
             ..Default::default()
         })
     }
@@ -136,16 +166,16 @@ impl Case for PlasticZoning {
 mod tests {
     use super::*;
 
-    /// The coarse twin: the weak rock misses the bar on the shipped zoning and meets it on zones
-    /// half the size (the held zoning's cost, 64 s, is the report's).
+    /// The coarse twin: the weak rock misses the bar on the shipped zoning as written and meets
+    /// it with its plastic zone refined (`plastic_depth: "auto"`).
     #[test]
-    fn refined_zones_meet_the_closed_form() {
+    fn the_refined_plastic_zone_meets_the_closed_form() {
         let kirsch = crate::shipped_kirsch().unwrap();
-        let (graded, _) = run(&kirsch, &WEAK_ROCK, 1.0, false).unwrap();
-        let (fine, _) = run(&kirsch, &WEAK_ROCK, 0.5, false).unwrap();
+        let (graded, _) = run(&kirsch, &WEAK_ROCK, Zoning::Graded(1.0)).unwrap();
+        let (auto, _) = run(&kirsch, &WEAK_ROCK, Zoning::Auto).unwrap();
         assert!(graded.errors["wall_displacement"] > 0.03, "{graded:?}");
         for what in ["wall_displacement", "plastic_radius"] {
-            assert!(fine.errors[what] < 0.03, "{what}: {fine:?}");
+            assert!(auto.errors[what] < 0.03, "{what}: {auto:?}");
         }
     }
 }
