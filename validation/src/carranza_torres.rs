@@ -328,7 +328,11 @@ pub fn run(
         rock.dilation_deg,
         rock.p0 / 1e6,
         exact.plastic_radius(),
-        if release > 0 { ", slowly" } else { "" },
+        match (release, method) {
+            (0, _) => String::new(),
+            (n, SolveMethod::Explicit) => format!(", over {n} cycles"),
+            (n, _) => format!(", in {n} load steps"),
+        },
         crate::method_suffix(method)
     );
     Ok(measure_hole(sc, &exact, release, method, case)?.0)
@@ -364,7 +368,11 @@ pub fn run_brittle(
         rock.sigma_ci / 1e6,
         rock.p0 / 1e6,
         exact.plastic_radius(),
-        if release > 0 { ", slowly" } else { "" },
+        match (release, method) {
+            (0, _) => String::new(),
+            (n, SolveMethod::Explicit) => format!(", over {n} cycles"),
+            (n, _) => format!(", in {n} load steps"),
+        },
         crate::method_suffix(method)
     );
     Ok(measure_hole(sc, &exact, release, method, case)?.0)

@@ -5,6 +5,7 @@ use std::fmt::Write as _;
 
 use adit::scene::SolveMethod;
 
+use crate::axisymmetric::STEPS;
 use crate::carranza_torres::{self, ROCKS, Rock};
 use crate::case::{Case, Context, Section, print_row, table};
 use crate::report::CaseReport;
@@ -157,16 +158,25 @@ struct Reference {
 }
 
 fn reference(rock: &Rock) -> anyhow::Result<Reference> {
+    reference_of(rock, None, STEPS)
+}
+
+/// `reference` of `rock` softening to the constants of `residual`'s GSI (the rock's mi, D = 0)
+/// over its plastic shear strain, if given, unloaded in `steps` steps.
+fn reference_of(
+    rock: &Rock,
+    residual: Option<(f64, f64)>,
+    steps: usize,
+) -> anyhow::Result<Reference> {
     let constants = adit::law::hoek_brown_constants(rock.gsi, rock.mi, 0.0);
-    let law = adit::law::HoekBrown::new(
+    let mut law = adit::law::HoekBrown::new(
         adit::law::Elastic::from_young(rock.young, rock.poisson, 1.0),
         rock.sigma_ci,
         constants,
         rock.dilation_deg,
         f64::INFINITY,
     );
-    let one_d = crate::axisymmetric::solve_law(&law, 1.0, (rock.p0, 0.0), 1e-8)?;
-    let closed = carranza_torres::CarranzaTorres::new(
+    let mut closed = carranza_torres::CarranzaTorres::new(
         1.0,
         (rock.p0, 0.0),
         rock.sigma_ci,
@@ -175,6 +185,12 @@ fn reference(rock: &Rock) -> anyhow::Result<Reference> {
         rock.young / (2.0 * (1.0 + rock.poisson)),
         rock.poisson,
     );
+    if let Some((gsi, strain)) = residual {
+        let (mb, s, a) = adit::law::hoek_brown_constants(gsi, rock.mi, 0.0);
+        law = law.with_residual(adit::law::Residual { mb, s, a, strain });
+        closed = closed.with_residual((mb, s, a));
+    }
+    let one_d = crate::axisymmetric::solve_law(&law, 1.0, (rock.p0, 0.0), 1e-8, steps)?;
     Ok(Reference {
         rock: *rock,
         wall: one_d.wall_displacement / closed.wall_displacement() - 1.0,
@@ -373,6 +389,26 @@ fn write_section(
 /// Bar of the elastic–brittle–plastic hole: plastic radius and wall displacement, relative.
 const BRITTLE_BAR: f64 = 0.05;
 
+/// The brittle rock: the fair rock's peak dropping to GSI 30's constants over this plastic shear
+/// strain (at once: the drop's own elastic strain is ten times more).
+const BRITTLE: (f64, f64) = (30.0, 1e-4);
+
+/// Load steps of the brittle hole's implicit path, the bar's; the report also gives 16 and 64.
+pub const BRITTLE_STEPS: u64 = 256;
+
+/// Unloading steps of the one-dimensional reference of the brittle hole.
+const BRITTLE_REFERENCE_STEPS: [usize; 3] = [60, 240, 960];
+
+/// The brittle hole on the shipped zoning (×`factor`), by `method` over `release` (explicit ramp
+/// cycles or implicit load steps).
+fn brittle_hole(
+    kirsch: &adit::Scene,
+    factor: f64,
+    (method, release): (SolveMethod, u64),
+) -> anyhow::Result<CaseReport> {
+    carranza_torres::run_brittle(kirsch, factor, &ROCKS[1], BRITTLE, (method, release))
+}
+
 /// The elastic–brittle–plastic hole: the fair rock softening to GSI 30's constants at once.
 pub struct HoekBrownBrittle;
 
@@ -382,25 +418,25 @@ impl Case for HoekBrownBrittle {
     }
 
     fn run(&self, cx: &Context) -> anyhow::Result<Section> {
-        let rock = &ROCKS[1];
         let ramp = crate::bundled::quasi_static(SolveMethod::Explicit);
-        let steps = crate::bundled::quasi_static(SolveMethod::Implicit);
         let runs = [
             (1.0, SolveMethod::Explicit, ramp),
+            (1.0, SolveMethod::Explicit, 4 * ramp),
             (0.5, SolveMethod::Explicit, 2 * ramp),
-            (1.0, SolveMethod::Implicit, steps),
+            (1.0, SolveMethod::Implicit, 16),
+            (1.0, SolveMethod::Implicit, 64),
+            (1.0, SolveMethod::Implicit, BRITTLE_STEPS),
         ];
         let (mut rows, mut missed) = (Vec::new(), Vec::new());
         for (factor, method, release) in runs {
-            let r = carranza_torres::run_brittle(
-                &cx.kirsch,
-                factor,
-                rock,
-                (30.0, 1e-4),
-                (method, release),
-            )?;
+            let r = brittle_hole(&cx.kirsch, factor, (method, release))?;
             print_row(&r);
-            if factor == 1.0
+            let barred = factor == 1.0
+                && match method {
+                    SolveMethod::Explicit => release == ramp,
+                    _ => release == BRITTLE_STEPS,
+                };
+            if barred
                 && (r.errors["plastic_radius"] > BRITTLE_BAR
                     || r.errors["wall_displacement"] > BRITTLE_BAR)
             {
@@ -408,33 +444,56 @@ impl Case for HoekBrownBrittle {
             }
             rows.push(r);
         }
+        let references: Vec<(usize, Reference)> = (BRITTLE_REFERENCE_STEPS.iter())
+            .map(|&n| Ok((n, reference_of(&ROCKS[1], Some(BRITTLE), n)?)))
+            .collect::<anyhow::Result<_>>()?;
         let mut md = String::new();
         let _ = writeln!(
             md,
             "\n## Hoek–Brown rock: the elastic–brittle–plastic hole (issue 48)\n\n\
              The fair rock of the section above (GSI 50, mi 12, σci 80 MPa, E 10 GPa, ν 0.25, \
-             ψ 5°, p0 30 MPa) softening to the constants of GSI 30 over a plastic shear strain of \
-             1e-4 (`residual`: the strength drops at once), released slowly, against \
-             Carranza-Torres's (2004) elastic–brittle–plastic solution (pcr from the peak \
-             constants, the plastic zone on the residual ones, σθ dropping at Rp; \
+             ψ 5°, p0 30 MPa) softening to the constants of GSI {} over a plastic shear strain of \
+             {:e} (`residual`: the strength drops at once), released slowly (explicitly over \
+             {ramp} cycles, and {} and, on zones half the size, {} cycles; implicitly in 16, 64 \
+             and {BRITTLE_STEPS} load steps), against Carranza-Torres's (2004) elastic–brittle–plastic solution (pcr \
+             from the peak constants, the plastic zone on the residual ones, σθ dropping at Rp; \
              `CarranzaTorres::with_residual`). Bar: plastic radius and wall displacement within \
-             {} % on the shipped zoning, explicit and implicit.\n",
+             {} % on the shipped zoning, explicitly and implicitly (in {BRITTLE_STEPS} steps).\n",
+            BRITTLE.0,
+            BRITTLE.1,
+            4 * ramp,
+            2 * ramp,
             100.0 * BRITTLE_BAR
         );
         table(&mut md, &rows);
         let _ = writeln!(
             md,
-            "\n{}\n",
+            "\nThe closed form is the quasi-static path's: the one-dimensional axisymmetric solve \
+             with adit's own law (`validation/src/axisymmetric.rs`, no assumption on σzz) \
+             converges to it as its unloading steps shrink, each step returning the whole step's \
+             strain from its start (a zone whose strength drops within a step sheds its load \
+             only at the step's end):\n\n\
+             | unloading steps | 1D wall displacement vs closed form | 1D plastic radius vs closed form |\n\
+             |---:|---:|---:|"
+        );
+        for (n, r) in &references {
+            let _ = writeln!(
+                md,
+                "| {n} | {:+.2} % | {:+.2} % |",
+                100.0 * r.wall,
+                100.0 * r.radius
+            );
+        }
+        let _ = writeln!(
+            md,
+            "\nSo does the implicit path in the Kirsch geometry (16, 64, {BRITTLE_STEPS} load \
+             steps above). The explicit path's ramp is thousands of cycles, yet it does not: \
+             each zone's drop is released dynamically, its error does not fall with a ramp four \
+             times longer, and it grows on zones half the size. {}\n",
             if missed.is_empty() {
                 "Bar met.".to_string()
             } else {
-                format!(
-                    "Bar missed by {}. A softening rock is no longer a unique solution: the \
-                     explicit path's and the implicit path's (16 load steps, each returning a \
-                     whole step's strain at once) differ by more than either from the closed \
-                     form, which holds the axisymmetric one.",
-                    missed.join("; ")
-                )
+                format!("Bar missed by {}.", missed.join("; "))
             }
         );
         Ok(Section {
@@ -449,6 +508,17 @@ impl Case for HoekBrownBrittle {
 #[cfg(test)]
 mod coarse {
     use super::*;
+
+    /// The brittle hole's coarse twin: implicitly in the bar's load steps, within the bar of
+    /// Carranza-Torres's elastic–brittle–plastic solution (in 16 steps it is not: 12 % and 26 %).
+    #[test]
+    fn the_brittle_hole_meets_its_closed_form_in_small_steps() {
+        let kirsch = crate::shipped_kirsch().unwrap();
+        let r = brittle_hole(&kirsch, 1.0, (SolveMethod::Implicit, BRITTLE_STEPS)).unwrap();
+        for what in ["plastic_radius", "wall_displacement"] {
+            assert!(r.errors[what] < BRITTLE_BAR, "{what}: {r:?}");
+        }
+    }
 
     /// The fair rock's element test: its envelope at three confinements (one near the apex),
     /// explicit and implicit, and direct tension at a cut-off below its uniaxial strength, each
