@@ -87,9 +87,8 @@ impl Zoning {
     /// depth: k g(d) within the plastic zone, growing on by the grading (continuous) beyond it.
     pub fn size_at(&self, d: f64) -> f64 {
         let graded = |d: f64| self.h_excavation + self.grading * (d - self.fine_depth).max(0.0);
-        let refined = (1.0 - PLASTIC_SCALE) * graded(d.min(self.plastic_depth));
         let refined = if self.plastic_depth > 0.0 {
-            refined
+            (1.0 - PLASTIC_SCALE) * graded(d.min(self.plastic_depth))
         } else {
             0.0
         };
@@ -947,7 +946,6 @@ mod tests {
         let graded = zoning();
         let held = Zoning {
             fine_depth: 1.5,
-            plastic_depth: 0.0,
             ..zoning()
         };
         assert_eq!(held.size_at(1.2), held.h_excavation);
@@ -962,7 +960,6 @@ mod tests {
         assert!(far_held > 0.8 * expected, "{far_held} {expected}");
         let bad = Zoning {
             fine_depth: -1.0,
-            plastic_depth: 0.0,
             ..zoning()
         };
         assert!(matches!(triangulate(&d, &bad), Err(MeshError::Zoning(_))));

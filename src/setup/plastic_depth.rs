@@ -2,9 +2,10 @@
 //! yield, zoned at half the graded size (issue 48). Plain triangles converge to a plastic zone's
 //! closure from the stiff side: Salençon's hole with its plastic zone 2.8 and 4.2 radii deep
 //! closes 6 % and 13 % too little on a graded zoning whose wall zones are a 28th of the radius,
-//! within 3 % on zones half the size (`docs/validation.md`, "Plastic zones against zoning"). The
-//! default, `"auto"`, estimates the depth before meshing from the closed form of a circular hole
-//! in the region's rock, so the zoning a user writes resolves the plastic zone it will have.
+//! within 3 % on zones half the size (`docs/validation.md`, "Plastic zones against zoning").
+//! `"auto"` estimates the depth before meshing from the closed form of a circular hole in the
+//! region's rock, so the zoning a user writes resolves the plastic zone it will have (not yet the
+//! default, 0).
 
 use crate::scene::{PlasticDepth, Scene, SceneError};
 
@@ -61,8 +62,12 @@ pub fn plastic_depth(scene: &Scene) -> Result<f64, SceneError> {
     if let PlasticDepth::Depth(d) = scene.zoning.plastic_depth {
         return Ok(d);
     }
-    let material = &scene.materials[&scene.region.material];
-    let path = format!("materials.{}", scene.region.material);
+    let name = &scene.region.material;
+    let material = (scene.materials.get(name)).ok_or_else(|| SceneError::Invalid {
+        path: "region.material".into(),
+        reason: format!("no material named {name}"),
+    })?;
+    let path = format!("materials.{name}");
     let law = matrix_law(material, &path)?;
     if law.peak_deviator(0.0).is_none() {
         return Ok(0.0);
