@@ -68,6 +68,11 @@ impl StepInfo {
 }
 
 impl CaseReport {
+    /// Whether a hole's plastic radius and wall displacement are both within `bar` (relative).
+    pub fn hole_within(&self, bar: f64) -> bool {
+        self.errors["plastic_radius"] <= bar && self.errors["wall_displacement"] <= bar
+    }
+
     /// A row from its figures; zone-cycles per second follow from zones, cycles and seconds.
     pub fn new(
         case: impl Into<String>,

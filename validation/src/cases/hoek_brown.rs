@@ -274,11 +274,7 @@ impl Case for HoekBrown {
                     }
                 };
                 print_row(&r);
-                if release > 0
-                    && factor == 1.0
-                    && (r.errors["plastic_radius"] > HOLE_BAR
-                        || r.errors["wall_displacement"] > HOLE_BAR)
-                {
+                if release > 0 && factor == 1.0 && !r.hole_within(HOLE_BAR) {
                     missed.push(format!("{}: {:?} beyond {HOLE_BAR}", r.case, r.errors));
                 }
                 holes.push(r);
@@ -436,10 +432,7 @@ impl Case for HoekBrownBrittle {
                     SolveMethod::Explicit => release == ramp,
                     _ => release == BRITTLE_STEPS,
                 };
-            if barred
-                && (r.errors["plastic_radius"] > BRITTLE_BAR
-                    || r.errors["wall_displacement"] > BRITTLE_BAR)
-            {
+            if barred && !r.hole_within(BRITTLE_BAR) {
                 missed.push(format!("{}: {:?} beyond {BRITTLE_BAR}", r.case, r.errors));
             }
             rows.push(r);
