@@ -21,6 +21,10 @@ fn tunnel(method: &str, max_normal_stiffness: Option<f64>) -> Scene {
     }
     s["joint_materials"]["joint"] = joint;
     s["solve"]["method"] = json!(method);
+    // The zoning as written: the comparison is of the joints' paths, not of the plastic zone's
+    // (on the default zoning, refined through it, explicit 10.81 mm and implicit 10.63 mm:
+    // the Mohr–Coulomb rock's own explicit and implicit paths differ by 1.7 % there).
+    s["zoning"]["plastic_depth"] = json!(0);
     Scene::from_json(&s.to_string(), "tunnel_bb").unwrap()
 }
 

@@ -132,7 +132,10 @@ fn implicit_plastic_hole_matches_explicit() {
 /// integrated along the iterations' path it was +2.0 % and +2.4 % after 3 cuts).
 #[test]
 fn a_step_that_does_not_converge_is_cut() {
-    let explicit = Scene::from_json(MC_HOLE, "mc_hole").unwrap();
+    let mut explicit = Scene::from_json(MC_HOLE, "mc_hole").unwrap();
+    // On the zoning as written, whose step and cuts were measured (refined through its plastic
+    // zone, the default, the step takes more iterations than its cuts leave it).
+    explicit.zoning.plastic_depth = adit::scene::PlasticDepth::Depth(0.0);
     let mut implicit = explicit.clone();
     implicit.solve.method = adit::scene::SolveMethod::Implicit;
     implicit.solve.max_iterations = 24;

@@ -698,18 +698,13 @@ pub struct ZoningSpec {
     pub mixed: bool,
 }
 
-/// `zoning.plastic_depth`: estimated before meshing (`"auto"`), or given in metres (default 0:
-/// no refinement).
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// `zoning.plastic_depth`: estimated before meshing (`"auto"`, the default), or given in metres
+/// (0: no refinement).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub enum PlasticDepth {
+    #[default]
     Auto,
     Depth(f64),
-}
-
-impl Default for PlasticDepth {
-    fn default() -> Self {
-        PlasticDepth::Depth(0.0)
-    }
 }
 
 impl<'de> Deserialize<'de> for PlasticDepth {
@@ -1095,7 +1090,7 @@ mod tests {
         assert!(msg.ends_with("got 0.75"), "{msg}");
     }
 
-    /// `zoning.plastic_depth` defaults to 0, takes `"auto"` or a depth, and refuses a negative
+    /// `zoning.plastic_depth` defaults to `"auto"`, takes `"auto"` or a depth, and refuses a negative
     /// depth or another word, naming the field.
     #[test]
     fn plastic_depth_is_checked() {
@@ -1106,9 +1101,9 @@ mod tests {
             )
         };
         let s = Scene::from_json(GOOD, "scene.json").unwrap();
-        assert_eq!(s.zoning.plastic_depth, PlasticDepth::Depth(0.0));
-        let s = Scene::from_json(&with("\"auto\""), "scene.json").unwrap();
         assert_eq!(s.zoning.plastic_depth, PlasticDepth::Auto);
+        let s = Scene::from_json(&with("0"), "scene.json").unwrap();
+        assert_eq!(s.zoning.plastic_depth, PlasticDepth::Depth(0.0));
         let s = Scene::from_json(&with("1.5"), "scene.json").unwrap();
         assert_eq!(s.zoning.plastic_depth, PlasticDepth::Depth(1.5));
         let msg = error_of(&with("-1"));

@@ -4,8 +4,8 @@
 //! closes 6 % and 13 % too little on a graded zoning whose wall zones are a 28th of the radius,
 //! within 3 % on zones half the size (`docs/validation.md`, "Plastic zones against zoning").
 //! `"auto"` estimates the depth before meshing from the closed form of a circular hole in the
-//! region's rock, so the zoning a user writes resolves the plastic zone it will have (not yet the
-//! default, 0).
+//! region's rock, so the zoning a user writes resolves the plastic zone it will have; it is the
+//! default.
 
 use crate::scene::{PlasticDepth, Scene, SceneError};
 
@@ -153,12 +153,13 @@ mod tests {
     #[test]
     fn auto_halves_the_zones_of_the_plastic_zone() {
         let path = concat!(env!("CARGO_MANIFEST_DIR"), "/models/kirsch.json");
-        let mut written = Scene::load(std::path::Path::new(path)).unwrap();
-        let rock = written.materials.get_mut("rock").unwrap();
+        let mut auto = Scene::load(std::path::Path::new(path)).unwrap();
+        let rock = auto.materials.get_mut("rock").unwrap();
         rock.law = crate::scene::ZoneLawKind::MohrCoulomb;
         (rock.cohesion, rock.friction) = (Some(2e6), Some(30.0));
-        let mut auto = written.clone();
-        auto.zoning.plastic_depth = PlasticDepth::Auto;
+        assert_eq!(auto.zoning.plastic_depth, PlasticDepth::Auto);
+        let mut written = auto.clone();
+        written.zoning.plastic_depth = PlasticDepth::Depth(0.0);
         assert_eq!(plastic_depth(&written).unwrap(), 0.0);
         let depth = plastic_depth(&auto).unwrap();
         let n = 3.0;
@@ -179,9 +180,9 @@ mod tests {
     #[test]
     fn auto_refines_the_bundled_tunnel() {
         let path = concat!(env!("CARGO_MANIFEST_DIR"), "/models/tunnel.json");
-        let written = Scene::load(std::path::Path::new(path)).unwrap();
-        let mut auto = written.clone();
-        auto.zoning.plastic_depth = PlasticDepth::Auto;
+        let auto = Scene::load(std::path::Path::new(path)).unwrap();
+        let mut written = auto.clone();
+        written.zoning.plastic_depth = PlasticDepth::Depth(0.0);
         let depth = plastic_depth(&auto).unwrap();
         assert!(depth > 0.5 && depth < 10.0, "{depth}");
         let (fine, n_fine) = zones_near_wall(&auto, depth);

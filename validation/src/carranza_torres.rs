@@ -289,7 +289,11 @@ pub fn scene(kirsch: &Scene, factor: f64, rock: &Rock) -> (Scene, CarranzaTorres
     s.in_situ.sxx = -rock.p0;
     s.in_situ.syy = -rock.p0;
     s.in_situ.szz = Some(-rock.p0);
-    s.solve.ratio = 1e-6;
+    // The bundled models' ratio: on the zoning refined through the plastic zone (the default)
+    // the implicit iterations of the fair rock's first load step stall between 2e-6 and 1e-5
+    // and do not reach 1e-6 in four cuts of 2 000 iterations (measured); at 1e-5 they converge
+    // in 879 iterations.
+    s.solve.ratio = 1e-5;
     s.solve.max_cycles = 400_000;
     s.solve.max_iterations = 2_000;
     let radius = s.excavations[0]
@@ -349,6 +353,9 @@ pub fn run_brittle(
     (method, release): (SolveMethod, u64),
 ) -> anyhow::Result<CaseReport> {
     let (mut sc, exact) = scene(kirsch, factor, rock);
+    // The zoning as written, its plastic zone not refined: on the default zoning (refined) the
+    // implicit path's 256 load steps do not converge within their cuts.
+    sc.zoning.plastic_depth = adit::scene::PlasticDepth::Depth(0.0);
     let residual = adit::law::hoek_brown_constants(residual_gsi, rock.mi, 0.0);
     let exact = exact.with_residual(residual);
     sc.materials
@@ -362,7 +369,7 @@ pub fn run_brittle(
         plastic_strain: strain,
     });
     let case = format!(
-        "Hoek–Brown hole GSI {} → {residual_gsi} at e^ps = {strain}, mi {}, σci {} MPa, p0 = {} MPa, Rp = {:.3} m (×{factor}){}{}",
+        "Hoek–Brown hole GSI {} → {residual_gsi} at e^ps = {strain}, mi {}, σci {} MPa, p0 = {} MPa, Rp = {:.3} m (×{factor}, plastic_depth 0){}{}",
         rock.gsi,
         rock.mi,
         rock.sigma_ci / 1e6,

@@ -57,8 +57,14 @@ pub fn closed_form(scene: &Scene) -> anyhow::Result<Kirsch> {
 
 /// Refine a scene's zoning uniformly by `factor` (< 1 is finer): edge lengths and grading scale
 /// together, so h(d) scales everywhere; the hole polygon gets about one segment per wall zone.
+/// At a factor other than 1 the plastic zone is not refined further (`zoning.plastic_depth` 0):
+/// the rows ×0.5, ×2 are the zoning as written scaled, the row ×1 the zoning a user gets by
+/// default, its plastic zone refined (`"auto"`).
 pub fn scaled(scene: &Scene, factor: f64) -> Scene {
     let mut s = scene.clone();
+    if factor != 1.0 {
+        s.zoning.plastic_depth = adit::scene::PlasticDepth::Depth(0.0);
+    }
     s.zoning.edge_at_excavation *= factor;
     s.zoning.edge_far *= factor;
     s.zoning.grading *= factor;

@@ -818,8 +818,9 @@ mod tests {
         }
     }
 
-    /// Coarse twins of the sweep. On the shipped mesh at ν = 0.45 plain triangles lock (−15 %)
-    /// and mixed ones must not (−4.7 %); on zones twice the shipped size at ν = 0.3 mixed ones must
+    /// Coarse twins of the sweep. On the shipped mesh at ν = 0.45, its plastic zone refined (the
+    /// default), plain triangles lock (−5.9 %; −15 % as written) and mixed ones must not
+    /// (+1.0 %; −4.7 % as written); on zones twice the shipped size at ν = 0.3 mixed ones must
     /// stay within a point of plain ones (−16 % both: the mesh is coarse). Before the stabilization
     /// (`cycle::mixed`) mixed zones closed 18 % too much on the shipped mesh at ν = 0.3.
     #[test]
@@ -842,8 +843,8 @@ mod tests {
                 "ν = {poisson}: mixed {mixed} vs plain {plain}"
             );
             if poisson == 0.45 {
-                assert!(plain < -0.1, "plain triangles lock at ν = 0.45: {plain}");
-                assert!(mixed.abs() < 0.06, "mixed closure error {mixed}");
+                assert!(plain < -0.04, "plain triangles lock at ν = 0.45: {plain}");
+                assert!(mixed.abs() < 0.03, "mixed closure error {mixed}");
                 assert!(radius < 0.08, "{r:?}");
             }
         }

@@ -269,6 +269,9 @@ impl Case for HoekBrown {
                             method.name()
                         );
                         println!("{what}");
+                        if release > 0 && factor == 1.0 {
+                            missed.push(format!("not solved: {what}"));
+                        }
                         unsolved.push(what);
                         continue;
                     }
@@ -358,8 +361,12 @@ fn write_section(
     table(md, elements);
     let _ = writeln!(
         md,
-        "\n**Carranza-Torres's hole** (2004): the Kirsch geometry (a = 1 m, 40 m square, the shipped \
-         graded zoning ×1 and ×0.5) under hydrostatic p0, the hole excavated at once (zones start \
+        "\n**Carranza-Torres's hole** (2004): the Kirsch geometry (a = 1 m, 40 m square; ×1: the \
+         zoning a user gets by default, the shipped graded zoning with its plastic zone refined, \
+         `zoning.plastic_depth: \"auto\"`; ×0.5: the shipped zoning halved everywhere, not \
+         refined further) under hydrostatic p0, to a ratio of 1e-5 (the bundled models'; \
+         implicitly the fair rock's first load step stalls between 2e-6 and 1e-5 on the refined \
+         zoning and does not reach 1e-6), the hole excavated at once (zones start \
          at −p0, the wall free), solved explicitly released at once and slowly (the out-of-balance \
          force over {} cycles on ×1, twice as many on ×0.5, or implicitly in {} load steps: the \
          closed form's quasi-static path), against the closed form \
@@ -450,8 +457,11 @@ impl Case for HoekBrownBrittle {
              {ramp} cycles, and {} and, on zones half the size, {} cycles; implicitly in 16, 64 \
              and {BRITTLE_STEPS} load steps), against Carranza-Torres's (2004) elastic–brittle–plastic solution (pcr \
              from the peak constants, the plastic zone on the residual ones, σθ dropping at Rp; \
-             `CarranzaTorres::with_residual`). Bar: plastic radius and wall displacement within \
-             {} % on the shipped zoning, explicitly and implicitly (in {BRITTLE_STEPS} steps).\n",
+             `CarranzaTorres::with_residual`), to a ratio of 1e-5, on the shipped zoning as \
+             written (`zoning.plastic_depth` 0: refined through its plastic zone, the default, \
+             the implicit path's {BRITTLE_STEPS} load steps do not converge within their cuts). \
+             Bar: plastic radius and wall displacement within {} % on the shipped zoning, \
+             explicitly and implicitly (in {BRITTLE_STEPS} steps).\n",
             BRITTLE.0,
             BRITTLE.1,
             4 * ramp,

@@ -1,6 +1,7 @@
 //! Plastic zones against zoning (issue 48): Salençon's hole in the weak rock of issue 13 and in
 //! the issue's rock with a plastic zone four hole radii deep, on the shipped graded zoning as a
-//! user writes it, the same with its plastic zone refined (`zoning.plastic_depth: "auto"`), on
+//! user writes it (`zoning.plastic_depth` 0), the same with its plastic zone refined
+//! (`zoning.plastic_depth: "auto"`, the default), on
 //! zones half the size, and on the shipped zoning held at its wall size through the plastic zone
 //! (`zoning.fine_depth`): error against cost.
 
@@ -32,7 +33,7 @@ const BAR: f64 = 0.03;
 /// its wall size.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Zoning {
-    /// `zoning.plastic_depth: "auto"` on the shipped zoning.
+    /// The shipped zoning with `zoning.plastic_depth` at its default, `"auto"`.
     Auto,
     /// As a user writes it (`zoning.plastic_depth` 0): graded from the wall, ×`factor`.
     Graded(f64),
@@ -53,12 +54,15 @@ pub fn run(kirsch: &adit::Scene, rock: &Rock, zoning: Zoning) -> anyhow::Result<
     let depth = DEPTH_MARGIN * (exact.plastic_radius() - exact.radius);
     let name = match zoning {
         Zoning::Auto => {
-            sc.zoning.plastic_depth = PlasticDepth::Auto;
             let auto = adit::setup::plastic_depth(&sc)?;
             format!("zoning ×1, plastic_depth auto ({auto:.2} m)")
         }
-        Zoning::Graded(f) => format!("zoning ×{f}"),
+        Zoning::Graded(f) => {
+            sc.zoning.plastic_depth = PlasticDepth::Depth(0.0);
+            format!("zoning ×{f}")
+        }
         Zoning::Held => {
+            sc.zoning.plastic_depth = PlasticDepth::Depth(0.0);
             sc.zoning.fine_depth = depth;
             format!("zoning ×1, fine_depth {depth:.2} m")
         }
@@ -101,8 +105,9 @@ impl Case for PlasticZoning {
              Salençon's hole (the Kirsch geometry, a = 1 m, plain zones, released slowly over {} \
              explicit cycles, twice as many on the refined zonings) in the weak rock of issue 13 \
              and in a rock whose plastic zone reaches 4.2 a, on the shipped graded zoning as a \
-             user writes it (×1: `edge_at_excavation` 0.035 m growing by 0.105 per metre), the \
-             same with `zoning.plastic_depth: \"auto\"` (zones of half the graded size out to \
+             user writes it, its plastic zone not refined (×1, `zoning.plastic_depth` 0: \
+             `edge_at_excavation` 0.035 m growing by 0.105 per metre), the same with \
+             `zoning.plastic_depth: \"auto\"`, the default (zones of half the graded size out to \
              {DEPTH_MARGIN} times the plastic depth Rp − a estimated from the rock and the in-situ \
              stress before meshing), on zones half the size everywhere (×0.5) and on the shipped \
              zoning held at its wall size out to {DEPTH_MARGIN} times the closed form's plastic \
@@ -139,7 +144,7 @@ impl Case for PlasticZoning {
              zoning as written (the two rocks). Plain triangles converge from the stiff side, locked by the plastic flow's \
              incompressibility (ψ = 0): the zoning as written misses the bar. Holding the wall's \
              size through the plastic zone costs more zones than halving the graded size there \
-             for the same error. The refinement is not yet the default (`docs/scene-format.md`).\n",
+             for the same error.\n",
             if missed.is_empty() {
                 "within 3 %".to_string()
             } else {
