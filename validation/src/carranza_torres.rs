@@ -332,11 +332,7 @@ pub fn run(
         rock.dilation_deg,
         rock.p0 / 1e6,
         exact.plastic_radius(),
-        match (release, method) {
-            (0, _) => String::new(),
-            (n, SolveMethod::Explicit) => format!(", over {n} cycles"),
-            (n, _) => format!(", in {n} load steps"),
-        },
+        crate::release_suffix(release, method),
         crate::method_suffix(method)
     );
     Ok(measure_hole(sc, &exact, release, method, case)?.0)
@@ -375,11 +371,7 @@ pub fn run_brittle(
         rock.sigma_ci / 1e6,
         rock.p0 / 1e6,
         exact.plastic_radius(),
-        match (release, method) {
-            (0, _) => String::new(),
-            (n, SolveMethod::Explicit) => format!(", over {n} cycles"),
-            (n, _) => format!(", in {n} load steps"),
-        },
+        crate::release_suffix(release, method),
         crate::method_suffix(method)
     );
     Ok(measure_hole(sc, &exact, release, method, case)?.0)

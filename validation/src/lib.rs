@@ -221,6 +221,16 @@ pub fn method_suffix(method: adit::scene::SolveMethod) -> String {
     }
 }
 
+/// What a row's case name adds for its release (`release_gradually`): nothing at once,
+/// `, over N cycles` explicitly, `, in N load steps` implicitly.
+pub fn release_suffix(release: u64, method: adit::scene::SolveMethod) -> String {
+    match (release, method) {
+        (0, _) => String::new(),
+        (n, adit::scene::SolveMethod::Explicit) => format!(", over {n} cycles"),
+        (n, _) => format!(", in {n} load steps"),
+    }
+}
+
 /// Radial displacement of each of `nodes` about the origin, m (outward positive).
 pub fn radial_displacements<'a>(
     model: &'a Model,

@@ -52,17 +52,16 @@ pub fn run(kirsch: &adit::Scene, rock: &Rock, zoning: Zoning) -> anyhow::Result<
     };
     let (mut sc, exact) = salencon::scene(kirsch, factor, 0.0, rock);
     let depth = DEPTH_MARGIN * (exact.plastic_radius() - exact.radius);
+    if zoning != Zoning::Auto {
+        sc.zoning.plastic_depth = PlasticDepth::Depth(0.0);
+    }
     let name = match zoning {
         Zoning::Auto => {
             let auto = adit::setup::plastic_depth(&sc)?;
             format!("zoning ×1, plastic_depth auto ({auto:.2} m)")
         }
-        Zoning::Graded(f) => {
-            sc.zoning.plastic_depth = PlasticDepth::Depth(0.0);
-            format!("zoning ×{f}")
-        }
+        Zoning::Graded(f) => format!("zoning ×{f}"),
         Zoning::Held => {
-            sc.zoning.plastic_depth = PlasticDepth::Depth(0.0);
             sc.zoning.fine_depth = depth;
             format!("zoning ×1, fine_depth {depth:.2} m")
         }
