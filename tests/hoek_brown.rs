@@ -15,7 +15,7 @@ use adit::solve::Quiet;
 /// explicit closures differ by 1.8e-4, one zone yielding in one law and not in the other).
 fn hole(law: &str, method: &str) -> Scene {
     let mut scene = hole_released(law, method, "");
-    scene.zoning.plastic_depth = adit::scene::PlasticDepth::Depth(0.0);
+    scene.zoning.plastic_depth = adit::scene::PlasticDepth::OFF;
     scene
 }
 

@@ -135,7 +135,7 @@ fn a_step_that_does_not_converge_is_cut() {
     let mut explicit = Scene::from_json(MC_HOLE, "mc_hole").unwrap();
     // On the zoning as written, whose step and cuts were measured (refined through its plastic
     // zone, the default, the step takes more iterations than its cuts leave it).
-    explicit.zoning.plastic_depth = adit::scene::PlasticDepth::Depth(0.0);
+    explicit.zoning.plastic_depth = adit::scene::PlasticDepth::OFF;
     let mut implicit = explicit.clone();
     implicit.solve.method = adit::scene::SolveMethod::Implicit;
     implicit.solve.max_iterations = 24;

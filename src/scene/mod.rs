@@ -707,6 +707,11 @@ pub enum PlasticDepth {
     Depth(f64),
 }
 
+impl PlasticDepth {
+    /// No refinement: the zoning as written (`zoning.plastic_depth` 0).
+    pub const OFF: PlasticDepth = PlasticDepth::Depth(0.0);
+}
+
 impl<'de> Deserialize<'de> for PlasticDepth {
     fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
         #[derive(Deserialize)]
@@ -1103,7 +1108,7 @@ mod tests {
         let s = Scene::from_json(GOOD, "scene.json").unwrap();
         assert_eq!(s.zoning.plastic_depth, PlasticDepth::Auto);
         let s = Scene::from_json(&with("0"), "scene.json").unwrap();
-        assert_eq!(s.zoning.plastic_depth, PlasticDepth::Depth(0.0));
+        assert_eq!(s.zoning.plastic_depth, PlasticDepth::OFF);
         let s = Scene::from_json(&with("1.5"), "scene.json").unwrap();
         assert_eq!(s.zoning.plastic_depth, PlasticDepth::Depth(1.5));
         let msg = error_of(&with("-1"));

@@ -159,7 +159,7 @@ mod tests {
         (rock.cohesion, rock.friction) = (Some(2e6), Some(30.0));
         assert_eq!(auto.zoning.plastic_depth, PlasticDepth::Auto);
         let mut written = auto.clone();
-        written.zoning.plastic_depth = PlasticDepth::Depth(0.0);
+        written.zoning.plastic_depth = PlasticDepth::OFF;
         assert_eq!(plastic_depth(&written).unwrap(), 0.0);
         let depth = plastic_depth(&auto).unwrap();
         let n = 3.0;
@@ -182,7 +182,7 @@ mod tests {
         let path = concat!(env!("CARGO_MANIFEST_DIR"), "/models/tunnel.json");
         let auto = Scene::load(std::path::Path::new(path)).unwrap();
         let mut written = auto.clone();
-        written.zoning.plastic_depth = PlasticDepth::Depth(0.0);
+        written.zoning.plastic_depth = PlasticDepth::OFF;
         let depth = plastic_depth(&auto).unwrap();
         assert!(depth > 0.5 && depth < 10.0, "{depth}");
         let (fine, n_fine) = zones_near_wall(&auto, depth);

@@ -351,7 +351,7 @@ pub fn run_brittle(
     let (mut sc, exact) = scene(kirsch, factor, rock);
     // The zoning as written, its plastic zone not refined: on the default zoning (refined) the
     // implicit path's 256 load steps do not converge within their cuts.
-    sc.zoning.plastic_depth = adit::scene::PlasticDepth::Depth(0.0);
+    sc.zoning.plastic_depth = adit::scene::PlasticDepth::OFF;
     let residual = adit::law::hoek_brown_constants(residual_gsi, rock.mi, 0.0);
     let exact = exact.with_residual(residual);
     sc.materials

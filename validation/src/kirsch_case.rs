@@ -63,7 +63,7 @@ pub fn closed_form(scene: &Scene) -> anyhow::Result<Kirsch> {
 pub fn scaled(scene: &Scene, factor: f64) -> Scene {
     let mut s = scene.clone();
     if factor != 1.0 {
-        s.zoning.plastic_depth = adit::scene::PlasticDepth::Depth(0.0);
+        s.zoning.plastic_depth = adit::scene::PlasticDepth::OFF;
     }
     s.zoning.edge_at_excavation *= factor;
     s.zoning.edge_far *= factor;

@@ -516,8 +516,14 @@ fn quasi_static_closure(kirsch: &Scene, factor: f64, rock: &Rock) -> anyhow::Res
     Ok(measure(kirsch, factor, 0.0, rock, steps, SolveMethod::Implicit)?.1 - 1.0)
 }
 
-/// The sweep: each rock at each mesh factor, plain and mixed.
+/// The sweep: each rock at each mesh factor, plain and mixed, on the graded zoning as written
+/// (`zoning.plastic_depth` 0 at every factor): a refinement study of issue 13, whose ×1 must be
+/// coarser than its ×0.5 (refined through its plastic zone, the default, ×1 is as fine as ×0.5 at
+/// the wall). The default zoning's rows are the plastic-zoning section's.
 pub fn sweep(kirsch: &Scene, rocks: &[Rock], factors: &[f64]) -> anyhow::Result<Vec<SweepRow>> {
+    let mut written = kirsch.clone();
+    written.zoning.plastic_depth = adit::scene::PlasticDepth::OFF;
+    let kirsch = &written;
     let mut rows = Vec::new();
     for rock in rocks {
         let reference = crate::axisymmetric::solve(&crate::axisymmetric::Hole {

@@ -53,7 +53,7 @@ pub fn run(kirsch: &adit::Scene, rock: &Rock, zoning: Zoning) -> anyhow::Result<
     let (mut sc, exact) = salencon::scene(kirsch, factor, 0.0, rock);
     let depth = DEPTH_MARGIN * (exact.plastic_radius() - exact.radius);
     if zoning != Zoning::Auto {
-        sc.zoning.plastic_depth = PlasticDepth::Depth(0.0);
+        sc.zoning.plastic_depth = PlasticDepth::OFF;
     }
     let name = match zoning {
         Zoning::Auto => {
