@@ -236,6 +236,8 @@ pub struct Rock {
     pub poisson: f64,
     /// In-situ pressure p0 (compression positive), Pa.
     pub p0: f64,
+    /// Support pressure pi on the wall (compression positive), Pa; 0 unsupported.
+    pub pi: f64,
 }
 
 /// Three rock masses of the report (issue 48): good, fair and poor, with their plastic zones
@@ -249,6 +251,7 @@ pub const ROCKS: [Rock; 3] = [
         young: 40e9,
         poisson: 0.2,
         p0: 100e6,
+        pi: 0.0,
     },
     Rock {
         gsi: 50.0,
@@ -258,6 +261,7 @@ pub const ROCKS: [Rock; 3] = [
         young: 10e9,
         poisson: 0.25,
         p0: 30e6,
+        pi: 0.0,
     },
     Rock {
         gsi: 25.0,
@@ -267,8 +271,24 @@ pub const ROCKS: [Rock; 3] = [
         young: 2e9,
         poisson: 0.3,
         p0: 10e6,
+        pi: POOR_SUPPORT,
     },
 ];
+
+/// The poor rock's support pressure, Pa: 3 % of its p0. Unsupported (`POOR_UNSUPPORTED`), its
+/// wall lies where the criterion's slope dσ1/dσ3 is 15.5 and its apex 17.5 kPa away in tension:
+/// the constant stress of a triangle near the wall strays past the apex, those zones fail in
+/// tension, and the wall closes 19 % too much on zonings from ×1 to ×0.25 at the wall, explicit
+/// or implicit (docs/validation.md). Supported, the wall's minor stress stays clear of the apex.
+/// Itasca's own verification of this hole supports it too (p_i = p0/6).
+pub const POOR_SUPPORT: f64 = 0.3e6;
+
+/// The poor rock unsupported: the closed form's wall at σ3 = 0 (reported, not a bar; see
+/// `POOR_SUPPORT`).
+pub const POOR_UNSUPPORTED: Rock = Rock {
+    pi: 0.0,
+    ..ROCKS[2]
+};
 
 /// The shipped Kirsch geometry (a = 1 m in a 40 m square, its graded zoning scaled by `factor`)
 /// in Hoek–Brown `rock` (D = 0) under its p0, with the closed form.
@@ -289,6 +309,13 @@ pub fn scene(kirsch: &Scene, factor: f64, rock: &Rock) -> (Scene, CarranzaTorres
     s.in_situ.sxx = -rock.p0;
     s.in_situ.syy = -rock.p0;
     s.in_situ.szz = Some(-rock.p0);
+    if rock.pi > 0.0 {
+        let wall = s.excavations[0].name.clone();
+        s.boundary.push(
+            serde_json::from_value(serde_json::json!({ "part": wall, "normal_stress": -rock.pi }))
+                .expect("valid boundary condition"),
+        );
+    }
     // The bundled models' ratio: on the zoning refined through the plastic zone (the default)
     // the implicit iterations of the fair rock's first load step stall between 2e-6 and 1e-5
     // and do not reach 1e-6 in four cuts of 2 000 iterations (measured); at 1e-5 they converge
@@ -303,7 +330,7 @@ pub fn scene(kirsch: &Scene, factor: f64, rock: &Rock) -> (Scene, CarranzaTorres
         .radius;
     let closed = CarranzaTorres::new(
         radius,
-        (rock.p0, 0.0),
+        (rock.p0, rock.pi),
         rock.sigma_ci,
         adit::law::hoek_brown_constants(rock.gsi, rock.mi, 0.0),
         rock.dilation_deg.to_radians(),
@@ -325,12 +352,13 @@ pub fn run(
 ) -> anyhow::Result<CaseReport> {
     let (sc, exact) = scene(kirsch, factor, rock);
     let case = format!(
-        "Hoek–Brown hole GSI {}, mi {}, σci {} MPa, ψ = {}°, p0 = {} MPa, Rp = {:.3} m (×{factor}){}{}",
+        "Hoek–Brown hole GSI {}, mi {}, σci {} MPa, ψ = {}°, p0 = {} MPa, pi = {} MPa, Rp = {:.3} m (×{factor}){}{}",
         rock.gsi,
         rock.mi,
         rock.sigma_ci / 1e6,
         rock.dilation_deg,
         rock.p0 / 1e6,
+        rock.pi / 1e6,
         exact.plastic_radius(),
         crate::release_suffix(release, method),
         crate::method_suffix(method)
@@ -493,6 +521,21 @@ mod coarse {
         assert!(r.errors["wall_displacement"] < 0.15, "{:?}", r.errors);
         let r = super::run(&kirsch, 1.0, &super::ROCKS[1], SolveMethod::Implicit, 16).unwrap();
         eprintln!("{}: {:?}", r.case, r.errors);
+        assert!(r.errors["plastic_radius"] < 0.03, "{:?}", r.errors);
+        assert!(r.errors["wall_displacement"] < 0.03, "{:?}", r.errors);
+    }
+
+    /// The poor rock's hole under its support pressure (0.3 MPa, Rp 2.26 a) on the shipped
+    /// zoning as written, released slowly: within 3 % (measured +0.02 % in closure). Unsupported
+    /// it closes 11 % too much there (`POOR_SUPPORT`).
+    #[test]
+    fn the_poor_rock_supported_follows_carranza_torres() {
+        let mut kirsch = crate::shipped_kirsch().unwrap();
+        kirsch.zoning.plastic_depth = adit::scene::PlasticDepth::OFF;
+        let ramp = crate::bundled::QUASI_STATIC_RAMP;
+        let r = super::run(&kirsch, 1.0, &super::ROCKS[2], SolveMethod::Explicit, ramp).unwrap();
+        eprintln!("{}: {:?}", r.case, r.errors);
+        assert!(r.case.contains("pi = 0.3 MPa"), "{}", r.case);
         assert!(r.errors["plastic_radius"] < 0.03, "{:?}", r.errors);
         assert!(r.errors["wall_displacement"] < 0.03, "{:?}", r.errors);
     }
