@@ -316,9 +316,12 @@ impl HoekBrown {
             return self.solve_one(PLANES[*plane], p, tol);
         }
         let n = set.len();
-        let dn: Vec<Vector3<f64>> = (set.iter())
-            .map(|&i| self.elastic_times(&self.flow(PLANES[i])))
-            .collect();
+        // D n of each plane, on the stack: the explicit cycle returns zones here.
+        let mut dn_all = [Vector3::zeros(); 3];
+        for (d, &i) in dn_all.iter_mut().zip(set) {
+            *d = self.elastic_times(&self.flow(PLANES[i]));
+        }
+        let dn = &dn_all[..n];
         let stress = |mu: &Vector3<f64>| {
             let mut q = *p;
             for (b, d) in dn.iter().enumerate() {
