@@ -19,7 +19,7 @@
 use adit::Scene;
 use adit::scene::{SolveMethod, ZoneLawKind};
 
-use crate::kirsch_case::scaled;
+use crate::kirsch_case::{scaled, support_wall};
 use crate::report::CaseReport;
 use crate::salencon::{ClosedHole, ElasticStrain, elastic_zone_stress, measure_hole, wall_of};
 
@@ -310,13 +310,7 @@ pub fn scene(kirsch: &Scene, factor: f64, rock: &Rock) -> (Scene, CarranzaTorres
     s.in_situ.sxx = -rock.p0;
     s.in_situ.syy = -rock.p0;
     s.in_situ.szz = Some(-rock.p0);
-    if rock.pi > 0.0 {
-        let wall = s.excavations[0].name.clone();
-        s.boundary.push(
-            serde_json::from_value(serde_json::json!({ "part": wall, "normal_stress": -rock.pi }))
-                .expect("valid boundary condition"),
-        );
-    }
+    support_wall(&mut s, rock.pi);
     // The bundled models' ratio: on the zoning refined through the plastic zone (the default)
     // the implicit iterations of the fair rock's first load step stall between 2e-6 and 1e-5
     // and do not reach 1e-6 in four cuts of 2 000 iterations (measured); at 1e-5 they converge

@@ -55,6 +55,18 @@ pub fn closed_form(scene: &Scene) -> anyhow::Result<Kirsch> {
     })
 }
 
+/// Press the wall of the scene's first excavation with a support pressure `pi` (Pa, compression
+/// positive; nothing for 0): a normal stress on its boundary part.
+pub fn support_wall(s: &mut Scene, pi: f64) {
+    if pi > 0.0 {
+        let wall = s.excavations[0].name.clone();
+        s.boundary.push(
+            serde_json::from_value(serde_json::json!({ "part": wall, "normal_stress": -pi }))
+                .expect("valid boundary condition"),
+        );
+    }
+}
+
 /// Refine a scene's zoning uniformly by `factor` (< 1 is finer): edge lengths and grading scale
 /// together, so h(d) scales everywhere; the hole polygon gets about one segment per wall zone.
 /// At a factor other than 1 the plastic zone is not refined further (`zoning.plastic_depth` 0):

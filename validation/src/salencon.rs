@@ -28,7 +28,7 @@ use adit::scene::{Stage, ZoneLawKind};
 use adit::setup::setup;
 use adit::stage::Staging;
 
-use crate::kirsch_case::scaled;
+use crate::kirsch_case::{scaled, support_wall};
 use crate::report::CaseReport;
 
 /// The closed form of one case.
@@ -251,13 +251,7 @@ pub fn scene(kirsch: &Scene, factor: f64, pi: f64, rock: &Rock) -> (Scene, Salen
     s.solve.max_cycles = 400_000;
     // The implicit solve's initial-stiffness iterations, where a method asks for it.
     s.solve.max_iterations = 2_000;
-    if pi > 0.0 {
-        let wall = s.excavations[0].name.clone();
-        s.boundary.push(
-            serde_json::from_value(serde_json::json!({ "part": wall, "normal_stress": -pi }))
-                .expect("valid boundary condition"),
-        );
-    }
+    support_wall(&mut s, pi);
     let radius = s.excavations[0]
         .circle
         .as_ref()

@@ -12,7 +12,8 @@ fn salencon_sweep_section(md: &mut String, rows: &[salencon::SweepRow]) {
          The hole of the cases above (E = 10 GPa) in six other rocks, two of them dilatant, on the \
          shipped mesh as written (×1, `zoning.plastic_depth` 0: a refinement study, the default \
          zoning's refinement of the plastic zone is the plastic-zoning section's) and one with zones \
-         half the size (×0.5), with plain triangles and with `zoning.mixed`. Closure: u_h / u − 1 at the wall (positive: too much closure) against \
+         half the size (×0.5), with plain triangles and with `zoning.mixed`. Closure: u_h / u − 1 \
+         at the wall (positive: too much closure) against \
          Salençon's closed form, released at once (explicit cycles) and slowly (the implicit \
          solve in 16 load steps: the closed form's quasi-static path, which the explicit solve \
          released at once leaves by overshooting dynamically; on the coarser mesh that overshoot \
