@@ -134,7 +134,9 @@ impl Case for Salencon {
          shear; `stress_l2`: area-weighted L2 of (σr, σθ) over zones with centroid r ≤ 3Rp; \
          `wall_displacement`: mean radial displacement of the wall nodes against u(a) from the compatibility \
          equation du/dr + Nψ u/r = ε_r^e + Nψ ε_θ^e (flow rule ε_r^p = −Nψ ε_θ^p, elastic strains of the \
-         closed-form stresses) integrated from the elastic solution at Rp. The last row carries a support \
+         closed-form stresses) integrated from the elastic solution at Rp; `wall_spread` (a measure, not \
+         an error): the wall nodes' largest minus smallest radial displacement over their mean, 0 for an \
+         axisymmetric answer. The last row carries a support \
          pressure pi = 2 MPa on the wall. Bars (issue 4): plastic radius and wall displacement within 3 % on the \
          shipped mesh (×1).\n"
         );
