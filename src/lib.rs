@@ -22,6 +22,7 @@ pub mod scene;
 pub mod setup;
 pub mod solve;
 pub mod stage;
+pub mod strength_reduction;
 pub mod support;
 pub mod sweep;
 mod vector_state;

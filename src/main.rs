@@ -206,6 +206,9 @@ fn run(
             if closure.is_empty() { "" } else { ", " },
             closure.join(", ")
         )?;
+        if let Some(f) = &st.factor_of_safety {
+            say!("stage '{}': {}", st.name, f.describe())?;
+        }
     }
     say!("results in {}", result.out_dir.display())?;
     if s.status == Status::Interrupted.label() {
@@ -251,6 +254,7 @@ fn check(scene_path: &Path) -> anyhow::Result<()> {
         ),
     ];
     let mut built = setup_meshed(&scene, meshed)?;
+    adit::run::refuse_before_solving(&built.plan, &built.model)?;
     let cost = predicted_cost(&scene, &mut built.model)?;
     let mut out = std::io::stdout().lock();
     for line in lines.into_iter().chain([cost]) {

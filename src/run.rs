@@ -12,9 +12,11 @@ use crate::output::atomic::write_atomic;
 use crate::output::{FarFieldSummary, OutputWriter, StageSummary, Summary, measured};
 use crate::scene::Scene;
 use crate::scene::{SolveMethod, SolveMode};
+use crate::setup::StagePlan;
 use crate::setup::{Plan, Setup, setup};
-use crate::solve::{HistoryRow, Observer, Solution, Solver, Status};
+use crate::solve::{HistoryRow, Observer, Quiet, Solution, Solver, Status};
 use crate::stage::Staging;
+use crate::strength_reduction::{self, FactorOfSafety, Searched};
 
 /// The result of a run, with the model in its final state.
 pub struct RunResult {
@@ -164,6 +166,116 @@ fn stage_method(plan: &Plan, i: usize, model: &Model) -> anyhow::Result<Method> 
     })
 }
 
+/// What a run refuses once the model is built, before any solve (`adit check` refuses it too): a
+/// stage asking the implicit path of a model it cannot solve, a factor of safety asked of laws
+/// that have no strength reduction.
+pub fn refuse_before_solving(plan: &Plan, model: &Model) -> anyhow::Result<()> {
+    for i in 0..plan.stages.len() {
+        stage_method(plan, i, model)?;
+        strength_reduction_refused(plan, i, model)?;
+    }
+    Ok(())
+}
+
+/// An error naming `stages[i].factor_of_safety` when stage `i` of `plan` asks a factor of safety
+/// of laws that have no strength reduction (the laws in force at that stage).
+fn strength_reduction_refused(plan: &Plan, i: usize, model: &Model) -> anyhow::Result<()> {
+    if plan.stages[i].factor_of_safety.is_none() {
+        return Ok(());
+    }
+    match strength_reduction::refusal_at(&model.materials, &plan.stages[..=i]) {
+        Some(why) => anyhow::bail!("stages[{i}].factor_of_safety: {why}"),
+        None => Ok(()),
+    }
+}
+
+/// What a stage's factor-of-safety search left: the factor, the mechanism's state, whether a
+/// signal stopped it.
+#[derive(Default)]
+struct StageFos {
+    found: Option<FactorOfSafety>,
+    mechanism: Option<Vec<u8>>,
+    interrupted: bool,
+}
+
+/// Search the factor of safety `stage` asks for (none when it asks none or its solve failed),
+/// each trial solved without output along the stage's path: implicitly (its non-convergence the
+/// criterion, never handed over to explicit cycling) or by explicit cycling.
+fn stage_factor_of_safety(
+    model: &mut Model,
+    stage: &StagePlan,
+    method: &Method,
+    solution: &Solution,
+    analysis: &mut implicit::Analysis,
+) -> anyhow::Result<StageFos> {
+    let Some(spec) = &stage.factor_of_safety else {
+        return Ok(StageFos::default());
+    };
+    if !matches!(solution.status, Status::Converged | Status::CycleLimit) {
+        return Ok(StageFos::default());
+    }
+    let solve_spec = &stage.solve;
+    let solve = |model: &mut Model| {
+        let mut solver = Solver::new(model, solve_spec, 0);
+        match method {
+            Method::Implicit => {
+                let (cycle, params) = (&mut solver.cycle, &solver.params);
+                let solved = implicit::solve_driven(
+                    model,
+                    cycle,
+                    params,
+                    solve_spec,
+                    &[],
+                    analysis,
+                    &mut Quiet,
+                );
+                (solved.solution, solved.moving)
+            }
+            _ => {
+                let solution = solver.solve(model, &mut Quiet);
+                let moving = (solution.status == Status::Converged)
+                    .then(|| {
+                        let dt = solver.params.dt;
+                        crate::cycle::drift::still_moving(model, solution.cycles, dt)
+                    })
+                    .flatten();
+                (solution, moving)
+            }
+        }
+    };
+    let stable_at_one = solution.status == Status::Converged;
+    Ok(
+        match strength_reduction::search(model, spec, stable_at_one, solve)? {
+            Searched::Found(found, mechanism) => StageFos {
+                found: Some(found),
+                mechanism,
+                interrupted: false,
+            },
+            Searched::Interrupted => StageFos {
+                interrupted: true,
+                ..StageFos::default()
+            },
+        },
+    )
+}
+
+/// Write the mechanism at the smallest unstable factor (`mechanism`, a saved state) as an output
+/// step, its displacements measured from the stage's equilibrium, and put the equilibrium back.
+fn write_mechanism(
+    model: &mut Model,
+    writer: &mut OutputWriter,
+    mechanism: &[u8],
+    time: f64,
+) -> anyhow::Result<()> {
+    let mut equilibrium = Vec::new();
+    checkpoint::state::save(model, &mut equilibrium);
+    let at_rest = model.nodes.disp.clone();
+    strength_reduction::restore(model, mechanism)?;
+    model.nodes.origin = at_rest;
+    writer.write_step(model, time)?;
+    strength_reduction::restore(model, &equilibrium)
+}
+
 /// [`run_scene`] once its folder is open.
 fn build_solve_write(
     scene: &Scene,
@@ -178,10 +290,7 @@ fn build_solve_write(
     let mut seconds = crate::cycle::StageSeconds::default();
     let mut output_seconds = 0.0;
     let mut last: Option<(Solver, Solution, usize)> = None;
-    // A stage asking the implicit path of a model it cannot solve is refused before any solve.
-    for i in 0..plan.stages.len() {
-        stage_method(plan, i, model)?;
-    }
+    refuse_before_solving(plan, model)?;
     // Going on from a checkpoint: the stages before replayed (what the state does not hold),
     // then the state put in.
     let so_far = match resumed {
@@ -285,6 +394,7 @@ fn build_solve_write(
         if let Some(e) = writing.error {
             return Err(e);
         }
+        let fos = stage_factor_of_safety(model, stage, &method, &solution, &mut analysis)?;
         history.extend(solution.history.iter().map(|r| HistoryRow {
             cycle: r.cycle + cycles,
             ..*r
@@ -303,6 +413,7 @@ fn build_solve_write(
             final_ratio: measured(solution.final_ratio),
             support_fraction: staging.support_fraction(),
             closure: staging.closures(model, plan),
+            factor_of_safety: fos.found,
             moving: match (&solution.status, spec.mode) {
                 (Status::Converged, SolveMode::Static) => {
                     crate::cycle::drift::still_moving(model, solution.cycles, solver.params.dt)
@@ -318,9 +429,12 @@ fn build_solve_write(
         });
         let t = Instant::now();
         let failed = matches!(solution.status, Status::Failed(_));
-        let interrupted = solution.status == Status::Interrupted;
+        let interrupted = solution.status == Status::Interrupted || fos.interrupted;
         if !failed {
             writer.write_step(model, cycles as f64)?;
+        }
+        if let Some(mechanism) = &fos.mechanism {
+            write_mechanism(model, writer, mechanism, cycles as f64)?;
         }
         if !failed && !interrupted && scene.output.checkpoints {
             let run = RunSoFar {

@@ -399,3 +399,47 @@ fn check_fails_on_first_cycles_that_blow_up() {
     let err = refused(&s, "the scene's first cycles fail");
     assert!(err.contains("unstable"), "{err}");
 }
+
+/// A factor of safety asked out of range, of a dynamic stage or of laws without a strength
+/// reduction, and a residual cohesion above the cohesion or on another law: refused naming the
+/// field, before any solve (`adit check` refuses what `adit run` would).
+#[test]
+fn a_factor_of_safety_that_cannot_be_searched_is_refused() {
+    let with_fos = |model_name: &str, fos: Value| {
+        let mut s = model(model_name);
+        s["stages"][2]["factor_of_safety"] = fos;
+        s
+    };
+    refused(
+        &with_fos("tunnel", json!({ "tolerance": 0 })),
+        "stages[2].factor_of_safety.tolerance",
+    );
+    refused(
+        &with_fos("tunnel", json!({ "max_factor": 1 })),
+        "stages[2].factor_of_safety.max_factor",
+    );
+    let extra = with_fos("tunnel", json!({ "tolerance": 0.01, "extra": 1 }));
+    let (code, err) = check_text(&extra.to_string(), "fos_extra");
+    assert!(
+        code == Some(1) && err.contains("unknown field `extra`"),
+        "{err}"
+    );
+    let mut dynamic = with_fos("tunnel", json!({}));
+    dynamic["stages"][2]["solve"] = json!({ "mode": "dynamic", "max_cycles": 100 });
+    refused(&dynamic, "stages[2].factor_of_safety");
+    let err = refused(
+        &with_fos("tunnel_hb", json!({})),
+        "stages[2].factor_of_safety",
+    );
+    assert!(
+        err.contains("material 'rock'") && err.contains("Hoek–Brown"),
+        "{err}"
+    );
+    let mut residual = model("tunnel");
+    residual["joint_materials"]["joint"]["residual_cohesion"] = json!(3e5);
+    refused(&residual, "joint_materials.joint.residual_cohesion");
+    residual["joint_materials"]["joint"]["residual_cohesion"] = json!(1e5);
+    residual["joint_materials"]["joint"]["law"] = json!("glued");
+    residual["joint_materials"]["joint"]["cohesion"] = json!(0);
+    refused(&residual, "joint_materials.joint.residual_cohesion");
+}

@@ -21,12 +21,14 @@ use crate::Scene;
 use crate::implicit::Cost;
 use crate::model::Model;
 use crate::output::StageSummary;
+use crate::output::factor_of_safety::{FactorOfSafety, Trial};
 use crate::solve::HistoryRow;
 
 /// The format's version: a checkpoint of another version is refused. 2: each stage's summary
 /// holds the block still moving at its convergence (`StageSummary::moving`). 3: a joint's state
-/// holds its shear path and mobilized JRC (the Barton–Bandis law).
-pub const VERSION: u32 = 3;
+/// holds its shear path and mobilized JRC (the Barton–Bandis law). 4: each stage's summary holds
+/// its factor of safety (`StageSummary::factor_of_safety`).
+pub const VERSION: u32 = 4;
 
 const MAGIC: &[u8; 8] = b"ADITCKPT";
 
@@ -138,6 +140,7 @@ impl Codec for StageSummary {
         let closure: Vec<(String, f64)> = self.closure.clone().into_iter().collect();
         put(out, &closure);
         put(out, &self.moving);
+        put(out, &self.factor_of_safety);
     }
     fn get(r: &mut Reader) -> anyhow::Result<Self> {
         let name = String::get(r)?;
@@ -147,6 +150,7 @@ impl Codec for StageSummary {
         let support_fraction = f64::get(r)?;
         let closure: Vec<(String, f64)> = Codec::get(r)?;
         let moving = Option::<String>::get(r)?;
+        let factor_of_safety = Codec::get(r)?;
         Ok(StageSummary {
             name,
             cycles,
@@ -155,6 +159,43 @@ impl Codec for StageSummary {
             support_fraction,
             closure: closure.into_iter().collect::<BTreeMap<_, _>>(),
             moving,
+            factor_of_safety,
+        })
+    }
+}
+
+impl Codec for FactorOfSafety {
+    fn put(&self, out: &mut Vec<u8>) {
+        put(out, &self.factor);
+        put(out, &self.unstable);
+        put(out, &self.tolerance);
+        put(out, &self.trials);
+    }
+    fn get(r: &mut Reader) -> anyhow::Result<Self> {
+        Ok(FactorOfSafety {
+            factor: Codec::get(r)?,
+            unstable: Codec::get(r)?,
+            tolerance: Codec::get(r)?,
+            trials: Codec::get(r)?,
+        })
+    }
+}
+
+impl Codec for Trial {
+    fn put(&self, out: &mut Vec<u8>) {
+        put(out, &self.factor);
+        put(out, &self.stable);
+        put(out, &self.status);
+        put(out, &self.cycles);
+        put(out, &self.moving);
+    }
+    fn get(r: &mut Reader) -> anyhow::Result<Self> {
+        Ok(Trial {
+            factor: Codec::get(r)?,
+            stable: Codec::get(r)?,
+            status: Codec::get(r)?,
+            cycles: Codec::get(r)?,
+            moving: Codec::get(r)?,
         })
     }
 }

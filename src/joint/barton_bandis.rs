@@ -354,6 +354,12 @@ impl JointLaw for BartonBandis {
             self.shear_stiffness,
         )
     }
+
+    fn reduced(&self, _factor: f64) -> Result<Box<dyn JointLaw>, &'static str> {
+        Err(
+            "Barton–Bandis joints have no strength reduction yet (tan of the mobilized friction over F is to come)",
+        )
+    }
 }
 
 impl BartonBandis {

@@ -12,8 +12,11 @@ pub struct CoulombSlip {
     pub shear_stiffness: f64,
     /// tan φ of the friction angle φ (dimensionless; `tan_deg` converts from degrees).
     pub tan_friction: f64,
-    /// Cohesion c, Pa (lost once the joint fails).
+    /// Cohesion c, Pa (falls to `residual_cohesion` once the joint fails).
     pub cohesion: f64,
+    /// Cohesion after failure cr ≤ c, Pa (UDEC's residual cohesion; 0: the cohesion is lost; c:
+    /// a perfectly plastic joint, the limit-equilibrium joint).
+    pub residual_cohesion: f64,
     /// Tensile strength T, Pa (lost once the joint fails).
     pub tensile_strength: f64,
     /// tan ψ of the dilation angle ψ (dimensionless).
@@ -55,12 +58,26 @@ impl JointLaw for CoulombSlip {
         if committed.flags & FAILED == 0 && s.flags & FAILED != 0 {
             *s = committed;
             s.flags |= FAILED;
-            self.advance(s, dn, ds, Dilation::PlasticSlip(self.cohesion));
+            let lost = self.cohesion - self.residual_cohesion;
+            self.advance(s, dn, ds, Dilation::PlasticSlip(lost));
         }
     }
 
     fn stiffness(&self) -> (f64, f64) {
         (self.normal_stiffness, self.shear_stiffness)
+    }
+
+    /// c/F, tan φ/F, tan ψ at most the reduced tan φ, T/F.
+    fn reduced(&self, factor: f64) -> Result<Box<dyn JointLaw>, &'static str> {
+        let tan_friction = self.tan_friction / factor;
+        Ok(Box::new(CoulombSlip {
+            tan_friction,
+            cohesion: self.cohesion / factor,
+            residual_cohesion: self.residual_cohesion / factor,
+            tensile_strength: self.tensile_strength / factor,
+            tan_dilation: self.tan_dilation.min(tan_friction),
+            ..*self
+        }))
     }
 }
 
@@ -76,7 +93,7 @@ impl CoulombSlip {
     fn advance(&self, s: &mut JointState, dn: f64, ds: f64, dilation: Dilation) {
         let failed = s.flags & FAILED != 0;
         let (c, t) = if failed {
-            (0.0, 0.0)
+            (self.residual_cohesion, 0.0)
         } else {
             (self.cohesion, self.tensile_strength)
         };
@@ -143,8 +160,41 @@ mod tests {
             shear_stiffness: 5e9,
             tan_friction: tan_deg(30.0),
             cohesion: 1e5,
+            residual_cohesion: 0.0,
             tensile_strength: 5e4,
             tan_dilation: 0.0,
+        }
+    }
+
+    /// Reduced by F, a joint slips at (c − σn tan φ)/F and, failed, keeps cr/F of its residual
+    /// cohesion.
+    #[test]
+    fn a_reduced_joint_slips_at_its_strength_over_the_factor() {
+        let law = CoulombSlip {
+            residual_cohesion: 0.4e5,
+            ..joint()
+        };
+        for factor in [0.8, 1.0, 1.5, 3.0] {
+            let reduced = law.reduced(factor).unwrap();
+            let mut s = JointState {
+                normal: -1e6,
+                initial_normal: -1e6,
+                ..Default::default()
+            };
+            reduced.update(&mut s, 0.0, 1e-3);
+            let peak = (1e5 + 1e6 * tan_deg(30.0)) / factor;
+            assert!(
+                (s.shear - peak).abs() < 1e-9 * peak,
+                "{factor}: {}",
+                s.shear
+            );
+            reduced.update(&mut s, 0.0, 1e-3);
+            let residual = (0.4e5 + 1e6 * tan_deg(30.0)) / factor;
+            assert!(
+                (s.shear - residual).abs() < 1e-9 * residual,
+                "{factor}: {}",
+                s.shear
+            );
         }
     }
 
@@ -259,6 +309,7 @@ mod tests {
         let law = CoulombSlip {
             tan_dilation: tan_deg(10.0),
             cohesion: 0.0,
+            residual_cohesion: 0.0,
             ..joint()
         };
         let mut s = JointState {
@@ -281,6 +332,7 @@ mod tests {
         let law = CoulombSlip {
             tan_dilation: tan_deg(10.0),
             cohesion: 0.0,
+            residual_cohesion: 0.0,
             ..joint()
         };
         let start = JointState {

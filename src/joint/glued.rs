@@ -33,6 +33,11 @@ impl JointLaw for Glued {
     fn stiffness(&self) -> (f64, f64) {
         (self.normal_stiffness, self.shear_stiffness)
     }
+
+    /// A glued joint has no strength to reduce.
+    fn reduced(&self, _factor: f64) -> Result<Box<dyn JointLaw>, &'static str> {
+        Ok(Box::new(*self))
+    }
 }
 
 #[cfg(test)]

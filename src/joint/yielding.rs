@@ -106,6 +106,14 @@ impl JointLaw for ContinuouslyYielding {
              and the implicit path gives it each load step's whole increment at once",
         )
     }
+
+    /// Each contact carries its bounding friction φm in its state, which a reduced law would
+    /// not reduce.
+    fn reduced(&self, _factor: f64) -> Result<Box<dyn JointLaw>, &'static str> {
+        Err(
+            "the continuously yielding joint has no strength reduction yet (each contact carries its bounding friction)",
+        )
+    }
 }
 
 #[cfg(test)]

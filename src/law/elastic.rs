@@ -33,6 +33,11 @@ pub fn plane_strain_moduli(bulk: f64, shear: f64) -> (f64, f64) {
 }
 
 impl ZoneLaw for Elastic {
+    /// Elastic rock has no strength to reduce.
+    fn reduced(&self, _factor: f64) -> Result<Box<dyn ZoneLaw>, &'static str> {
+        Ok(Box::new(*self))
+    }
+
     /// Hooke's law in plane strain (Δεzz = 0), with α1 = K + 4G/3 and α2 = K − 2G/3:
     /// Δσxx = α1 Δεxx + α2 Δεyy, Δσyy = α2 Δεxx + α1 Δεyy, Δσzz = α2 (Δεxx + Δεyy), Δσxy = G Δγxy
     /// (Itasca, FLAC *Theory and Background*, §1.3.3).

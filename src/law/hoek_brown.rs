@@ -439,6 +439,12 @@ impl HoekBrown {
 }
 
 impl ZoneLaw for HoekBrown {
+    fn reduced(&self, _factor: f64) -> Result<Box<dyn ZoneLaw>, &'static str> {
+        Err(
+            "Hoek–Brown zones have no strength reduction yet (the generalized method of Hammah et al. 2005 is to come)",
+        )
+    }
+
     fn update(&self, s: &mut Stress, state: &mut u8, plastic: &mut f64, de: &StrainIncrement) {
         self.advance(s, state, plastic, de);
     }

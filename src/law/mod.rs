@@ -40,6 +40,17 @@ pub trait ZoneLaw: Send + Sync + CopyZoneLaw {
     fn moduli(&self) -> (f64, f64);
     /// Mass density, kg/m³.
     fn density(&self) -> f64;
+    /// The law with its strength divided by the factor F > 0 (the factor of safety's strength
+    /// reduction, `strength_reduction`): a Coulomb criterion's c/F and tan φ/F
+    /// ([`reduced_friction`]), the dilation capped at the reduced friction, a tensile strength
+    /// over F; a law without strength is itself. `Err` says why a law has no reduction yet.
+    fn reduced(&self, factor: f64) -> Result<Box<dyn ZoneLaw>, &'static str>;
+}
+
+/// The friction angle φ_F (rad) of the strength reduction by F (Dawson, Roth & Drescher 1999,
+/// Géotechnique 49(6)): tan φ_F = tan φ / F, φ in rad.
+pub fn reduced_friction(friction: f64, factor: f64) -> f64 {
+    (friction.tan() / factor).atan()
 }
 
 /// A boxed copy of a zone law: a stage plan keeps the law it gives a material and the catalogue

@@ -26,7 +26,7 @@
 
 use super::corner_return::Surface;
 use super::principal::{Principal, state_after};
-use super::{Elastic, StrainIncrement, Stress, ZoneLaw, plane_strain_moduli};
+use super::{Elastic, StrainIncrement, Stress, ZoneLaw, plane_strain_moduli, reduced_friction};
 
 /// Zone state bit: yielding in shear now.
 pub const SHEAR_NOW: u8 = 1;
@@ -91,6 +91,23 @@ impl MohrCoulomb {
     /// confinement σ3 (Pa, compression positive), Pa: the peak envelope, before any softening.
     pub fn peak_deviator(&self, confinement: f64) -> f64 {
         self.intact.k + (self.intact.n_phi - 1.0) * confinement
+    }
+
+    /// The law with its strength divided by `factor` F (`ZoneLaw::reduced`): c/F, tan φ/F (the
+    /// softening table's too), ψ at most the reduced φ, σt/F.
+    pub fn reduced_by(&self, factor: f64) -> MohrCoulomb {
+        let friction = reduced_friction(self.friction, factor);
+        let mut law = MohrCoulomb::new(
+            self.elastic,
+            self.cohesion / factor,
+            friction.to_degrees(),
+            self.dilation.min(friction).to_degrees(),
+            self.tension / factor,
+        );
+        law.softening = (self.softening.iter())
+            .map(|&(e, c, phi)| (e, c / factor, reduced_friction(phi, factor)))
+            .collect();
+        law
     }
 
     /// Cohesion (Pa) and friction (rad) at plastic shear strain `eps`.
@@ -222,6 +239,12 @@ fn single_plane_return(surface: &Surface, p: &mut [f64; 3]) -> (u8, f64) {
 }
 
 impl ZoneLaw for MohrCoulomb {
+    /// c/F, φ_F with tan φ_F = tan φ / F, ψ capped at φ_F, σt/F (capped at the reduced apex by
+    /// `new`), every point of the softening table reduced alike (`MohrCoulomb::reduced_by`).
+    fn reduced(&self, factor: f64) -> Result<Box<dyn ZoneLaw>, &'static str> {
+        Ok(Box::new(self.reduced_by(factor)))
+    }
+
     /// FLAC's update: the single-plane return (`advance`).
     fn update(&self, s: &mut Stress, state: &mut u8, plastic: &mut f64, de: &StrainIncrement) {
         self.advance(s, state, plastic, de, false);
@@ -254,6 +277,37 @@ mod tests {
             0.0,
             0.5e6,
         )
+    }
+
+    /// Reduced by F, the peak's Mohr circle at every confinement touches the envelope
+    /// τ = (c + σn tan φ)/F (compression positive); the dilation is capped at the reduced
+    /// friction, the tension and the softening table follow.
+    #[test]
+    fn a_reduced_law_has_the_envelope_over_the_factor() {
+        let mut law = MohrCoulomb::new(
+            Elastic::from_young(10e9, 0.25, 2500.0),
+            1e6,
+            40.0,
+            35.0,
+            0.5e6,
+        );
+        law.softening = vec![(0.01, 0.2e6, 36f64.to_radians())];
+        for factor in [0.7, 1.0, 1.3, 2.0, 5.0] {
+            let r = law.reduced_by(factor);
+            let tan = 40f64.to_radians().tan() / factor;
+            assert!((r.friction.tan() - tan).abs() < 1e-14, "{factor}");
+            for sigma3 in [0.0, 1e6, 5e6, 20e6] {
+                let q = r.peak_deviator(sigma3);
+                let centre = sigma3 + 0.5 * q;
+                let distance = (1e6 / factor + centre * tan) * (tan.atan()).cos();
+                assert!((distance - 0.5 * q).abs() < 1e-9 * q, "{factor} {sigma3}");
+            }
+            assert!(r.dilation <= r.friction && r.dilation <= law.dilation);
+            assert!((r.tension - (0.5e6 / factor).min(1e6 / factor / tan)).abs() < 1e-6);
+            let (c, phi) = r.strength(0.02);
+            assert!((c - 0.2e6 / factor).abs() < 1e-6);
+            assert!((phi.tan() - 36f64.to_radians().tan() / factor).abs() < 1e-14);
+        }
     }
 
     /// Principal stresses, ascending.

@@ -26,7 +26,9 @@
 use super::Elastic;
 use super::mohr_coulomb::{SHEAR_NOW, SHEAR_PAST, TENSION_NOW, TENSION_PAST};
 use super::principal::state_after;
-use super::{HoekBrown, MohrCoulomb, StrainIncrement, Stress, ZoneLaw, plane_strain_moduli};
+use super::{
+    HoekBrown, MohrCoulomb, StrainIncrement, Stress, ZoneLaw, plane_strain_moduli, reduced_friction,
+};
 
 /// The weak plane's state bits are the matrix's (`SHEAR_NOW` … `TENSION_PAST`) shifted by this.
 const PLANE_SHIFT: u32 = 4;
@@ -264,6 +266,29 @@ impl ZoneLaw for UbiquitousJoint {
 
     fn density(&self) -> f64 {
         self.elastic.density
+    }
+
+    /// The matrix reduced as its own law is (a Hoek–Brown matrix not yet), the plane as a
+    /// Mohr–Coulomb criterion: cj/F, tan φj/F, ψj capped at the reduced φj, σtj/F.
+    fn reduced(&self, factor: f64) -> Result<Box<dyn ZoneLaw>, &'static str> {
+        let matrix = match &self.matrix {
+            Matrix::Elastic(e) => Matrix::Elastic(*e),
+            Matrix::MohrCoulomb(m) => Matrix::MohrCoulomb(m.reduced_by(factor)),
+            Matrix::HoekBrown(_) => {
+                return Err(
+                    "a ubiquitous-joint zone with a Hoek–Brown matrix has no strength reduction yet",
+                );
+            }
+        };
+        let p = &self.plane;
+        let friction = reduced_friction(p.friction, factor);
+        Ok(Box::new(UbiquitousJoint::new(
+            matrix,
+            p.dip.to_degrees(),
+            p.cohesion / factor,
+            (friction.to_degrees(), p.dilation.min(friction).to_degrees()),
+            p.tension / factor,
+        )))
     }
 }
 

@@ -7,6 +7,7 @@
 
 pub mod arrays;
 pub mod atomic;
+pub mod factor_of_safety;
 pub mod joints_vtu;
 pub mod lock;
 pub mod plots;
@@ -378,6 +379,10 @@ pub struct StageSummary {
     /// stopped at its cycle limit, named with its speed (`cycle::drift`); absent when none is.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub moving: Option<String>,
+    /// The stage's factor of safety by strength reduction (`stages[i].factor_of_safety`), with
+    /// its trials; absent when not asked.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub factor_of_safety: Option<factor_of_safety::FactorOfSafety>,
 }
 
 /// Contents of `summary.json`.
@@ -540,6 +545,7 @@ mod tests {
             support_fraction: 0.0,
             closure: Default::default(),
             moving: None,
+            factor_of_safety: None,
         };
         let json = serde_json::to_string(&stage).unwrap();
         assert!(

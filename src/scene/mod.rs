@@ -131,6 +131,33 @@ pub struct Stage {
     /// How to solve this stage (default: the scene's `solve`).
     #[serde(default)]
     pub solve: Option<SolveSpec>,
+    /// After its solve, search the stage's factor of safety by strength reduction
+    /// (`strength_reduction`); default none.
+    #[serde(default)]
+    pub factor_of_safety: Option<FactorOfSafetySpec>,
+}
+
+/// How a stage's factor of safety is searched (`stages[i].factor_of_safety`).
+#[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FactorOfSafetySpec {
+    /// The search stops when the smallest unstable factor exceeds the largest stable one by at
+    /// most this fraction of it (dimensionless, in (0, 0.5]; default 0.005).
+    #[serde(default = "FactorOfSafetySpec::default_tolerance")]
+    pub tolerance: f64,
+    /// The largest factor tried (dimensionless, in (1, 1000]; default 100); its inverse is the
+    /// smallest. A stage stable at it reports a factor of at least this.
+    #[serde(default = "FactorOfSafetySpec::default_max_factor")]
+    pub max_factor: f64,
+}
+
+impl FactorOfSafetySpec {
+    fn default_tolerance() -> f64 {
+        0.005
+    }
+    fn default_max_factor() -> f64 {
+        100.0
+    }
 }
 
 /// A zone material: isotropic elasticity, and the strength of the Mohr–Coulomb or the
@@ -468,9 +495,12 @@ pub struct JointMaterial {
     /// Friction angle, degrees (default 30).
     #[serde(default = "default_friction")]
     pub friction: f64,
-    /// Cohesion, Pa (default 0; lost once the joint fails).
+    /// Cohesion, Pa (default 0; falls to `residual_cohesion` once the joint fails).
     #[serde(default)]
     pub cohesion: f64,
+    /// The Coulomb law's cohesion after failure, Pa (default 0; at most `cohesion`).
+    #[serde(default)]
+    pub residual_cohesion: f64,
     /// Tensile strength, Pa (default 0; lost once the joint fails).
     #[serde(default)]
     pub tensile_strength: f64,

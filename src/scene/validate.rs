@@ -40,6 +40,35 @@ impl std::fmt::Display for Num {
     }
 }
 
+/// A stage's factor-of-safety search: its tolerance and largest factor in range, on a static
+/// solve (equilibrium is what a trial factor is judged by).
+fn validate_factor_of_safety(
+    p: &str,
+    fos: &super::FactorOfSafetySpec,
+    mode: SolveMode,
+) -> Result<(), SceneError> {
+    if !(fos.tolerance > 0.0 && fos.tolerance <= 0.5) {
+        return Err(invalid(
+            format!("{p}.tolerance"),
+            format!("must be in (0, 0.5], got {}", Num(fos.tolerance)),
+        ));
+    }
+    if !(fos.max_factor > 1.0 && fos.max_factor <= 1000.0) {
+        return Err(invalid(
+            format!("{p}.max_factor"),
+            format!("must be in (1, 1000], got {}", Num(fos.max_factor)),
+        ));
+    }
+    if mode != SolveMode::Static {
+        return Err(invalid(
+            p,
+            "a factor of safety is searched on a static solve (each trial factor is judged by \
+             whether the stage reaches equilibrium); this stage's `solve.mode` is dynamic",
+        ));
+    }
+    Ok(())
+}
+
 pub(super) fn invalid(path: impl Into<String>, reason: impl Into<String>) -> SceneError {
     SceneError::Invalid {
         path: path.into(),
@@ -335,8 +364,25 @@ fn validate_joint_material(p: &str, j: &JointMaterial) -> Result<(), SceneError>
             ));
         }
     }
+    if j.residual_cohesion != 0.0 && j.law != super::JointLawKind::Coulomb {
+        return Err(invalid(
+            format!("{p}.residual_cohesion"),
+            "belongs to the Coulomb law (`law: coulomb`)",
+        ));
+    }
+    if j.residual_cohesion > j.cohesion {
+        return Err(invalid(
+            format!("{p}.residual_cohesion"),
+            format!(
+                "must be at most cohesion ({}), got {}",
+                Num(j.cohesion),
+                Num(j.residual_cohesion)
+            ),
+        ));
+    }
     for (f, v) in [
         ("cohesion", j.cohesion),
+        ("residual_cohesion", j.residual_cohesion),
         ("tensile_strength", j.tensile_strength),
     ] {
         if !(v >= 0.0 && v.is_finite()) {
@@ -775,6 +821,10 @@ impl Scene {
                     format!("{p}.support_fraction"),
                     format!("must be in [0, 1], got {}", Num(st.support_fraction)),
                 ));
+            }
+            if let Some(fos) = &st.factor_of_safety {
+                let mode = st.solve.as_ref().unwrap_or(&self.solve).mode;
+                validate_factor_of_safety(&format!("{p}.factor_of_safety"), fos, mode)?;
             }
         }
         Ok(())

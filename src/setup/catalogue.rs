@@ -94,6 +94,7 @@ pub fn joint_law(j: &JointMaterial, path: &str) -> Result<Box<dyn JointLaw>, Sce
             shear_stiffness,
             tan_friction: tan_deg(j.friction),
             cohesion: j.cohesion,
+            residual_cohesion: j.residual_cohesion,
             tensile_strength: j.tensile_strength,
             tan_dilation: tan_deg(j.dilation),
         }),

@@ -64,6 +64,8 @@ pub struct StagePlan {
     pub reset_displacements: bool,
     /// How to solve this stage.
     pub solve: SolveSpec,
+    /// The factor of safety to search after the solve, if asked.
+    pub factor_of_safety: Option<crate::scene::FactorOfSafetySpec>,
 }
 
 /// The whole plan: the state before the first stage and the stages in order.
@@ -159,6 +161,7 @@ impl Plan {
                 support_fraction: st.support_fraction,
                 reset_displacements: st.reset_displacements,
                 solve: st.solve.clone().unwrap_or_else(|| scene.solve.clone()),
+                factor_of_safety: st.factor_of_safety,
             });
         }
         Ok(Plan {

@@ -101,6 +101,7 @@ pub fn run(
         shear_stiffness: STIFFNESS,
         tan_friction: mu,
         cohesion: 0.0,
+        residual_cohesion: 0.0,
         tensile_strength: 0.0,
         tan_dilation: 0.0,
     };

@@ -18,6 +18,7 @@ pub fn glued_scene(kirsch: &Scene, k: f64) -> Scene {
             shear_stiffness: k,
             friction: 45.0,
             cohesion: 0.0,
+            residual_cohesion: 0.0,
             tensile_strength: 0.0,
             dilation: 0.0,
             law: JointLawKind::Glued,

@@ -207,6 +207,7 @@ impl Slide {
             shear_stiffness: kn,
             tan_friction: mu,
             cohesion: 0.0,
+            residual_cohesion: 0.0,
             tensile_strength: 0.0,
             tan_dilation: 0.0,
         });

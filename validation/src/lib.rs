@@ -42,6 +42,7 @@ pub mod scaling;
 pub mod slivers;
 pub mod softening;
 pub mod stiff_joints;
+pub mod strength_reduction;
 pub mod triaxial;
 pub mod unstable;
 

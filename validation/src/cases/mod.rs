@@ -34,6 +34,7 @@ mod slivers;
 mod softening;
 mod spalling;
 mod stiff_joints;
+mod strength_reduction;
 mod tunnel;
 mod ubiquitous;
 mod unstable;
@@ -79,5 +80,6 @@ pub fn all() -> Vec<Box<dyn Case>> {
         Box::new(detection::Detection),
         Box::new(column::Column),
         Box::new(column_slide::ColumnSlide),
+        Box::new(strength_reduction::StrengthReduction),
     ]
 }

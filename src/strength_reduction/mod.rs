@@ -1,0 +1,313 @@
+//! Factor of safety by shear strength reduction (Dawson, Roth & Drescher 1999, Géotechnique
+//! 49(6):835; Griffiths & Lane 1999; UDEC's and FLAC's `solve fos`, RS2's critical SRF): every
+//! zone and joint law's strength divided by a trial factor F (`ZoneLaw::reduced`,
+//! `JointLaw::reduced`: c/F, tan φ/F), the stage solved again from its equilibrium at F = 1, and
+//! F bracketed, then bisected, between the largest factor found stable and the smallest found
+//! unstable, until they differ by at most `tolerance` × the stable one. The factor of safety is
+//! the largest stable factor.
+//!
+//! A trial is stable when its solve reaches the stage's equilibrium criterion (`solve.ratio`)
+//! within its limit with no block still sliding (`cycle::drift`: the ratio cannot see a block
+//! sliding at its joints' strength, which carries no unbalanced force). Explicitly that is `solve.max_cycles` cycles: past its factor of safety the
+//! rock's out-of-balance force does not fall, a mechanism accelerates and its displacement grows
+//! without bound (Dawson et al.'s non-convergence). Implicitly it is `solve.max_iterations` a
+//! load step with their cuts: past its factor of safety no displacement balances the loads and the
+//! iterations do not converge (Griffiths & Lane's criterion). A trial the monitor stops (a runaway,
+//! interpenetration: a mechanism moving fast) is unstable too.
+//!
+//! Each trial starts from the stage's equilibrium (`checkpoint::state`, saved once and put back),
+//! so trials do not accumulate each other's plastic strain; the stage's laws come back when the
+//! search ends. The state of the last unstable trial (the smallest unstable factor's, since each
+//! unstable trial lowers it) is kept: the mechanism, for output.
+
+use crate::checkpoint::codec::Reader;
+use crate::checkpoint::state;
+use crate::joint::JointLaw;
+use crate::law::ZoneLaw;
+use crate::model::{Materials, Model};
+pub use crate::output::factor_of_safety::{FactorOfSafety, Trial};
+use crate::scene::FactorOfSafetySpec;
+use crate::setup::StagePlan;
+use crate::solve::{Solution, Status};
+
+/// How a search ended.
+pub enum Searched {
+    /// The factor, and the model's state at the smallest unstable factor (the mechanism), if one
+    /// was found (`restore` puts it into the model).
+    Found(FactorOfSafety, Option<Vec<u8>>),
+    /// Ctrl-C or SIGTERM stopped a trial; the model is back at the stage's equilibrium.
+    Interrupted,
+}
+
+/// Why the laws of `materials` cannot be reduced: the first zone or joint material whose law has
+/// no strength reduction, named, with the law's reason; `None` when all can.
+pub fn refusal(materials: &Materials) -> Option<String> {
+    refusal_at(materials, &[])
+}
+
+/// [`refusal`] of the laws in force after `stages` changed those of `materials` (each stage's
+/// `materials` and `joint_materials`, in order).
+pub fn refusal_at(materials: &Materials, stages: &[StagePlan]) -> Option<String> {
+    let mut zone: Vec<&dyn ZoneLaw> = materials.zone.iter().map(|l| l.as_ref()).collect();
+    let mut joint: Vec<&dyn JointLaw> = materials.joint.iter().map(|l| l.as_ref()).collect();
+    for stage in stages {
+        for (m, law) in &stage.materials {
+            zone[m.0 as usize] = law.as_ref();
+        }
+        for (k, law) in &stage.joint_materials {
+            joint[*k as usize] = law.as_ref();
+        }
+    }
+    let zones = (zone.iter().zip(&materials.zone_names))
+        .map(|(law, name)| (law.reduced(1.0).err(), format!("material '{name}'")));
+    let joints = (joint.iter().zip(&materials.joint_names))
+        .map(|(law, name)| (law.reduced(1.0).err(), format!("joint material '{name}'")));
+    zones
+        .chain(joints)
+        .find_map(|(why, what)| why.map(|why| format!("{what}: {why}")))
+}
+
+/// Search the factor of safety of the stage `model` stands at (in equilibrium when `stable_at_one`,
+/// its own solve having converged) as the module says, each trial solved by `solve`, which also
+/// names the block still sliding when it converged, if one is (`cycle::drift`). The model
+/// ends at the stage's equilibrium with its own laws. `Err` when a law cannot be reduced
+/// (`refusal` says so before any solve).
+pub fn search(
+    model: &mut Model,
+    spec: &FactorOfSafetySpec,
+    stable_at_one: bool,
+    mut solve: impl FnMut(&mut Model) -> (Solution, Option<String>),
+) -> anyhow::Result<Searched> {
+    if let Some(why) = refusal(&model.materials) {
+        anyhow::bail!("factor_of_safety: {why}");
+    }
+    let mut equilibrium = Vec::new();
+    state::save(model, &mut equilibrium);
+    let laws = Laws::of(&model.materials);
+    let mut bracket = Bracket::new(stable_at_one, spec);
+    let (mut trials, mut mechanism) = (Vec::new(), None);
+    while let Some(factor) = bracket.next() {
+        restore(model, &equilibrium)?;
+        laws.reduced(factor).put(&mut model.materials);
+        let (solution, moving) = solve(model);
+        if solution.status == Status::Interrupted {
+            restore(model, &equilibrium)?;
+            laws.put(&mut model.materials);
+            return Ok(Searched::Interrupted);
+        }
+        let stable = solution.status == Status::Converged && moving.is_none();
+        if !stable {
+            let mut at = Vec::new();
+            state::save(model, &mut at);
+            mechanism = Some(at);
+        }
+        bracket.record(factor, stable);
+        trials.push(Trial {
+            factor,
+            stable,
+            status: solution.status.label().to_string(),
+            cycles: solution.cycles,
+            moving,
+        });
+    }
+    restore(model, &equilibrium)?;
+    laws.put(&mut model.materials);
+    let found = FactorOfSafety {
+        factor: bracket.stable,
+        unstable: bracket.unstable.is_finite().then_some(bracket.unstable),
+        tolerance: spec.tolerance,
+        trials,
+    };
+    Ok(Searched::Found(found, mechanism))
+}
+
+/// Put a state saved by `checkpoint::state::save` of this model back into it.
+pub fn restore(model: &mut Model, saved: &[u8]) -> anyhow::Result<()> {
+    state::restore(model, &mut Reader::new(saved))
+}
+
+/// The bracket [stable, unstable] of the factor of safety and the next factor to try: doubled
+/// from a stable start until unstable (at most `max_factor`), halved from an unstable one until
+/// stable (at least 1 / `max_factor`), then bisected until unstable − stable ≤ tolerance × stable.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Bracket {
+    /// The largest factor found stable (0: none yet).
+    stable: f64,
+    /// The smallest factor found unstable (∞: none yet).
+    unstable: f64,
+    tolerance: f64,
+    max_factor: f64,
+}
+
+impl Bracket {
+    fn new(stable_at_one: bool, spec: &FactorOfSafetySpec) -> Bracket {
+        let (stable, unstable) = if stable_at_one {
+            (1.0, f64::INFINITY)
+        } else {
+            (0.0, 1.0)
+        };
+        Bracket {
+            stable,
+            unstable,
+            tolerance: spec.tolerance,
+            max_factor: spec.max_factor,
+        }
+    }
+
+    /// The next factor to try, or `None` when the bracket is narrow enough or at its limits.
+    fn next(&self) -> Option<f64> {
+        if self.unstable.is_infinite() {
+            (self.stable < self.max_factor).then(|| (2.0 * self.stable).min(self.max_factor))
+        } else if self.stable == 0.0 {
+            let floor = 1.0 / self.max_factor;
+            (self.unstable > floor).then(|| (0.5 * self.unstable).max(floor))
+        } else {
+            let narrow = self.unstable - self.stable <= self.tolerance * self.stable;
+            (!narrow).then_some(0.5 * (self.stable + self.unstable))
+        }
+    }
+
+    fn record(&mut self, factor: f64, stable: bool) {
+        if stable {
+            self.stable = self.stable.max(factor);
+        } else {
+            self.unstable = self.unstable.min(factor);
+        }
+    }
+}
+
+/// Copies of a model's zone and joint laws.
+struct Laws {
+    zone: Vec<Box<dyn ZoneLaw>>,
+    joint: Vec<Box<dyn JointLaw>>,
+}
+
+impl Laws {
+    fn of(materials: &Materials) -> Laws {
+        Laws {
+            zone: materials.zone.iter().map(|l| l.boxed_copy()).collect(),
+            joint: materials.joint.iter().map(|l| l.boxed_copy()).collect(),
+        }
+    }
+
+    /// Every law with its strength divided by `factor` (`refusal` has checked that each can be).
+    fn reduced(&self, factor: f64) -> Laws {
+        let unreduced = "refusal checked every law";
+        Laws {
+            zone: (self.zone.iter())
+                .map(|l| l.reduced(factor).expect(unreduced))
+                .collect(),
+            joint: (self.joint.iter())
+                .map(|l| l.reduced(factor).expect(unreduced))
+                .collect(),
+        }
+    }
+
+    /// Give `materials` these laws (copies: `self` stays).
+    fn put(&self, materials: &mut Materials) {
+        materials.zone = self.zone.iter().map(|l| l.boxed_copy()).collect();
+        materials.joint = self.joint.iter().map(|l| l.boxed_copy()).collect();
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn spec(tolerance: f64) -> FactorOfSafetySpec {
+        FactorOfSafetySpec {
+            tolerance,
+            max_factor: 100.0,
+        }
+    }
+
+    /// The bracket of a stage whose true factor of safety is `fos` (stable at F ≤ fos): the
+    /// factors it tries and where it ends.
+    fn search_for(fos: f64, tolerance: f64) -> (Bracket, Vec<f64>) {
+        let mut b = Bracket::new(fos >= 1.0, &spec(tolerance));
+        let mut tried = Vec::new();
+        while let Some(f) = b.next() {
+            tried.push(f);
+            b.record(f, f <= fos);
+            assert!(tried.len() < 100, "{tried:?}");
+        }
+        (b, tried)
+    }
+
+    #[test]
+    fn the_bracket_closes_on_the_factor_within_its_tolerance() {
+        for fos in [0.013, 0.37, 0.999, 1.0, 1.2345, 3.0, 17.2, 99.0] {
+            let (b, tried) = search_for(fos, 0.005);
+            assert!(b.stable <= fos && fos < b.unstable, "{fos}: {b:?}");
+            assert!(b.unstable - b.stable <= 0.005 * b.stable, "{fos}: {b:?}");
+            assert!(tried.len() <= 20, "{fos}: {tried:?}");
+        }
+    }
+
+    /// A 1 m × 0.25 m rigid block (ρ 2 500 kg/m³) on a Coulomb joint over a fixed base, gravity
+    /// tilted by α = 30°, solved by `method`.
+    fn block_on_a_plane(method: &str, friction: f64, cohesion: f64) -> String {
+        let a = 30f64.to_radians();
+        format!(
+            r#"{{ "name": "block_{method}",
+            "materials": {{ "rock": {{ "density": 2500, "young": 10e9, "poisson": 0.25 }} }},
+            "region": {{ "polygon": [[0, 0], [10, 0], [10, 1], [3, 1], [3, 1.25], [2, 1.25], [2, 1], [0, 1]],
+                         "edge_names": ["bottom", "a", "b", "c", "d", "e", "f", "g"], "material": "rock" }},
+            "zoning": {{ "edge_at_excavation": 0.25, "edge_far": 0.25 }},
+            "joint_materials": {{ "plane": {{ "normal_stiffness": 1e10, "shear_stiffness": 1e10,
+                "friction": {friction}, "cohesion": {cohesion}, "residual_cohesion": {cohesion} }} }},
+            "joints": [{{ "from": [2, 1], "to": [3, 1], "material": "plane" }}],
+            "gravity": [{gx}, {gy}],
+            "blocks": {{ "regions": [{{ "at": [2.5, 1.125], "mode": "rigid" }}] }},
+            "boundary": [{{ "part": "bottom", "fix": "xy" }}],
+            "solve": {{ "ratio": 1e-6, "max_cycles": 20000, "method": "{method}" }},
+            "stages": [{{ "name": "fos", "factor_of_safety": {{ "tolerance": 0.005 }} }}] }}"#,
+            gx = 9.81 * a.sin(),
+            gy = -9.81 * a.cos(),
+        )
+    }
+
+    fn factor_of(text: &str, name: &str) -> FactorOfSafety {
+        let scene = crate::Scene::from_json(text, name).unwrap();
+        let out = std::env::temp_dir().join(format!("adit-test-fos-{name}"));
+        let r = crate::run_scene(&scene, &out, &mut crate::solve::Quiet).unwrap();
+        let _ = std::fs::remove_dir_all(&out);
+        assert_eq!(r.summary.status, "converged", "{name}");
+        r.summary.stages[0].factor_of_safety.clone().unwrap()
+    }
+
+    /// The block on a plane (Hoek & Bray's planar slide without water): FoS = (c A + W cos α
+    /// tan φ)/(W sin α), here with friction alone (φ 40°: 1.4534) and with a cohesion the joint
+    /// keeps when it slips (φ 30°, c = cr = 1.5 kPa: 1.4893); explicit and implicit bracket it
+    /// within the tolerance and agree.
+    #[test]
+    fn a_block_on_a_plane_has_its_limit_equilibrium_factor() {
+        let w = 2500.0 * 9.81 * 0.25;
+        let (sin, cos) = 30f64.to_radians().sin_cos();
+        for (friction, cohesion) in [(40.0f64, 0.0), (30.0, 1500.0)] {
+            let exact = (cohesion + w * cos * friction.to_radians().tan()) / (w * sin);
+            let mut found = Vec::new();
+            for method in ["explicit", "implicit"] {
+                let f = factor_of(&block_on_a_plane(method, friction, cohesion), method);
+                let unstable = f.unstable.unwrap();
+                assert!(
+                    f.factor <= exact * 1.001 && exact <= unstable * 1.001,
+                    "{f:?} {exact}"
+                );
+                assert!(unstable - f.factor <= 0.005 * f.factor, "{f:?}");
+                found.push(f.factor);
+            }
+            assert!((found[0] - found[1]).abs() <= 0.01 * found[0], "{found:?}");
+        }
+    }
+
+    #[test]
+    fn the_bracket_stops_at_its_limits() {
+        let (b, tried) = search_for(1e6, 0.005);
+        assert_eq!((b.stable, b.unstable), (100.0, f64::INFINITY));
+        assert_eq!(tried.last(), Some(&100.0));
+        let (b, _) = search_for(1e-6, 0.005);
+        assert_eq!(b.stable, 0.0);
+        assert!(b.unstable >= 0.01 && b.unstable < 0.02, "{b:?}");
+    }
+}
