@@ -443,3 +443,50 @@ fn a_factor_of_safety_that_cannot_be_searched_is_refused() {
     residual["joint_materials"]["joint"]["cohesion"] = json!(0);
     refused(&residual, "joint_materials.joint.residual_cohesion");
 }
+
+/// A sign or unit slip an RS2 user makes (friction item 10 of issue 49): an in-situ stress given
+/// compression positive, a friction angle in radians: `adit check` warns, naming the field (the
+/// scene stays valid: a tensile field or a tiny friction can be meant).
+#[test]
+fn a_flipped_in_situ_sign_and_a_friction_in_radians_are_warned() {
+    let mut s = model("tunnel");
+    let check = |s: &Value, tag: &str| {
+        let path =
+            std::env::temp_dir().join(format!("adit-warn-{tag}-{}.json", std::process::id()));
+        std::fs::write(&path, s.to_string()).unwrap();
+        let out = Command::new(env!("CARGO_BIN_EXE_adit"))
+            .args(["check", path.to_str().unwrap()])
+            .output()
+            .unwrap();
+        std::fs::remove_file(&path).unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        String::from_utf8_lossy(&out.stdout).into_owned()
+    };
+    let plain = check(&s, "plain");
+    assert!(
+        !plain.contains("in_situ.") && !plain.contains("friction:"),
+        "{plain}"
+    );
+    s["in_situ"]["sxx"] = json!(20e6);
+    s["joint_materials"]["joint"]["friction"] = json!(0.52);
+    let warned = check(&s, "slips");
+    assert!(
+        warned.contains("warning: in_situ.sxx: tensile over the whole region"),
+        "{warned}"
+    );
+    assert!(!warned.contains("in_situ.syy"), "{warned}");
+    assert!(
+        warned.contains("warning: joint_materials.joint.friction: 0.52°"),
+        "{warned}"
+    );
+    // Supports without stages (item 11): in the rock before the excavation is made.
+    let mut unstaged = model("tunnel");
+    unstaged["stages"] = json!([]);
+    let warned = check(&unstaged, "unstaged");
+    let supports = "warning: stages: none, so the 2 bolt group(s) and liner(s) act from the start";
+    assert!(warned.contains(supports), "{warned}");
+}

@@ -59,10 +59,70 @@ fn refuse_sharp_zones(scene: &Scene, meshed: &Meshed) -> anyhow::Result<()> {
     }
 }
 
+/// Below this a friction angle given in degrees (the scene's unit) is more likely radians: 1.6 rad
+/// is 92°, beyond any friction angle.
+const RADIANS_LIKELY: f64 = 1.6;
+
+/// What the scene's numbers say of a slip of units or sign, each naming the field: an in-situ
+/// stress component tensile over the whole region (adit takes tension positive, as UDEC; RS2 and
+/// most reports give compression positive), a friction angle that looks like radians, supports
+/// in a scene without stages (in the rock before its excavations are made).
+fn input_warnings(scene: &Scene) -> Vec<String> {
+    let mut out = Vec::new();
+    let supports = scene.bolts.len() + scene.liners.len();
+    if scene.stages.is_empty() && supports > 0 && !scene.excavations.is_empty() {
+        out.push(format!(
+            "stages: none, so the {supports} bolt group(s) and liner(s) act from the start, as \
+             if installed before the excavations were made, and take their whole release; to \
+             install them after an excavation, give stages that excavate it and then install \
+             them (`stages[i].install`)"
+        ));
+    }
+    let ys = scene.region.polygon.iter().map(|p| p[1]);
+    let (low, high) = ys.fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), y| {
+        (l.min(y), h.max(y))
+    });
+    let s = &scene.in_situ;
+    for (field, at_ref, gradient) in [
+        ("sxx", s.sxx, s.gradient.sxx),
+        ("syy", s.syy, s.gradient.syy),
+    ] {
+        let at = |y: f64| at_ref + gradient * (y - s.y_ref);
+        if at(low) > 0.0 && at(high) > 0.0 {
+            out.push(format!(
+                "in_situ.{field}: tensile over the whole region ({:.4} MPa at the reference \
+                 elevation); adit takes tension positive, as UDEC does, so rock compressed in \
+                 situ has negative in-situ stresses (RS2 and most reports give compression \
+                 positive)",
+                at_ref / 1e6
+            ));
+        }
+    }
+    let frictions = (scene.materials.iter())
+        .filter_map(|(name, m)| {
+            m.friction
+                .map(|f| (format!("materials.{name}.friction"), f))
+        })
+        .chain(
+            (scene.joint_materials.iter())
+                .map(|(name, j)| (format!("joint_materials.{name}.friction"), j.friction)),
+        );
+    for (field, degrees) in frictions {
+        if degrees > 0.0 && degrees < RADIANS_LIKELY {
+            out.push(format!(
+                "{field}: {degrees}° is a very small friction angle; angles are in degrees (if \
+                 {degrees} is in radians, give {:.1})",
+                degrees.to_degrees()
+            ));
+        }
+    }
+    out
+}
+
 /// The warnings of `meshed`, in the order `adit check` prints them; an error when a zone is sharper
 /// than `zoning.accept_angle`.
 pub(super) fn warnings(scene: &Scene, meshed: &Meshed) -> anyhow::Result<Vec<String>> {
-    let mut warnings = Vec::new();
+    let mut warnings = input_warnings(scene);
     let mut is_thin = vec![false; meshed.blocking.blocks.len()];
     for t in &meshed.thin {
         is_thin[t.block] = true;
