@@ -191,6 +191,21 @@ fn run(
             sup.liners.element.len(),
             loads.liner_thrust / 1e6
         )?;
+        let most_used = (s.bolts.iter()).max_by(|a, b| a.utilization.total_cmp(&b.utilization));
+        if let Some(b) = most_used {
+            say!(
+                "bolts: the most used, of '{}' at ({:.2}, {:.2}) m, carries {:.1} kN of its {:.1} kN \
+                 capacity ({:.0} %); {} of {} bolts at yield",
+                b.group,
+                b.head[0],
+                b.head[1],
+                b.force_n / 1e3,
+                b.capacity_n / 1e3,
+                100.0 * b.utilization,
+                s.bolts.iter().filter(|b| b.yielded).count(),
+                s.bolts.len()
+            )?;
+        }
     }
     for st in &s.stages {
         let closure: Vec<String> = st

@@ -544,6 +544,7 @@ fn build_solve_write(
         methods,
         implicit: implicit_cost,
         reactions,
+        bolts: built.model.supports.cables.bolt_loads(),
         far_field: built.model.far_field.as_ref().map(FarFieldSummary::of),
     };
     writer.write_summary(&summary)?;

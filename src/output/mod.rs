@@ -439,6 +439,10 @@ pub struct Summary {
     /// none fixes anything or the last stage failed.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub reactions: Vec<reactions::Reaction>,
+    /// Each installed bolt's largest load, per bolt (N) and over its capacity (absent without
+    /// bolts).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub bolts: Vec<crate::support::BoltLoad>,
     /// The far field's interface and what condensing it cost (absent without one).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub far_field: Option<FarFieldSummary>,

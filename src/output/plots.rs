@@ -29,6 +29,16 @@ const PALETTE: [RGBColor; 6] = [
     RGBColor(23, 190, 207),
 ];
 
+/// The colour of line `i` of `n`: the palette's while it has enough, else `n` hues around the
+/// colour wheel, so that no two lines share one.
+fn color_of(i: usize, n: usize) -> RGBAColor {
+    if n <= PALETTE.len() {
+        PALETTE[i].to_rgba()
+    } else {
+        HSLColor(i as f64 / n as f64, 0.75, 0.42).to_rgba()
+    }
+}
+
 /// One line of a plot: its label and points.
 struct Line {
     label: String,
@@ -94,10 +104,10 @@ pub fn write_plots(
     );
     plot(
         "bolts.png",
-        "Axial force along each bolt",
+        "Axial force along each bolt, and each group's capacity",
         (
             "distance from the head (m)",
-            "axial force (kN/m, tension positive)",
+            "axial force per bolt (kN, tension positive)",
         ),
         false,
         bolt_lines(model),
@@ -105,31 +115,41 @@ pub fn write_plots(
     warnings
 }
 
-/// The axial force (kN/m) against distance from the head (m, at segment middles) of each
-/// installed bolt: its segments are a chain, head first.
+/// The axial force per bolt (kN) against distance from the head (m, at segment middles) of each
+/// installed bolt, named by its group and head, then each installed group's capacity (its yield
+/// force, kN) over the longest bolt's length.
 fn bolt_lines(model: &Model) -> Vec<Line> {
     let c = &model.supports.cables;
+    let ends = (c.bolt_start.iter().skip(1).copied()).chain([c.segment.len() as u32]);
     let mut lines: Vec<Line> = Vec::new();
-    let mut along = 0.0;
-    for (k, seg) in c.segment.iter().enumerate() {
-        let group = c.segment_group[k] as usize;
+    let mut capacities: Vec<(usize, f64)> = Vec::new();
+    let mut longest = 0.0f64;
+    for (&first, end) in c.bolt_start.iter().zip(ends) {
+        let group = c.segment_group[first as usize] as usize;
         if !c.active[group] {
             continue;
         }
-        let continues = k > 0 && c.segment[k - 1][1] == seg[0] && !lines.is_empty();
-        if !continues {
-            along = 0.0;
-            lines.push(Line {
-                label: format!("{} {}", c.names[group], lines.len() + 1),
-                points: Vec::new(),
-            });
+        let head = c.pos[c.segment[first as usize][0] as usize];
+        let mut along = 0.0;
+        let mut points = Vec::new();
+        for k in first as usize..end as usize {
+            let length = c.segment_length[k];
+            points.push((along + 0.5 * length, 1e-3 * c.bolt_force(k)));
+            along += length;
         }
-        let length = c.segment_length[k];
-        if let Some(line) = lines.last_mut() {
-            line.points.push((along + 0.5 * length, 1e-3 * c.axial[k]));
+        longest = longest.max(along);
+        if !capacities.iter().any(|&(g, _)| g == group) {
+            capacities.push((group, 1e-3 * c.capacity(group)));
         }
-        along += length;
+        lines.push(Line {
+            label: format!("{} at ({:.2}, {:.2}) m", c.names[group], head[0], head[1]),
+            points,
+        });
     }
+    lines.extend(capacities.into_iter().map(|(g, capacity)| Line {
+        label: format!("capacity of {}: {capacity:.0} kN", c.names[g]),
+        points: vec![(0.0, capacity), (longest, capacity)],
+    }));
     lines
 }
 
@@ -218,7 +238,7 @@ fn draw_finite(
                 .draw()
                 .map_err(|e| err(&e))?;
             for (i, l) in lines.iter().enumerate() {
-                let color = PALETTE[i % PALETTE.len()];
+                let color = color_of(i, lines.len());
                 chart
                     .draw_series(LineSeries::new(l.points.clone(), color.stroke_width(2)))
                     .map_err(|e| err(&e))?;
@@ -235,7 +255,7 @@ fn draw_finite(
                 .draw()
                 .map_err(|e| err(&e))?;
             for (i, l) in lines.iter().enumerate() {
-                let color = PALETTE[i % PALETTE.len()];
+                let color = color_of(i, lines.len());
                 chart
                     .draw_series(LineSeries::new(l.points.clone(), color.stroke_width(2)))
                     .map_err(|e| err(&e))?

@@ -1,7 +1,9 @@
 //! Supports as line cells (`_supports_NNNN.vtu`): one cell per cable segment and per liner
 //! element at original positions, with `axial_force` (N/m, tension positive) and `moment` (N·m/m,
 //! the liner's internal bending moment at the element's middle, positive when its excavation
-//! face is in tension; 0 for cables), `kind` (0 bolt, 1 liner), `installed` and `yielded` per
+//! face is in tension; 0 for cables), `bolt_force_n` (a bolt segment's force per bolt, N: the
+//! force per metre times the bolts' spacing; 0 for liners), `bolt_utilization` (|N| over the
+//! bolt's yield force; 0 for liners), `kind` (0 bolt, 1 liner), `installed` and `yielded` per
 //! cell, and the rock's `displacement` (m) at each point.
 
 use vtkio::model::{Attribute, Attributes, CellType, Cells, UnstructuredGridPiece, VertexNumbers};
@@ -52,6 +54,14 @@ pub fn supports_vtu(model: &Model, labels: &Labels) -> Result<Vec<u8>, vtkio::Er
         )
         .collect();
     let axial: Vec<f64> = c.axial.iter().chain(&l.axial).copied().collect();
+    let per_bolt: Vec<f64> = (0..segments)
+        .map(|s| c.bolt_force(s))
+        .chain(std::iter::repeat_n(0.0, l.element.len()))
+        .collect();
+    let utilization: Vec<f64> = (0..segments)
+        .map(|s| c.utilization(s))
+        .chain(std::iter::repeat_n(0.0, l.element.len()))
+        .collect();
     let moment: Vec<f64> = std::iter::repeat_n(0.0, segments)
         .chain(l.moment.iter().map(|m| 0.5 * (m[0] + m[1])))
         .collect();
@@ -81,6 +91,8 @@ pub fn supports_vtu(model: &Model, labels: &Labels) -> Result<Vec<u8>, vtkio::Er
             point: vec![Attribute::generic("displacement", 3).with_data(displacement)],
             cell: vec![
                 Attribute::generic("axial_force", 1).with_data(axial),
+                Attribute::generic("bolt_force_n", 1).with_data(per_bolt),
+                Attribute::generic("bolt_utilization", 1).with_data(utilization),
                 Attribute::generic("moment", 1).with_data(moment),
                 Attribute::generic("kind", 1).with_data(kind),
                 Attribute::generic("installed", 1).with_data(installed),

@@ -82,6 +82,7 @@ fn cable_props(b: &BoltSpec) -> CableProps {
         bond_strength: b.bond_strength / s,
         pretension: b.pretension / s,
         line_density: b.density * b.area / s,
+        spacing: s,
     }
 }
 

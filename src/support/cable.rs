@@ -27,6 +27,26 @@ pub struct CableProps {
     pub(crate) pretension: f64,
     /// Mass per length ρA/s, kg/m per m.
     pub(crate) line_density: f64,
+    /// Spacing s of the bolts along the tunnel axis, m: a bolt's force is s times the force per
+    /// metre.
+    pub(crate) spacing: f64,
+}
+
+/// One bolt's largest load, as `summary.json`'s `bolts` gives it.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct BoltLoad {
+    /// Its group's name.
+    pub group: String,
+    /// Its head, m.
+    pub head: [f64; 2],
+    /// The axial force of its most loaded segment, N per bolt (tension positive).
+    pub force_n: f64,
+    /// Its yield force, N per bolt.
+    pub capacity_n: f64,
+    /// |force| / capacity (1 at yield).
+    pub utilization: f64,
+    /// Whether a segment has yielded.
+    pub yielded: bool,
 }
 
 /// Bolt groups, cable nodes and segments as structure-of-arrays. A group is inactive until a
@@ -63,6 +83,8 @@ pub struct Cables {
     pub(crate) grout_force: Vec<f64>,
     /// Plastic slip of the grout, m.
     pub slip: Vec<f64>,
+    /// First segment of each bolt (its segments run to the next bolt's first, or to the end).
+    pub bolt_start: Vec<u32>,
     /// Cable nodes of each segment (head side first) and its group.
     pub segment: Vec<[u32; 2]>,
     pub(crate) segment_group: Vec<u32>,
@@ -114,6 +136,7 @@ impl Cables {
         ] {
             v.resize(n, 0.0);
         }
+        self.bolt_start.push(self.segment.len() as u32);
         for i in 0..k as u32 - 1 {
             let (p, q) = (points[i as usize], points[i as usize + 1]);
             self.segment.push([first + i, first + i + 1]);
@@ -122,6 +145,46 @@ impl Cables {
             self.axial.push(0.0);
             self.plastic.push(0.0);
         }
+    }
+
+    /// The force of one bolt in segment `s`, N (tension positive): its force per metre times the
+    /// bolts' spacing.
+    pub fn bolt_force(&self, s: usize) -> f64 {
+        self.axial[s] * self.props[self.segment_group[s] as usize].spacing
+    }
+
+    /// The capacity of a bolt of group `g`: its yield force Fy, N per bolt.
+    pub fn capacity(&self, g: usize) -> f64 {
+        self.props[g].yield_force * self.props[g].spacing
+    }
+
+    /// The utilization of segment `s`: |N| / Fy, its force over its bolt's yield force (1 at
+    /// yield).
+    pub fn utilization(&self, s: usize) -> f64 {
+        self.axial[s].abs() / self.props[self.segment_group[s] as usize].yield_force
+    }
+
+    /// Each installed bolt's largest load (`BoltLoad`), in the order the bolts were added.
+    pub fn bolt_loads(&self) -> Vec<BoltLoad> {
+        let ends = (self.bolt_start.iter().skip(1).copied()).chain([self.segment.len() as u32]);
+        (self.bolt_start.iter().zip(ends))
+            .filter(|&(&first, _)| self.active[self.segment_group[first as usize] as usize])
+            .map(|(&first, end)| {
+                let segments = first as usize..end as usize;
+                let worst = (segments.clone())
+                    .max_by(|&a, &b| self.utilization(a).total_cmp(&self.utilization(b)))
+                    .expect("a bolt has a segment");
+                let g = self.segment_group[worst] as usize;
+                BoltLoad {
+                    group: self.names[g].clone(),
+                    head: self.pos[self.segment[first as usize][0] as usize],
+                    force_n: self.bolt_force(worst),
+                    capacity_n: self.capacity(g),
+                    utilization: self.utilization(worst),
+                    yielded: segments.into_iter().any(|s| self.plastic[s] != 0.0),
+                }
+            })
+            .collect()
     }
 
     /// Rock displacement along the bolt at cable node `n`, m.
@@ -261,6 +324,7 @@ mod tests {
                 bond_strength: 1e4,
                 pretension: 0.0,
                 line_density: 1.0,
+                spacing: 1.5,
             }],
             active: vec![false],
             ..Default::default()
@@ -269,6 +333,33 @@ mod tests {
         let hosts = vec![([0, 1, 2], [1.0, 0.0, 0.0]); 4];
         c.add_bolt(0, &pts, &hosts);
         c
+    }
+
+    /// A bolt's load is its most used segment's, per bolt (the force per metre times the
+    /// spacing) and over its capacity Fy = yield force per metre times the spacing; a bolt not
+    /// installed has none.
+    #[test]
+    fn a_bolt_reports_its_force_per_bolt_and_its_utilization() {
+        let mut c = bolt();
+        c.add_bolt(
+            0,
+            &[[5.0, 0.0], [5.0, 1.0]],
+            &[([0, 1, 2], [1.0, 0.0, 0.0]); 2],
+        );
+        assert!(c.bolt_loads().is_empty());
+        c.active[0] = true;
+        c.axial = vec![2e4, 6e4, -1e4, 8e4];
+        let loads = c.bolt_loads();
+        assert_eq!(loads.len(), 2);
+        let (first, second) = (&loads[0], &loads[1]);
+        assert_eq!(first.head, [0.0, 0.0]);
+        assert_eq!((first.force_n, first.capacity_n), (6e4 * 1.5, 1e5 * 1.5));
+        assert_eq!(first.utilization, 0.6);
+        assert_eq!(
+            (second.head, second.force_n, second.utilization),
+            ([5.0, 0.0], 1.2e5, 0.8)
+        );
+        assert!(!first.yielded);
     }
 
     #[test]

@@ -6,7 +6,7 @@
 pub mod cable;
 pub mod liner;
 
-pub use cable::{CableProps, Cables};
+pub use cable::{BoltLoad, CableProps, Cables};
 pub use liner::{LinerProps, Liners};
 
 /// What the supports carry: the figures a user looks at first.
