@@ -120,19 +120,14 @@ pub fn write_plots(
 /// force, kN) over the longest bolt's length.
 fn bolt_lines(model: &Model) -> Vec<Line> {
     let c = &model.supports.cables;
-    let ends = (c.bolt_start.iter().skip(1).copied()).chain([c.segment.len() as u32]);
     let mut lines: Vec<Line> = Vec::new();
     let mut capacities: Vec<(usize, f64)> = Vec::new();
     let mut longest = 0.0f64;
-    for (&first, end) in c.bolt_start.iter().zip(ends) {
-        let group = c.segment_group[first as usize] as usize;
-        if !c.active[group] {
-            continue;
-        }
-        let head = c.pos[c.segment[first as usize][0] as usize];
+    for (group, segments) in c.installed_bolts() {
+        let head = c.head(segments.start);
         let mut along = 0.0;
         let mut points = Vec::new();
-        for k in first as usize..end as usize {
+        for k in segments {
             let length = c.segment_length[k];
             points.push((along + 0.5 * length, 1e-3 * c.bolt_force(k)));
             along += length;

@@ -203,10 +203,10 @@ impl Laws {
         }
     }
 
-    /// Give `materials` these laws (copies: `self` stays).
-    fn put(&self, materials: &mut Materials) {
-        materials.zone = self.zone.iter().map(|l| l.boxed_copy()).collect();
-        materials.joint = self.joint.iter().map(|l| l.boxed_copy()).collect();
+    /// Give `materials` these laws.
+    fn put(self, materials: &mut Materials) {
+        materials.zone = self.zone;
+        materials.joint = self.joint;
     }
 }
 

@@ -164,20 +164,35 @@ impl Cables {
         self.axial[s].abs() / self.props[self.segment_group[s] as usize].yield_force
     }
 
-    /// Each installed bolt's largest load (`BoltLoad`), in the order the bolts were added.
-    pub fn bolt_loads(&self) -> Vec<BoltLoad> {
+    /// Each installed bolt, in the order the bolts were added: its group and its segments (head
+    /// first).
+    pub fn installed_bolts(&self) -> impl Iterator<Item = (usize, std::ops::Range<usize>)> + '_ {
         let ends = (self.bolt_start.iter().skip(1).copied()).chain([self.segment.len() as u32]);
         (self.bolt_start.iter().zip(ends))
-            .filter(|&(&first, _)| self.active[self.segment_group[first as usize] as usize])
             .map(|(&first, end)| {
-                let segments = first as usize..end as usize;
+                (
+                    self.segment_group[first as usize] as usize,
+                    first as usize..end as usize,
+                )
+            })
+            .filter(|(g, _)| self.active[*g])
+    }
+
+    /// The head of the bolt whose first segment is `first`, m.
+    pub fn head(&self, first: usize) -> [f64; 2] {
+        self.pos[self.segment[first][0] as usize]
+    }
+
+    /// Each installed bolt's largest load (`BoltLoad`), in the order the bolts were added.
+    pub fn bolt_loads(&self) -> Vec<BoltLoad> {
+        self.installed_bolts()
+            .map(|(g, segments)| {
                 let worst = (segments.clone())
                     .max_by(|&a, &b| self.utilization(a).total_cmp(&self.utilization(b)))
                     .expect("a bolt has a segment");
-                let g = self.segment_group[worst] as usize;
                 BoltLoad {
                     group: self.names[g].clone(),
-                    head: self.pos[self.segment[first as usize][0] as usize],
+                    head: self.head(segments.start),
                     force_n: self.bolt_force(worst),
                     capacity_n: self.capacity(g),
                     utilization: self.utilization(worst),
