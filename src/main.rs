@@ -191,6 +191,23 @@ fn run(
             sup.liners.element.len(),
             loads.liner_thrust / 1e6
         )?;
+        for l in &s.liners {
+            let capacity = match (l.factor_of_safety, l.at, l.over_capacity) {
+                (Some(fs), Some(at), Some(over)) => format!(
+                    "; least factor of safety {fs:.2} at ({:.2}, {:.2}) m, {over} of {} elements \
+                     over capacity",
+                    at[0], at[1], l.elements
+                ),
+                _ => String::new(),
+            };
+            say!(
+                "liner '{}': largest thrust {:.2} MN, moment {:.1} kN·m, shear {:.1} kN per set{capacity}",
+                l.liner,
+                l.thrust_n / 1e6,
+                l.moment_n_m / 1e3,
+                l.shear_n / 1e3
+            )?;
+        }
         let most_used = (s.bolts.iter()).max_by(|a, b| a.utilization.total_cmp(&b.utilization));
         if let Some(b) = most_used {
             say!(

@@ -505,6 +505,7 @@ fn build_solve_write(
             .filter(|&&m| m == mode)
             .count()
     };
+    let liners = built.model.supports.liners.liner_loads();
     let summary = Summary {
         scene: scene.name.clone(),
         zones,
@@ -533,6 +534,7 @@ fn build_solve_write(
         warnings: [
             built.warnings.clone(),
             moving_warnings(&stage_summaries, built.plan.staged),
+            over_capacity_warnings(&liners),
             plot_warnings,
         ]
         .concat(),
@@ -545,6 +547,7 @@ fn build_solve_write(
         implicit: implicit_cost,
         reactions,
         bolts: built.model.supports.cables.bolt_loads(),
+        liners,
         far_field: built.model.far_field.as_ref().map(FarFieldSummary::of),
     };
     writer.write_summary(&summary)?;
@@ -554,6 +557,22 @@ fn build_solve_write(
         summary,
         out_dir: writer.dir.clone(),
     })
+}
+
+/// A warning for each liner with an element over its capacity (factor of safety below 1).
+fn over_capacity_warnings(liners: &[crate::support::LinerLoad]) -> Vec<String> {
+    (liners.iter())
+        .filter_map(|l| {
+            let (fs, at, over) = (l.factor_of_safety?, l.at?, l.over_capacity?);
+            (over > 0).then(|| {
+                format!(
+                    "liner '{}': {over} of {} elements over capacity (least factor of safety \
+                     {fs:.2}, at ({:.2}, {:.2}) m): see liner_capacity.png",
+                    l.liner, l.elements, at[0], at[1]
+                )
+            })
+        })
+        .collect()
 }
 
 /// The stages' blocks still moving at convergence or at a cycle limit (`cycle::drift`) as

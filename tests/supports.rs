@@ -116,3 +116,53 @@ fn a_bolt_outside_the_rock_is_an_error() {
         "{err}"
     );
 }
+
+/// The bundled tunnel's 0.15 m of shotcrete (σc 40 MPa) carries a thrust near 9 MN/m, 60 MPa:
+/// the run says so, in the summary, its warnings and `liner_capacity.png`, with the least
+/// factor of safety of its elements.
+#[test]
+fn an_overloaded_liner_is_warned_with_its_factor_of_safety() {
+    let sc = Scene::load(std::path::Path::new(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/models/tunnel.json"
+    )))
+    .unwrap();
+    let out = std::env::temp_dir().join("adit_liner_capacity_test");
+    let r = adit::run_scene(&sc, &out, &mut Quiet).unwrap();
+    let liners = &r.built.model.supports.liners;
+    let [load] = r.summary.liners.as_slice() else {
+        panic!("one liner: {:?}", r.summary.liners)
+    };
+    let least = (0..liners.element.len())
+        .map(|e| liners.safety(e).unwrap().factor())
+        .fold(f64::INFINITY, f64::min);
+    assert_eq!(load.factor_of_safety, Some(least));
+    assert!(least < 1.0 && load.over_capacity.unwrap() > 0, "{load:?}");
+    // The largest thrust over the section's area is beyond σc.
+    assert!(load.thrust_n / 0.15 > 40e6, "{load:?}");
+    let warned = (r.summary.warnings.iter())
+        .any(|w| w.starts_with("liner 'shotcrete'") && w.contains("over capacity"));
+    assert!(warned, "{:?}", r.summary.warnings);
+    assert!(out.join("liner_capacity.png").exists());
+}
+
+#[test]
+fn liner_strengths_are_checked() {
+    let bad = |capacity: serde_json::Value, field: &str| {
+        let mut v: serde_json::Value =
+            serde_json::from_str(include_str!("../models/tunnel.json")).unwrap();
+        v["liners"][0]["capacity"] = capacity;
+        let err = Scene::from_json(&v.to_string(), "tunnel")
+            .unwrap_err()
+            .to_string();
+        assert!(err.contains(field), "{err}");
+    };
+    bad(
+        serde_json::json!({ "compressive_strength": 40e6, "tensile_strength": -1.0 }),
+        "liners[0].capacity.tensile_strength",
+    );
+    bad(
+        serde_json::json!({ "compressive_strength": 40e6 }),
+        "tensile_strength",
+    );
+}

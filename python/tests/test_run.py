@@ -69,6 +69,10 @@ def test_jointed_results_have_contacts_and_supports(root, tmp_path):
     assert (c["normal_stress_pa"] < 0).mean() > 0.9
     assert r.bolts["ends_m"].shape[1] == 4 and len(r.bolts["axial_force_n_per_m"]) > 0
     assert r.liners["moment_n_m_per_m"].shape[1] == 2
+    # The shotcrete is over capacity somewhere: utilization 1/FS above 1, as the summary says.
+    least = r.summary["liners"][0]["factor_of_safety"]
+    assert np.isclose(r.liners["utilization"].max(), 1 / least, rtol=1e-12)
+    assert least < 1 and len(r.liners["shear_force_n_per_m"]) == len(r.liners["group"])
     assert r.stages[-1]["name"] == "bolts and shotcrete"
     assert 5e-3 < r.closure("tunnel") < 2e-2
     # Excavated zones are flagged, and hold no stress.

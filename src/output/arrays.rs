@@ -148,6 +148,18 @@ impl Tables {
             2,
             liners.moment.iter().flatten().copied().collect(),
         ));
+        liner_rows.push(float(
+            "shear_force_n_per_m",
+            1,
+            (0..liners.element.len()).map(|e| liners.shear(e)).collect(),
+        ));
+        liner_rows.push(float(
+            "utilization",
+            1,
+            (0..liners.element.len())
+                .map(|e| liners.utilization(e))
+                .collect(),
+        ));
         Tables {
             tables: vec![
                 ("nodes", nodes),

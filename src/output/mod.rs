@@ -7,6 +7,7 @@
 
 pub mod arrays;
 pub mod atomic;
+pub mod capacity_plot;
 pub mod factor_of_safety;
 pub mod joints_vtu;
 pub mod lock;
@@ -443,6 +444,10 @@ pub struct Summary {
     /// bolts).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub bolts: Vec<crate::support::BoltLoad>,
+    /// Each installed liner's largest forces per set and, with strengths, its least factor of
+    /// safety (absent without liners).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub liners: Vec<crate::support::LinerLoad>,
     /// The far field's interface and what condensing it cost (absent without one).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub far_field: Option<FarFieldSummary>,
@@ -490,13 +495,14 @@ fn is_run_output(file: &str, name: &str) -> bool {
         Some(inner) => inner,
         None => file,
     };
-    const FILES: [&str; 6] = [
+    const FILES: [&str; 7] = [
         "history.csv",
         "ground_reaction.csv",
         "summary.json",
         "history.png",
         "ground_reaction.png",
         "bolts.png",
+        "liner_capacity.png",
     ];
     if FILES.contains(&file) {
         return true;

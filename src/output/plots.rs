@@ -1,7 +1,8 @@
 //! PNG plots beside the results, for a look without ParaView: the unbalanced-force ratio's history
 //! (`history.png`), the ground reaction curve of each excavation (`ground_reaction.png`, staged
 //! scenes: support pressure against mean wall closure at each stage's end, from no closure under
-//! the whole in-situ pressure) and the axial force along each installed bolt (`bolts.png`, scenes with bolts).
+//! the whole in-situ pressure), the axial force along each installed bolt (`bolts.png`, scenes with
+//! bolts) and the liners' forces against their capacity (`liner_capacity.png`, `capacity_plot.rs`).
 //!
 //! Each is drawn into a buffer and written atomically. A plot that cannot be drawn (no font on
 //! the machine: fontconfig is loaded at run time) is a warning of the run, never its failure.
@@ -20,7 +21,7 @@ use crate::solve::HistoryRow;
 const SIZE: (u32, u32) = (800, 500);
 
 /// Colours of successive curves.
-const PALETTE: [RGBColor; 6] = [
+pub(super) const PALETTE: [RGBColor; 6] = [
     RGBColor(31, 119, 180),
     RGBColor(214, 39, 40),
     RGBColor(44, 160, 44),
@@ -112,6 +113,9 @@ pub fn write_plots(
         false,
         bolt_lines(model),
     );
+    if !crate::interrupt::requested() {
+        warnings.extend(super::capacity_plot::write(dir, &model.supports.liners));
+    }
     warnings
 }
 
@@ -150,7 +154,7 @@ fn bolt_lines(model: &Model) -> Vec<Line> {
 
 /// The largest size of a value a plot draws: the plotting library's axes loop for ever on an
 /// infinite range and lose their ticks far before it.
-const PLOT_LIMIT: f64 = 1e100;
+pub(super) const PLOT_LIMIT: f64 = 1e100;
 
 /// `lines` without their non-finite points (and, on a logarithmic y axis, those not above zero);
 /// an error when a value is beyond [`PLOT_LIMIT`] in size or none is left.
@@ -278,7 +282,7 @@ fn draw_finite(
 }
 
 /// An RGB buffer of `size` pixels as PNG bytes.
-fn png(rgb: &[u8], size: (u32, u32)) -> Result<Vec<u8>, String> {
+pub(super) fn png(rgb: &[u8], size: (u32, u32)) -> Result<Vec<u8>, String> {
     let mut png = Vec::new();
     image::codecs::png::PngEncoder::new(&mut png)
         .write_image(rgb, size.0, size.1, image::ColorType::Rgb8)
@@ -288,7 +292,7 @@ fn png(rgb: &[u8], size: (u32, u32)) -> Result<Vec<u8>, String> {
 
 /// Write the PNG `draw` makes as `file` in `dir`, atomically; a warning when it could not be
 /// drawn or written (a panic of the plotting library included).
-fn write_png(
+pub(super) fn write_png(
     dir: &Path,
     file: &str,
     draw: impl FnOnce() -> Result<Vec<u8>, String> + std::panic::UnwindSafe,

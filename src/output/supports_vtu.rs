@@ -3,8 +3,11 @@
 //! the liner's internal bending moment at the element's middle, positive when its excavation
 //! face is in tension; 0 for cables), `bolt_force_n` (a bolt segment's force per bolt, N: the
 //! force per metre times the bolts' spacing; 0 for liners), `bolt_utilization` (|N| over the
-//! bolt's yield force; 0 for liners), `kind` (0 bolt, 1 liner), `installed` and `yielded` per
-//! cell, and the rock's `displacement` (m) at each point.
+//! bolt's yield force; 0 for liners), `shear_force_n_per_m` (a liner element's shear, N/m; 0 for
+//! cables), `liner_utilization` (1 over the element's factor of safety against its thrust, moment
+//! and shear, `support::liner_capacity`: 1 on its capacity envelope; 0 for cables and for liners
+//! without strengths), `kind` (0 bolt, 1 liner), `installed` and `yielded` per cell, and the
+//! rock's `displacement` (m) at each point.
 
 use vtkio::model::{Attribute, Attributes, CellType, Cells, UnstructuredGridPiece, VertexNumbers};
 
@@ -65,6 +68,12 @@ pub fn supports_vtu(model: &Model, labels: &Labels) -> Result<Vec<u8>, vtkio::Er
     let moment: Vec<f64> = std::iter::repeat_n(0.0, segments)
         .chain(l.moment.iter().map(|m| 0.5 * (m[0] + m[1])))
         .collect();
+    let shear: Vec<f64> = std::iter::repeat_n(0.0, segments)
+        .chain((0..l.element.len()).map(|e| l.shear(e)))
+        .collect();
+    let liner_utilization: Vec<f64> = std::iter::repeat_n(0.0, segments)
+        .chain((0..l.element.len()).map(|e| l.utilization(e)))
+        .collect();
     let kind: Vec<i32> = std::iter::repeat_n(0, segments)
         .chain(std::iter::repeat_n(1, l.element.len()))
         .collect();
@@ -94,6 +103,8 @@ pub fn supports_vtu(model: &Model, labels: &Labels) -> Result<Vec<u8>, vtkio::Er
                 Attribute::generic("bolt_force_n", 1).with_data(per_bolt),
                 Attribute::generic("bolt_utilization", 1).with_data(utilization),
                 Attribute::generic("moment", 1).with_data(moment),
+                Attribute::generic("shear_force_n_per_m", 1).with_data(shear),
+                Attribute::generic("liner_utilization", 1).with_data(liner_utilization),
                 Attribute::generic("kind", 1).with_data(kind),
                 Attribute::generic("installed", 1).with_data(installed),
                 Attribute::generic("yielded", 1).with_data(yielded),

@@ -20,7 +20,7 @@ pub use limits::{
     MAX_BOLT_SEGMENTS, MAX_BOLTS, MAX_GRAINS, MAX_JOINTS, MAX_POLYGON_VERTICES, MAX_REGION_VERTICES,
 };
 pub use realization::Scatter;
-pub use supports::{BoltLine, BoltPattern, BoltSpec, LinerSpec};
+pub use supports::{BoltLine, BoltPattern, BoltSpec, LinerCapacitySpec, LinerSpec};
 pub use typed::{
     BoltLayout, Condition, HoekBrownConstants, JointLawSpec, Load, Shape, ZoneLawSpec,
 };

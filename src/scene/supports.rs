@@ -93,6 +93,20 @@ pub struct LinerSpec {
     /// Density, kg/m³ (default 2500; dynamic runs only).
     #[serde(default = "concrete_density")]
     pub density: f64,
+    /// The strengths of its material: with them, each element's factor of safety against its
+    /// thrust, moment and shear is reported (`support::liner_capacity`).
+    #[serde(default)]
+    pub capacity: Option<LinerCapacitySpec>,
+}
+
+/// A liner's material strengths, for its capacity (a rectangular section: depth √(12 I / A)).
+#[derive(Debug, Clone, Copy, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LinerCapacitySpec {
+    /// Uniaxial compressive strength σc, Pa.
+    pub compressive_strength: f64,
+    /// Tensile strength σt, Pa.
+    pub tensile_strength: f64,
 }
 
 fn one() -> f64 {
@@ -213,6 +227,13 @@ impl Scene {
                 ("density", l.density),
             ] {
                 positive(format!("{p}.{f}"), v)?;
+            }
+            if let Some(c) = l.capacity {
+                positive(
+                    format!("{p}.capacity.compressive_strength"),
+                    c.compressive_strength,
+                )?;
+                positive(format!("{p}.capacity.tensile_strength"), c.tensile_strength)?;
             }
             if !(-1.0 < l.poisson && l.poisson < 0.5) {
                 return Err(invalid(

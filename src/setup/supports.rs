@@ -8,6 +8,7 @@ use super::plan::Boundary;
 use super::{NOT_FILL, rock_walls};
 use crate::model::Model;
 use crate::scene::{BoltLayout, BoltSpec, LinerSpec, Scene};
+use crate::support::liner_capacity::Section;
 use crate::support::{CableProps, Cables, LinerProps, Liners, Supports};
 
 /// Build the supports of `scene` on `model` (zones, blocks and fills in place).
@@ -94,6 +95,13 @@ fn liner_props(l: &LinerSpec) -> LinerProps {
         bending_stiffness: e * l.inertia / s,
         line_density: l.density * l.area / s,
         line_inertia: l.density * l.inertia / s,
+        spacing: s,
+        section: l.capacity.map(|c| Section {
+            area: l.area,
+            inertia: l.inertia,
+            compressive: c.compressive_strength,
+            tensile: c.tensile_strength,
+        }),
     }
 }
 

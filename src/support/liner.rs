@@ -12,6 +12,7 @@
 //! E = E/(1 − ν²) for a shell in plane strain (Przemieniecki, *Theory of Matrix Structural
 //! Analysis*, §4; Itasca, UDEC *Structural Elements*, "beam elements").
 
+use super::liner_capacity::{Safety, Section, SectionForces};
 use crate::damping::local_damping;
 
 /// Properties of one liner, per metre of model thickness.
@@ -24,6 +25,36 @@ pub struct LinerProps {
     /// Mass per length ρA/s, kg/m per m; rotational inertia per length ρI/s, kg·m.
     pub(crate) line_density: f64,
     pub(crate) line_inertia: f64,
+    /// Spacing s of the sets along the tunnel axis, m: a set's force is s times the force per
+    /// metre.
+    pub(crate) spacing: f64,
+    /// One set's section and strengths, when the scene gives them (`liner_capacity`).
+    pub(crate) section: Option<Section>,
+}
+
+/// One installed liner's largest forces and its least factor of safety, as `summary.json`'s
+/// `liners` gives them (per set: per metre times the sets' spacing).
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct LinerLoad {
+    /// Its name.
+    pub liner: String,
+    /// Largest thrust, N per set (compression positive; negative: the liner is in tension
+    /// everywhere).
+    pub thrust_n: f64,
+    /// Largest bending moment magnitude, N·m per set.
+    pub moment_n_m: f64,
+    /// Largest shear force magnitude, N per set.
+    pub shear_n: f64,
+    /// Its elements' least factor of safety (`liner_capacity`), where it is (the element's
+    /// middle, m) and how many elements are below 1; absent without strengths.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub factor_of_safety: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub at: Option<[f64; 2]>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub over_capacity: Option<usize>,
+    /// Its elements.
+    pub elements: usize,
 }
 
 /// Liners, their nodes, links to the rock and elements as structure-of-arrays.
@@ -245,6 +276,83 @@ impl Liners {
         r
     }
 
+    /// The sets' spacing of element `e`'s liner, m.
+    pub fn spacing(&self, e: usize) -> f64 {
+        self.props[self.element_group[e] as usize].spacing
+    }
+
+    /// Element `e`'s shear force V = (M_b − M_a)/L from its internal moments at its ends a and b
+    /// (`moment`), N/m.
+    pub fn shear(&self, e: usize) -> f64 {
+        let [at_a, at_b] = self.moment[e];
+        (at_b - at_a) / self.element_length[e]
+    }
+
+    /// Element `e`'s forces per set at its two ends: its thrust −N s, its internal moment s m at
+    /// each end and its shear s V.
+    pub fn section_forces(&self, e: usize) -> [SectionForces; 2] {
+        let s = self.spacing(e);
+        let shear = s * self.shear(e);
+        self.moment[e].map(|m| SectionForces {
+            thrust: -s * self.axial[e],
+            moment: s * m,
+            shear,
+        })
+    }
+
+    /// Element `e`'s factors of safety, the least of its two ends' (`liner_capacity`); none
+    /// without strengths.
+    pub fn safety(&self, e: usize) -> Option<Safety> {
+        let section = self.props[self.element_group[e] as usize].section?;
+        let [a, b] = self.section_forces(e).map(|f| section.safety(&f));
+        Some(Safety {
+            bending: a.bending.min(b.bending),
+            shear: a.shear.min(b.shear),
+        })
+    }
+
+    /// Element `e`'s utilization, 1/FS (0 without strengths; 1 on the capacity envelope).
+    pub fn utilization(&self, e: usize) -> f64 {
+        self.safety(e).map_or(0.0, |s| 1.0 / s.factor())
+    }
+
+    /// The middle of element `e`, m.
+    pub fn middle(&self, e: usize) -> [f64; 2] {
+        let [a, b] = self.element[e].map(|n| self.pos[n as usize]);
+        [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])]
+    }
+
+    /// Each installed liner's largest forces and least factor of safety (`LinerLoad`).
+    pub fn liner_loads(&self) -> Vec<LinerLoad> {
+        let elements = |g: usize| {
+            (0..self.element.len()).filter(move |&e| self.element_group[e] as usize == g)
+        };
+        (0..self.names.len())
+            .filter(|&g| self.active[g])
+            .map(|g| {
+                let forces: Vec<SectionForces> =
+                    elements(g).flat_map(|e| self.section_forces(e)).collect();
+                let largest = |f: fn(&SectionForces) -> f64| {
+                    forces.iter().map(f).fold(f64::NEG_INFINITY, f64::max)
+                };
+                let safety: Vec<(usize, f64)> = elements(g)
+                    .filter_map(|e| Some((e, self.safety(e)?.factor())))
+                    .collect();
+                let least = safety.iter().copied().min_by(|a, b| a.1.total_cmp(&b.1));
+                LinerLoad {
+                    liner: self.names[g].clone(),
+                    thrust_n: largest(|f| f.thrust),
+                    moment_n_m: largest(|f| f.moment.abs()),
+                    shear_n: largest(|f| f.shear.abs()),
+                    factor_of_safety: least.map(|(_, fs)| fs),
+                    at: least.map(|(e, _)| self.middle(e)),
+                    over_capacity: least.map(|_| safety.iter().filter(|s| s.1 < 1.0).count()),
+                    elements: elements(g).count(),
+                }
+            })
+            .collect()
+    }
+
     /// Real lumped masses [ρA ℓ, ρI ℓ], ℓ the tributary length.
     pub fn real_masses(&self) -> Vec<[f64; 2]> {
         let mut m = vec![[0.0; 2]; self.nodes()];
@@ -275,6 +383,8 @@ pub(crate) mod tests {
                 bending_stiffness: 1e6,
                 line_density: 1.0,
                 line_inertia: 1.0,
+                spacing: 1.0,
+                section: None,
             }],
             active: vec![false],
             ..Default::default()

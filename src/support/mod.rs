@@ -5,9 +5,10 @@
 
 pub mod cable;
 pub mod liner;
+pub mod liner_capacity;
 
 pub use cable::{BoltLoad, CableProps, Cables};
-pub use liner::{LinerProps, Liners};
+pub use liner::{LinerLoad, LinerProps, Liners};
 
 /// What the supports carry: the figures a user looks at first.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -33,8 +33,9 @@
 use std::time::Instant;
 
 use adit::Scene;
-use adit::scene::{LinerSpec, SolveMethod};
+use adit::scene::{LinerCapacitySpec, LinerSpec, SolveMethod};
 use adit::setup::setup;
+use adit::support::Liners;
 
 use crate::kirsch_case::scaled;
 use crate::report::CaseReport;
@@ -148,6 +149,68 @@ impl EinsteinSchwartz {
     }
 }
 
+/// The liner's strengths: shotcrete of σc = 40 MPa, σt = 4 MPa.
+const SHOTCRETE: LinerCapacitySpec = LinerCapacitySpec {
+    compressive_strength: 40e6,
+    tensile_strength: 4e6,
+};
+
+/// The factor of safety of a rectangular section of depth `t` (per metre) under thrust `thrust`
+/// (N/m, compression positive), moment `moment` and shear `shear`, by hand from its capacity
+/// diagram (Carranza-Torres & Diederichs 2009): the factor λ by which the point (M, T) can be
+/// scaled along its ray from the origin to reach the FS = 1 diamond through (0, σc t),
+/// (±(σc + σt) t²/12, (σc − σt) t/2), (0, −σt t), and the point (V, T) to reach the curve
+/// (1.5 V/t)² = σc² − σc T/t (compression side) or σt² + σt T/t (tension side): with σ0 = T/t,
+/// τ = 1.5 V/t, the roots λ of τ²λ² + σc σ0 λ − σc² = 0 and τ²λ² − σt σ0 λ − σt² = 0.
+pub fn hand_factor_of_safety(t: f64, thrust: f64, moment: f64, shear: f64) -> f64 {
+    let (c, ts) = (SHOTCRETE.compressive_strength, SHOTCRETE.tensile_strength);
+    let diamond = [
+        (0.0, c * t),
+        ((c + ts) * t * t / 12.0, 0.5 * (c - ts) * t),
+        (0.0, -ts * t),
+        (-(c + ts) * t * t / 12.0, 0.5 * (c - ts) * t),
+    ];
+    // Ray λ(M, T) meets edge a + μ(b − a): solve the 2×2 system for (λ, μ).
+    let mut bending = f64::INFINITY;
+    for k in 0..4 {
+        let (a, b) = (diamond[k], diamond[(k + 1) % 4]);
+        let d = (b.0 - a.0, b.1 - a.1);
+        let det = moment * -d.1 + d.0 * thrust;
+        if det.abs() < 1e-300 {
+            continue;
+        }
+        let lambda = (a.0 * -d.1 + d.0 * a.1) / det;
+        let mu = (moment * a.1 - thrust * a.0) / det;
+        if lambda > 0.0 && (-1e-12..=1.0 + 1e-12).contains(&mu) {
+            bending = bending.min(lambda);
+        }
+    }
+    let (s0, tau) = (thrust / t, 1.5 * shear / t);
+    let root = |b: f64, cc: f64| {
+        if tau == 0.0 {
+            if b > 0.0 { cc / b } else { f64::INFINITY }
+        } else {
+            (-b + (b * b + 4.0 * tau * tau * cc).sqrt()) / (2.0 * tau * tau)
+        }
+    };
+    let shear_fs = root(c * s0, c * c).min(root(-ts * s0, ts * ts));
+    bending.min(shear_fs)
+}
+
+/// The largest relative difference between the engine's factor of safety of each liner element
+/// (`Liners::safety`) and [`hand_factor_of_safety`] at both its ends.
+pub fn safety_deviation(l: &Liners, thickness: f64) -> f64 {
+    (0..l.element.len())
+        .map(|e| {
+            let engine = l.safety(e).expect("the liner has strengths").factor();
+            let hand = (l.section_forces(e).iter())
+                .map(|f| hand_factor_of_safety(thickness, f.thrust, f.moment, f.shear))
+                .fold(f64::INFINITY, f64::min);
+            (engine - hand).abs() / hand
+        })
+        .fold(0.0, f64::max)
+}
+
 /// The shipped Kirsch geometry (R = 1 m, zoning scaled by `factor`) in elastic ground
 /// (E = 10 GPa, ν = 0.25) under P = 20 MPa, K = 0.5, lined from the start by a shotcrete shell
 /// (Es = 30 GPa, νs = 0.2) of thickness `thickness` (m).
@@ -170,6 +233,7 @@ fn scene(kirsch: &Scene, factor: f64, thickness: f64) -> (Scene, EinsteinSchwart
         inertia,
         out_of_plane_spacing: 1.0,
         density: 2500.0,
+        capacity: Some(SHOTCRETE),
     }];
     let radius = s.excavations[0]
         .circle
@@ -237,6 +301,7 @@ pub fn run_by(
             deviation(&moment, &|t| -m2 * (2.0 * t).cos()),
         ),
         ("moment_es", deviation(&moment, &|t| -exact.moment(t))),
+        ("safety", safety_deviation(l, thickness)),
     ];
     let (c, f) = exact.ratios();
     Ok(CaseReport::new(
@@ -313,6 +378,28 @@ mod tests {
         let r = run(&kirsch, 2.0, 0.15).unwrap();
         assert!(r.errors["thrust"] < 0.05, "{r:?}");
         assert!(r.errors["moment_ring"] < 0.1, "{r:?}");
+        assert!(r.errors["safety"] < 1e-6, "{r:?}");
+    }
+
+    /// The hand calculation of the capacity diagram: pure thrust and pure tension meet the
+    /// strengths, a point on an edge of the diamond scaled down by 3 has FS 3, and a shear alone
+    /// meets the tensile strength at the neutral axis.
+    #[test]
+    fn the_hand_capacity_diagram_meets_the_strengths() {
+        let t = 0.2;
+        assert!((hand_factor_of_safety(t, 4e6, 0.0, 0.0) - 2.0).abs() < 1e-12);
+        assert!((hand_factor_of_safety(t, -0.4e6, 0.0, 0.0) - 2.0).abs() < 1e-12);
+        // Halfway along the upper right edge of the FS = 1 diamond, scaled by 1/3: FS 3.
+        let (c, ts) = (40e6, 4e6);
+        let (m, th) = (
+            0.5 * (c + ts) * t * t / 12.0,
+            0.5 * (c * t + 0.5 * (c - ts) * t),
+        );
+        let fs = hand_factor_of_safety(t, th / 3.0, m / 3.0, 0.0);
+        assert!((fs - 3.0).abs() < 1e-12, "{fs}");
+        // Shear alone: τ = 1.5 V/t reaches σt (the tension side) at V = σt t/1.5.
+        let fs = hand_factor_of_safety(t, 0.0, 0.0, ts * t / 1.5 / 4.0);
+        assert!((fs - 4.0).abs() < 1e-12, "{fs}");
     }
 
     /// The implicit solve assembles the liner (beam elements and links): rock and liner are

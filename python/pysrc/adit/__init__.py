@@ -94,7 +94,8 @@ class Results:
     - ``bolts`` (one row per segment) and ``liners`` (one row per element): ``ends_m`` (s, 4:
       x0, y0, x1, y1), ``group`` (index into ``bolt_groups`` or ``liner_groups``),
       ``installed``, ``axial_force_n_per_m`` (tension positive, per metre of tunnel); bolts
-      ``yielded``, liners ``moment_n_m_per_m`` (s, 2: at each end);
+      ``yielded``, liners ``moment_n_m_per_m`` (s, 2: at each end), ``shear_force_n_per_m``
+      and ``utilization`` (1 over the element's factor of safety; 0 without a ``capacity``);
     - ``history``: ``cycle``, ``time_s``, ``ratio``, ``kinetic_energy_j_per_m`` per monitor step.
 
     ``summary`` is ``summary.json`` as a dict (with ``stages``, each with its ``closure`` per
