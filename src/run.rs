@@ -199,8 +199,9 @@ struct StageFos {
 }
 
 /// Search the factor of safety `stage` asks for (none when it asks none or its solve failed),
-/// each trial solved without output along the stage's path: implicitly (its non-convergence the
-/// criterion, never handed over to explicit cycling) or by explicit cycling.
+/// each trial solved without output along the stage's path: implicitly (`implicit`: its
+/// non-convergence the criterion; `auto`: a trial whose iterations do not converge is handed over
+/// to explicit cycling from where they left it, as an `auto` stage is) or by explicit cycling.
 fn stage_factor_of_safety(
     model: &mut Model,
     stage: &StagePlan,
@@ -215,33 +216,32 @@ fn stage_factor_of_safety(
         return Ok(StageFos::default());
     }
     let solve_spec = &stage.solve;
-    let solve = |model: &mut Model| {
+    let cycle_explicitly = |model: &mut Model| {
         let mut solver = Solver::new(model, solve_spec, 0);
-        match method {
-            Method::Implicit => {
-                let (cycle, params) = (&mut solver.cycle, &solver.params);
-                let solved = implicit::solve_driven(
-                    model,
-                    cycle,
-                    params,
-                    solve_spec,
-                    &[],
-                    analysis,
-                    &mut Quiet,
-                );
-                (solved.solution, solved.moving)
-            }
-            _ => {
-                let solution = solver.solve(model, &mut Quiet);
-                let moving = (solution.status == Status::Converged)
-                    .then(|| {
-                        let dt = solver.params.dt;
-                        crate::cycle::drift::still_moving(model, solution.cycles, dt)
-                    })
-                    .flatten();
-                (solution, moving)
+        let solution = solver.solve(model, &mut Quiet);
+        let moving = (solution.status == Status::Converged)
+            .then(|| {
+                let dt = solver.params.dt;
+                crate::cycle::drift::still_moving(model, solution.cycles, dt)
+            })
+            .flatten();
+        (solution, moving)
+    };
+    let solve = |model: &mut Model| match method {
+        Method::Implicit => {
+            let mut solver = Solver::new(model, solve_spec, 0);
+            let (cycle, params) = (&mut solver.cycle, &solver.params);
+            let solved =
+                implicit::solve_driven(model, cycle, params, solve_spec, &[], analysis, &mut Quiet);
+            match hand_over(solve_spec.method, &solved.solution, solved.sound) {
+                Some(_) => {
+                    let (rest, moving) = cycle_explicitly(model);
+                    (solved.solution.then(rest), moving)
+                }
+                None => (solved.solution, solved.moving),
             }
         }
+        _ => cycle_explicitly(model),
     };
     let stable_at_one = solution.status == Status::Converged;
     Ok(

@@ -418,6 +418,10 @@ fn a_factor_of_safety_that_cannot_be_searched_is_refused() {
         &with_fos("tunnel", json!({ "max_factor": 1 })),
         "stages[2].factor_of_safety.max_factor",
     );
+    refused(
+        &with_fos("tunnel", json!({ "displacement_limit": -0.1 })),
+        "stages[2].factor_of_safety.displacement_limit",
+    );
     let extra = with_fos("tunnel", json!({ "tolerance": 0.01, "extra": 1 }));
     let (code, err) = check_text(&extra.to_string(), "fos_extra");
     assert!(

@@ -21,14 +21,15 @@ use crate::Scene;
 use crate::implicit::Cost;
 use crate::model::Model;
 use crate::output::StageSummary;
-use crate::output::factor_of_safety::{FactorOfSafety, Trial};
+use crate::output::factor_of_safety::{FactorOfSafety, MovingBlock, Trial};
 use crate::solve::HistoryRow;
 
 /// The format's version: a checkpoint of another version is refused. 2: each stage's summary
 /// holds the block still moving at its convergence (`StageSummary::moving`). 3: a joint's state
 /// holds its shear path and mobilized JRC (the Barton–Bandis law). 4: each stage's summary holds
-/// its factor of safety (`StageSummary::factor_of_safety`).
-pub const VERSION: u32 = 4;
+/// its factor of safety (`StageSummary::factor_of_safety`). 5: each trial of it, its largest
+/// displacement (`Trial::displacement_m`), and the mechanism's blocks (`FactorOfSafety::mechanism`).
+pub const VERSION: u32 = 5;
 
 const MAGIC: &[u8; 8] = b"ADITCKPT";
 
@@ -170,6 +171,7 @@ impl Codec for FactorOfSafety {
         put(out, &self.unstable);
         put(out, &self.tolerance);
         put(out, &self.trials);
+        put(out, &self.mechanism);
     }
     fn get(r: &mut Reader) -> anyhow::Result<Self> {
         Ok(FactorOfSafety {
@@ -177,6 +179,22 @@ impl Codec for FactorOfSafety {
             unstable: Codec::get(r)?,
             tolerance: Codec::get(r)?,
             trials: Codec::get(r)?,
+            mechanism: Codec::get(r)?,
+        })
+    }
+}
+
+impl Codec for MovingBlock {
+    fn put(&self, out: &mut Vec<u8>) {
+        put(out, &self.block);
+        put(out, &self.at);
+        put(out, &self.displacement_m);
+    }
+    fn get(r: &mut Reader) -> anyhow::Result<Self> {
+        Ok(MovingBlock {
+            block: Codec::get(r)?,
+            at: Codec::get(r)?,
+            displacement_m: Codec::get(r)?,
         })
     }
 }
@@ -187,6 +205,7 @@ impl Codec for Trial {
         put(out, &self.stable);
         put(out, &self.status);
         put(out, &self.cycles);
+        put(out, &self.displacement_m);
         put(out, &self.moving);
     }
     fn get(r: &mut Reader) -> anyhow::Result<Self> {
@@ -195,6 +214,7 @@ impl Codec for Trial {
             stable: Codec::get(r)?,
             status: Codec::get(r)?,
             cycles: Codec::get(r)?,
+            displacement_m: Codec::get(r)?,
             moving: Codec::get(r)?,
         })
     }

@@ -12,6 +12,8 @@ pub struct Trial {
     pub status: String,
     /// Cycles (explicit) or iterations (implicit) the trial took.
     pub cycles: u64,
+    /// The largest displacement of a node during the trial, from the stage's equilibrium, m.
+    pub displacement_m: f64,
     /// The block still sliding when the trial converged (named with its speed), which makes it
     /// unstable; absent when none was.
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -31,11 +33,45 @@ pub struct FactorOfSafety {
     pub tolerance: f64,
     /// The trials in the order they ran (the stage's own solve at F = 1 not among them).
     pub trials: Vec<Trial>,
+    /// The blocks the mechanism moves (at the smallest unstable factor): each that moved at
+    /// least half as far as the farthest, farthest first (at most ten); empty when no trial was
+    /// unstable.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub mechanism: Vec<MovingBlock>,
+}
+
+/// A block of a mechanism and how far it moved.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct MovingBlock {
+    /// Its number (the zones' and contacts' `block`).
+    pub block: u32,
+    /// The mean of its nodes' positions, m.
+    pub at: [f64; 2],
+    /// Its largest node displacement from the stage's equilibrium, m.
+    pub displacement_m: f64,
 }
 
 impl FactorOfSafety {
-    /// One line for the console: the factor, its bracket and the trials.
+    /// One line for the console: the factor, its bracket and the trials, and the blocks of its
+    /// mechanism.
     pub fn describe(&self) -> String {
+        let moving = match self.mechanism.as_slice() {
+            [] => String::new(),
+            blocks => format!(
+                "; the mechanism moves block {} ({:.3} m at most)",
+                blocks
+                    .iter()
+                    .map(|b| format!("{} at ({:.1}, {:.1}) m", b.block, b.at[0], b.at[1]))
+                    .collect::<Vec<_>>()
+                    .join(", "),
+                blocks[0].displacement_m
+            ),
+        };
+        self.bracket() + &moving
+    }
+
+    /// The factor, its bracket and the trials.
+    fn bracket(&self) -> String {
         let trials = self.trials.len();
         match self.unstable {
             Some(u) if self.factor > 0.0 => format!(

@@ -149,6 +149,11 @@ pub struct FactorOfSafetySpec {
     /// smallest. A stage stable at it reports a factor of at least this.
     #[serde(default = "FactorOfSafetySpec::default_max_factor")]
     pub max_factor: f64,
+    /// A trial whose largest node displacement from the stage's equilibrium exceeds this is
+    /// unstable though its solve converged (a block that slid off and came to rest elsewhere),
+    /// m (positive; default 1 % of the region's size).
+    #[serde(default)]
+    pub displacement_limit: Option<f64>,
 }
 
 impl FactorOfSafetySpec {

@@ -59,6 +59,14 @@ fn validate_factor_of_safety(
             format!("must be in (1, 1000], got {}", Num(fos.max_factor)),
         ));
     }
+    if let Some(limit) = fos.displacement_limit
+        && !(limit > 0.0 && limit.is_finite())
+    {
+        return Err(invalid(
+            format!("{p}.displacement_limit"),
+            format!("must be positive, got {}", Num(limit)),
+        ));
+    }
     if mode != SolveMode::Static {
         return Err(invalid(
             p,

@@ -8,7 +8,10 @@
 //!
 //! A trial is stable when its solve reaches the stage's equilibrium criterion (`solve.ratio`)
 //! within its limit with no block still sliding (`cycle::drift`: the ratio cannot see a block
-//! sliding at its joints' strength, which carries no unbalanced force). Explicitly that is `solve.max_cycles` cycles: past its factor of safety the
+//! sliding at its joints' strength, which carries no unbalanced force) and no node moved further
+//! than `displacement_limit` from the stage's equilibrium (a block that slid off its plane and
+//! came to rest on the ground below is at equilibrium, but not where it stood: the unbounded
+//! displacement of Dawson et al., bounded by the model's edges). Explicitly that is `solve.max_cycles` cycles: past its factor of safety the
 //! rock's out-of-balance force does not fall, a mechanism accelerates and its displacement grows
 //! without bound (Dawson et al.'s non-convergence). Implicitly it is `solve.max_iterations` a
 //! load step with their cuts: past its factor of safety no displacement balances the loads and the
@@ -25,7 +28,7 @@ use crate::checkpoint::state;
 use crate::joint::JointLaw;
 use crate::law::ZoneLaw;
 use crate::model::{Materials, Model};
-pub use crate::output::factor_of_safety::{FactorOfSafety, Trial};
+pub use crate::output::factor_of_safety::{FactorOfSafety, MovingBlock, Trial};
 use crate::scene::FactorOfSafetySpec;
 use crate::setup::StagePlan;
 use crate::solve::{Solution, Status};
@@ -83,9 +86,11 @@ pub fn search(
     }
     let mut equilibrium = Vec::new();
     state::save(model, &mut equilibrium);
+    let at_rest = model.nodes.disp.clone();
+    let limit = (spec.displacement_limit).unwrap_or(DISPLACEMENT_LIMIT * model.size);
     let laws = Laws::of(&model.materials);
     let mut bracket = Bracket::new(stable_at_one, spec);
-    let (mut trials, mut mechanism) = (Vec::new(), None);
+    let (mut trials, mut mechanism, mut moving_blocks) = (Vec::new(), None, Vec::new());
     while let Some(factor) = bracket.next() {
         restore(model, &equilibrium)?;
         laws.reduced(factor).put(&mut model.materials);
@@ -95,11 +100,14 @@ pub fn search(
             laws.put(&mut model.materials);
             return Ok(Searched::Interrupted);
         }
-        let stable = solution.status == Status::Converged && moving.is_none();
+        let displacement = largest_move(&at_rest, &model.nodes.disp);
+        let stable =
+            solution.status == Status::Converged && moving.is_none() && displacement <= limit;
         if !stable {
             let mut at = Vec::new();
             state::save(model, &mut at);
             mechanism = Some(at);
+            moving_blocks = moved_blocks(model, &at_rest);
         }
         bracket.record(factor, stable);
         trials.push(Trial {
@@ -107,6 +115,7 @@ pub fn search(
             stable,
             status: solution.status.label().to_string(),
             cycles: solution.cycles,
+            displacement_m: displacement,
             moving,
         });
     }
@@ -117,8 +126,44 @@ pub fn search(
         unstable: bracket.unstable.is_finite().then_some(bracket.unstable),
         tolerance: spec.tolerance,
         trials,
+        mechanism: moving_blocks,
     };
     Ok(Searched::Found(found, mechanism))
+}
+
+/// The default `displacement_limit`: this fraction of the region's size.
+pub const DISPLACEMENT_LIMIT: f64 = 0.01;
+
+/// The largest distance between a node's displacement in `from` and in `to`, m.
+fn largest_move(from: &[[f64; 2]], to: &[[f64; 2]]) -> f64 {
+    (from.iter().zip(to))
+        .map(|(a, b)| (b[0] - a[0]).hypot(b[1] - a[1]))
+        .fold(0.0, f64::max)
+}
+
+/// The most blocks a mechanism names.
+const MECHANISM_BLOCKS: usize = 10;
+
+/// The blocks of `model` that moved from `at_rest` (the nodes' displacements) at least half as
+/// far as the farthest, farthest first, at most [`MECHANISM_BLOCKS`].
+fn moved_blocks(model: &Model, at_rest: &[[f64; 2]]) -> Vec<MovingBlock> {
+    let blocks = &model.blocks;
+    let mut moved: Vec<MovingBlock> = (0..blocks.len())
+        .filter(|&b| !blocks.is_removed(b))
+        .map(|b| {
+            let nodes = blocks.node_start[b] as usize..blocks.node_start[b + 1] as usize;
+            MovingBlock {
+                block: b as u32,
+                at: blocks.node_mean(b, &model.nodes.pos),
+                displacement_m: largest_move(&at_rest[nodes.clone()], &model.nodes.disp[nodes]),
+            }
+        })
+        .collect();
+    let farthest = moved.iter().map(|m| m.displacement_m).fold(0.0, f64::max);
+    moved.retain(|m| m.displacement_m >= 0.5 * farthest && farthest > 0.0);
+    moved.sort_by(|a, b| b.displacement_m.total_cmp(&a.displacement_m));
+    moved.truncate(MECHANISM_BLOCKS);
+    moved
 }
 
 /// Put a state saved by `checkpoint::state::save` of this model back into it.
@@ -218,6 +263,7 @@ mod tests {
         FactorOfSafetySpec {
             tolerance,
             max_factor: 100.0,
+            displacement_limit: None,
         }
     }
 
@@ -295,6 +341,14 @@ mod tests {
                     "{f:?} {exact}"
                 );
                 assert!(unstable - f.factor <= 0.005 * f.factor, "{f:?}");
+                // The mechanism is the block on the plane, the base's block standing still.
+                let [moving] = f.mechanism.as_slice() else {
+                    panic!("one block moves: {:?}", f.mechanism)
+                };
+                assert!(
+                    (moving.at[0] - 2.5).abs() < 0.5 && moving.at[1] > 1.0,
+                    "{moving:?}"
+                );
                 found.push(f.factor);
             }
             assert!((found[0] - found[1]).abs() <= 0.01 * found[0], "{found:?}");

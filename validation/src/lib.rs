@@ -40,6 +40,7 @@ pub mod salencon;
 pub mod scale;
 pub mod scaling;
 pub mod slivers;
+pub mod slope;
 pub mod softening;
 pub mod stiff_joints;
 pub mod strength_reduction;

@@ -31,6 +31,7 @@ mod salencon;
 mod scale;
 mod shallow;
 mod slivers;
+mod slope;
 mod softening;
 mod spalling;
 mod stiff_joints;
@@ -81,5 +82,6 @@ pub fn all() -> Vec<Box<dyn Case>> {
         Box::new(column::Column),
         Box::new(column_slide::ColumnSlide),
         Box::new(strength_reduction::StrengthReduction),
+        Box::new(slope::Slope),
     ]
 }
