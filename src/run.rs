@@ -9,6 +9,7 @@ use crate::implicit::{self, Method};
 use crate::model::Model;
 use crate::model::bodies::BodyMode;
 use crate::output::atomic::write_atomic;
+use crate::output::histories::{Probes, Samples};
 use crate::output::{FarFieldSummary, OutputWriter, StageSummary, Summary, measured};
 use crate::scene::Scene;
 use crate::scene::{SolveMethod, SolveMode};
@@ -44,6 +45,11 @@ struct Writing<'a> {
     output_seconds: f64,
     error: Option<anyhow::Error>,
     offset: u64,
+    /// The monitoring points, their samples so far, and the cycle (from the start of the run)
+    /// and time of the last monitor step.
+    probes: &'a Probes,
+    samples: &'a mut Samples,
+    at: (u64, f64),
 }
 
 impl Observer for Writing<'_> {
@@ -55,7 +61,20 @@ impl Observer for Writing<'_> {
         if let Err(e) = self.writer.append_history(&row) {
             self.error.get_or_insert(e.into());
         }
+        self.at = (row.cycle, row.time);
         self.inner.monitored(&row);
+    }
+    fn sampled(&mut self, model: &Model) {
+        if self.probes.is_empty() {
+            return;
+        }
+        let values = self.probes.sample(model);
+        let (cycle, time) = self.at;
+        let header = self.probes.header();
+        if let Err(e) = self.writer.append_samples(&header, cycle, time, &values) {
+            self.error.get_or_insert(e.into());
+        }
+        self.samples.push(cycle, time, values);
     }
     fn factorized(&mut self, bytes: usize, seconds: f64) {
         self.inner.factorized(bytes, seconds);
@@ -291,6 +310,7 @@ fn build_solve_write(
     let mut output_seconds = 0.0;
     let mut last: Option<(Solver, Solution, usize)> = None;
     refuse_before_solving(plan, model)?;
+    let probes = Probes::of(&scene.histories, model, &plan.fill)?;
     // Going on from a checkpoint: the stages before replayed (what the state does not hold),
     // then the state put in.
     let so_far = match resumed {
@@ -314,12 +334,17 @@ fn build_solve_write(
                 run.stages_done
             );
             writer.resume(&run.steps, &run.history)?;
+            for k in 0..run.samples.len() {
+                let s = &run.samples;
+                writer.append_samples(&probes.header(), s.cycle[k], s.time[k], &s.values[k])?;
+            }
             run
         }
         None => RunSoFar::default(),
     };
     let RunSoFar {
         mut history,
+        mut samples,
         mut cycles,
         summaries: mut stage_summaries,
         mut methods,
@@ -343,6 +368,9 @@ fn build_solve_write(
             output_seconds: 0.0,
             error: None,
             offset: cycles,
+            probes: &probes,
+            samples: &mut samples,
+            at: (cycles, 0.0),
         };
         let (mut handed_over, mut implicit_moving) = (None, None);
         let solution = match method {
@@ -441,6 +469,7 @@ fn build_solve_write(
                 stages_done: i + 1,
                 cycles,
                 history: history.clone(),
+                samples: samples.clone(),
                 summaries: stage_summaries.clone(),
                 methods: methods.clone(),
                 implicit: implicit_cost,
@@ -473,17 +502,31 @@ fn build_solve_write(
     };
     let t = Instant::now();
     writer.write_history(&solution.history)?;
+    if !probes.is_empty() {
+        writer.write_histories(&probes.header(), &samples)?;
+    }
     if plan.staged {
         writer.write_ground_reaction(&stage_summaries, &plan.excavations)?;
     }
     let excavations: &[String] = if plan.staged { &plan.excavations } else { &[] };
-    let plot_warnings = crate::output::plots::write_plots(
+    let mut plot_warnings = crate::output::plots::write_plots(
         &writer.dir,
         &solution.history,
         &stage_summaries,
         excavations,
         model,
     );
+    if !crate::interrupt::requested() {
+        let ends: Vec<u64> = (stage_summaries.iter())
+            .scan(0, |done, s| {
+                *done += s.cycles;
+                Some(*done)
+            })
+            .collect();
+        let columns = probes.columns();
+        let drawn = crate::output::histories_plot::write(&writer.dir, columns, &samples, &ends);
+        plot_warnings.extend(drawn);
+    }
     output_seconds += t.elapsed().as_secs_f64();
     seconds.output = output_seconds;
     let wall = start.elapsed().as_secs_f64();

@@ -83,6 +83,9 @@ impl Solution {
 pub trait Observer: Send {
     /// After each monitor step.
     fn monitored(&mut self, _row: &HistoryRow) {}
+    /// After each monitor step, right after `monitored`: the model as it is then (the
+    /// monitoring points read it).
+    fn sampled(&mut self, _model: &Model) {}
     /// When an intermediate output step is due (every `output_every` cycles).
     fn output_step(&mut self, _cycle: u64, _time: f64, _model: &Model, _cycle_state: &mut Cycle) {}
     /// After an implicit solve factorized its stiffness: the factor's size (bytes of its
@@ -175,6 +178,7 @@ impl Solver {
                 };
                 history.push(row);
                 observer.monitored(&row);
+                observer.sampled(model);
                 if last.ratio <= self.spec.ratio && cycle > self.spec.ramp {
                     break Status::Converged;
                 }

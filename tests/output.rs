@@ -507,3 +507,78 @@ fn a_state_that_is_not_finite_fails_the_run() {
     assert!(summary.contains("\"failed\""), "{summary}");
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// Monitoring points (`histories`): `histories.csv` has a row per monitor step, as
+/// `history.csv`, a column per point named with its quantity and unit, and its last row holds
+/// the model's own values at the end (the node nearest the crown, the zone holding the point);
+/// `histories.png` is drawn.
+#[test]
+fn monitoring_points_record_the_models_values() {
+    let mut s = small_scene();
+    s.solve.max_cycles = 2000;
+    let text = r#"[
+        { "name": "crown", "at": [0, 1], "quantity": "displacement_y" },
+        { "name": "side, 0.5 m in", "at": [1.5, 0], "quantity": "stress_yy" }
+    ]"#;
+    s.histories = serde_json::from_str(text).unwrap();
+    let out = out_dir("histories");
+    let r = run_scene(&s, &out, &mut Quiet).unwrap();
+    let csv = std::fs::read_to_string(out.join("histories.csv")).unwrap();
+    let lines: Vec<&str> = csv.lines().collect();
+    assert_eq!(
+        lines[0],
+        "cycle,time_s,crown:displacement_y_m,\"side, 0.5 m in:stress_yy_pa\""
+    );
+    let history = std::fs::read_to_string(out.join("history.csv")).unwrap();
+    assert_eq!(lines.len(), history.lines().count());
+    let last: Vec<f64> = lines
+        .last()
+        .unwrap()
+        .split(',')
+        .map(|v| v.parse().unwrap())
+        .collect();
+    let m = &r.built.model;
+    let crown = (0..m.nodes.len())
+        .min_by(|&a, &b| {
+            let d = |n: usize| m.nodes.pos[n][0].hypot(m.nodes.pos[n][1] - 1.0);
+            d(a).total_cmp(&d(b))
+        })
+        .unwrap();
+    assert_eq!(last[0], r.summary.cycles as f64);
+    assert_eq!(last[2], m.nodes.disp[crown][1] - m.nodes.origin[crown][1]);
+    // The crown moves down under the vertical stress; the side carries about 3 × 20 MPa less
+    // the decay 0.5 m in.
+    assert!(last[2] < -1e-3, "{last:?}");
+    assert!(last[3] < -20e6 && last[3] > -60e6, "{last:?}");
+    assert!(out.join("histories.png").exists());
+}
+
+#[test]
+fn monitoring_points_are_checked() {
+    let bad = |text: &str, field: &str| {
+        let mut v: serde_json::Value =
+            serde_json::from_str(include_str!("../models/kirsch.json")).unwrap();
+        v["histories"] = serde_json::from_str(text).unwrap();
+        let err = Scene::from_json(&v.to_string(), "kirsch")
+            .unwrap_err()
+            .to_string();
+        assert!(err.contains(field), "{err}");
+    };
+    bad(
+        r#"[{ "name": "far", "at": [500, 0], "quantity": "displacement_x" }]"#,
+        "histories[0].at",
+    );
+    bad(
+        r#"[{ "name": "a", "at": [0, 1], "quantity": "displacement_x" },
+            { "name": "a", "at": [0, 2], "quantity": "displacement_y" }]"#,
+        "histories[1].name",
+    );
+    bad(
+        r#"[{ "name": "bolt", "at": [0, 1], "quantity": "bolt_force" }]"#,
+        "histories[0].quantity",
+    );
+    bad(
+        r#"[{ "name": "x", "at": [0, 1], "quantity": "temperature" }]"#,
+        "unknown variant `temperature`",
+    );
+}

@@ -22,6 +22,7 @@ use crate::implicit::Cost;
 use crate::model::Model;
 use crate::output::StageSummary;
 use crate::output::factor_of_safety::{FactorOfSafety, MovingBlock, Trial};
+use crate::output::histories::Samples;
 use crate::solve::HistoryRow;
 
 /// The format's version: a checkpoint of another version is refused. 2: each stage's summary
@@ -29,7 +30,8 @@ use crate::solve::HistoryRow;
 /// holds its shear path and mobilized JRC (the Barton–Bandis law). 4: each stage's summary holds
 /// its factor of safety (`StageSummary::factor_of_safety`). 5: each trial of it, its largest
 /// displacement (`Trial::displacement_m`), and the mechanism's blocks (`FactorOfSafety::mechanism`).
-pub const VERSION: u32 = 5;
+/// 6: the monitoring points' samples (`RunSoFar::samples`).
+pub const VERSION: u32 = 6;
 
 const MAGIC: &[u8; 8] = b"ADITCKPT";
 
@@ -40,6 +42,8 @@ pub struct RunSoFar {
     pub stages_done: usize,
     pub cycles: u64,
     pub history: Vec<HistoryRow>,
+    /// The monitoring points' samples (`histories.csv`).
+    pub samples: Samples,
     pub summaries: Vec<StageSummary>,
     pub methods: Vec<String>,
     pub implicit: Option<Cost>,
@@ -71,6 +75,7 @@ pub fn encode(scene: &Scene, run: &RunSoFar, model: &Model) -> Vec<u8> {
     put(&mut out, &run.stages_done);
     put(&mut out, &run.cycles);
     put(&mut out, &run.history);
+    put(&mut out, &run.samples);
     put(&mut out, &run.summaries);
     put(&mut out, &run.methods);
     put(&mut out, &run.implicit);
@@ -101,6 +106,7 @@ pub fn decode(bytes: &[u8], scene: &Scene, model: &mut Model) -> anyhow::Result<
         stages_done: Codec::get(&mut r)?,
         cycles: Codec::get(&mut r)?,
         history: Codec::get(&mut r)?,
+        samples: Codec::get(&mut r)?,
         summaries: Codec::get(&mut r)?,
         methods: Codec::get(&mut r)?,
         implicit: Codec::get(&mut r)?,
@@ -180,6 +186,21 @@ impl Codec for FactorOfSafety {
             tolerance: Codec::get(r)?,
             trials: Codec::get(r)?,
             mechanism: Codec::get(r)?,
+        })
+    }
+}
+
+impl Codec for Samples {
+    fn put(&self, out: &mut Vec<u8>) {
+        put(out, &self.cycle);
+        put(out, &self.time);
+        put(out, &self.values);
+    }
+    fn get(r: &mut Reader) -> anyhow::Result<Self> {
+        Ok(Samples {
+            cycle: Codec::get(r)?,
+            time: Codec::get(r)?,
+            values: Codec::get(r)?,
         })
     }
 }

@@ -369,6 +369,7 @@ pub fn solve_driven(
         };
         history.push(row);
         observer.monitored(&row);
+        observer.sampled(model);
         if m.ratio <= ratio {
             if steps.is_last() {
                 break Status::Converged;

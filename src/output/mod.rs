@@ -9,6 +9,8 @@ pub mod arrays;
 pub mod atomic;
 pub mod capacity_plot;
 pub mod factor_of_safety;
+pub mod histories;
+pub mod histories_plot;
 pub mod joints_vtu;
 pub mod lock;
 pub mod plots;
@@ -43,6 +45,8 @@ pub struct OutputWriter {
     /// That file, from the first row on, flushed at each row, so that a killed run keeps its
     /// history; rewritten whole and atomically at the end.
     history: Option<std::io::BufWriter<std::fs::File>>,
+    /// `histories.csv` (monitoring points) as `history` is.
+    histories: Option<std::io::BufWriter<std::fs::File>>,
     /// The folder held for the run (`for_run`), given back when the writer is dropped.
     _lock: Option<lock::FolderLock>,
 }
@@ -60,6 +64,7 @@ impl OutputWriter {
             first_stage: 0,
             live_history: false,
             history: None,
+            histories: None,
             _lock: None,
         })
     }
@@ -170,6 +175,47 @@ impl OutputWriter {
         };
         history_row(h, r)?;
         h.flush()
+    }
+
+    /// Add a row of the monitoring points' `values` at `cycle` and `time` (s) to the
+    /// `histories.csv` a run writes as it goes, started with `header` (nothing for other writers).
+    pub fn append_samples(
+        &mut self,
+        header: &str,
+        cycle: u64,
+        time: f64,
+        values: &[f64],
+    ) -> std::io::Result<()> {
+        if !self.live_history {
+            return Ok(());
+        }
+        let h = match &mut self.histories {
+            Some(h) => h,
+            None => {
+                let file = std::fs::File::create(self.dir.join("histories.csv"))?;
+                let mut h = std::io::BufWriter::new(file);
+                writeln!(h, "{header}")?;
+                self.histories.insert(h)
+            }
+        };
+        histories::row(h, cycle, time, values)?;
+        h.flush()
+    }
+
+    /// Write `histories.csv` whole: `header`, then a row per sample.
+    pub fn write_histories(
+        &mut self,
+        header: &str,
+        samples: &histories::Samples,
+    ) -> std::io::Result<()> {
+        self.histories = None;
+        write_atomic(&self.dir.join("histories.csv"), |w| {
+            writeln!(w, "{header}")?;
+            for k in 0..samples.len() {
+                histories::row(w, samples.cycle[k], samples.time[k], &samples.values[k])?;
+            }
+            Ok(())
+        })
     }
 
     /// Write a `summary.json` that holds only the scene name, a status and, if given, the reason:
@@ -495,8 +541,10 @@ fn is_run_output(file: &str, name: &str) -> bool {
         Some(inner) => inner,
         None => file,
     };
-    const FILES: [&str; 7] = [
+    const FILES: [&str; 9] = [
         "history.csv",
+        "histories.csv",
+        "histories.png",
         "ground_reaction.csv",
         "summary.json",
         "history.png",

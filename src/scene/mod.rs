@@ -82,8 +82,68 @@ pub struct Scene {
     /// stage's `excavate` are filled with rock until that stage.
     #[serde(default)]
     pub stages: Vec<Stage>,
+    /// Monitoring points: a quantity at a point, recorded every monitor step into
+    /// `histories.csv` (UDEC's and FLAC's `history`).
+    #[serde(default)]
+    pub histories: Vec<HistorySpec>,
     #[serde(default)]
     pub output: OutputSpec,
+}
+
+/// One monitoring point: what is recorded where.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct HistorySpec {
+    /// Name, the start of its column in `histories.csv`.
+    pub name: String,
+    /// The point, m: the node nearest it (displacement, velocity), the zone holding it (stress),
+    /// the bolt segment or liner element whose middle is nearest it (support forces).
+    pub at: [f64; 2],
+    /// What is recorded.
+    pub quantity: HistoryQuantity,
+}
+
+/// A quantity a monitoring point records (tension positive; displacements since the last
+/// `reset_displacements`, as the output shows them).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum HistoryQuantity {
+    /// Displacement components and magnitude, m.
+    DisplacementX,
+    DisplacementY,
+    Displacement,
+    /// Velocity components, m/s.
+    VelocityX,
+    VelocityY,
+    /// Zone stress components, Pa.
+    StressXx,
+    StressYy,
+    StressXy,
+    /// A bolt segment's axial force per bolt, N (tension positive).
+    BoltForce,
+    /// A liner element's thrust per set, N (compression positive), and its mean bending moment
+    /// per set, N·m.
+    LinerThrust,
+    LinerMoment,
+}
+
+impl HistoryQuantity {
+    /// Its name and unit as a column of `histories.csv` (`displacement_x_m`, …).
+    pub fn column(self) -> &'static str {
+        match self {
+            HistoryQuantity::DisplacementX => "displacement_x_m",
+            HistoryQuantity::DisplacementY => "displacement_y_m",
+            HistoryQuantity::Displacement => "displacement_m",
+            HistoryQuantity::VelocityX => "velocity_x_m_per_s",
+            HistoryQuantity::VelocityY => "velocity_y_m_per_s",
+            HistoryQuantity::StressXx => "stress_xx_pa",
+            HistoryQuantity::StressYy => "stress_yy_pa",
+            HistoryQuantity::StressXy => "stress_xy_pa",
+            HistoryQuantity::BoltForce => "bolt_force_n",
+            HistoryQuantity::LinerThrust => "liner_thrust_n",
+            HistoryQuantity::LinerMoment => "liner_moment_n_m",
+        }
+    }
 }
 
 /// One stage: what changes, then a solve; each stage ends with an output step.

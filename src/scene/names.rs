@@ -103,6 +103,9 @@ impl Scene {
         for (i, b) in self.bolts.iter().enumerate() {
             check_name(&format!("bolts[{i}].name"), &b.name)?;
         }
+        for (i, h) in self.histories.iter().enumerate() {
+            check_name(&format!("histories[{i}].name"), &h.name)?;
+        }
         for (i, l) in self.liners.iter().enumerate() {
             check_name(&format!("liners[{i}].name"), &l.name)?;
         }

@@ -748,11 +748,66 @@ impl Scene {
             ));
         }
         self.validate_supports()?;
+        self.validate_histories()?;
         self.validate_stages()?;
         self.validate_realization()?;
         self.validate_stress_magnitudes()?;
         self.validate_feature_sizes()?;
         self.validate_limits()
+    }
+
+    /// Monitoring points: distinct names, a point within the region's bounds, and a support of
+    /// the kind a support quantity asks for.
+    fn validate_histories(&self) -> Result<(), SceneError> {
+        let (lo, hi) = self.region.polygon.iter().fold(
+            ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]),
+            |(lo, hi), p| {
+                (
+                    [lo[0].min(p[0]), lo[1].min(p[1])],
+                    [hi[0].max(p[0]), hi[1].max(p[1])],
+                )
+            },
+        );
+        for (i, h) in self.histories.iter().enumerate() {
+            let p = format!("histories[{i}]");
+            if self.histories[..i].iter().any(|o| o.name == h.name) {
+                return Err(invalid(
+                    format!("{p}.name"),
+                    format!("'{}' is used twice", h.name),
+                ));
+            }
+            let inside = (0..2).all(|d| h.at[d] >= lo[d] && h.at[d] <= hi[d]);
+            if !inside {
+                return Err(invalid(
+                    format!("{p}.at"),
+                    format!(
+                        "({}, {}) m is outside the region (x in [{}, {}], y in [{}, {}] m)",
+                        Num(h.at[0]),
+                        Num(h.at[1]),
+                        Num(lo[0]),
+                        Num(hi[0]),
+                        Num(lo[1]),
+                        Num(hi[1])
+                    ),
+                ));
+            }
+            use super::HistoryQuantity as Q;
+            let missing = match h.quantity {
+                Q::BoltForce if self.bolts.is_empty() => Some("bolts"),
+                Q::LinerThrust | Q::LinerMoment if self.liners.is_empty() => Some("liners"),
+                _ => None,
+            };
+            if let Some(kind) = missing {
+                return Err(invalid(
+                    format!("{p}.quantity"),
+                    format!(
+                        "'{}' needs {kind}, and the scene has none",
+                        h.quantity.column()
+                    ),
+                ));
+            }
+        }
+        Ok(())
     }
 
     fn validate_stages(&self) -> Result<(), SceneError> {

@@ -1,0 +1,218 @@
+//! Monitoring points (`histories`, UDEC's and FLAC's `history`): each a quantity at a point,
+//! sampled at every monitor step of every stage into `histories.csv` (cycle, time, one column
+//! per point, `<name>:<quantity>_<unit>`) and drawn in `histories.png`.
+//!
+//! A point is found once, when the run starts: the node nearest it (displacement, velocity;
+//! displacements since the last `reset_displacements`, as the output shows them), the zone that
+//! holds it or else the zone whose centroid is nearest (stress; an excavated zone holds none), the
+//! bolt segment or liner element whose middle is nearest (support forces, per bolt and per set).
+
+use std::io::Write;
+
+use crate::model::Model;
+use crate::scene::{HistoryQuantity, HistorySpec};
+use crate::setup::NOT_FILL;
+
+/// What a monitoring point reads: the quantity and the node, zone, segment or element.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Probe {
+    quantity: HistoryQuantity,
+    /// Node, zone, bolt segment or liner element.
+    at: usize,
+}
+
+/// The monitoring points of a run, found in its model, and their column names.
+#[derive(Debug, Clone, Default)]
+pub struct Probes {
+    probes: Vec<Probe>,
+    columns: Vec<String>,
+}
+
+/// Index of the item of `points` nearest `p` (the first of equals); none when there are none.
+fn nearest(points: impl Iterator<Item = [f64; 2]>, p: [f64; 2]) -> Option<usize> {
+    points
+        .map(|q| (q[0] - p[0]).hypot(q[1] - p[1]))
+        .enumerate()
+        .min_by(|a, b| a.1.total_cmp(&b.1))
+        .map(|(i, _)| i)
+}
+
+/// Whether `p` lies in the triangle `t` (its edges included).
+fn in_triangle(t: [[f64; 2]; 3], p: [f64; 2]) -> bool {
+    let side =
+        |a: [f64; 2], b: [f64; 2]| (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]);
+    let s = [side(t[0], t[1]), side(t[1], t[2]), side(t[2], t[0])];
+    s.iter().all(|&v| v >= 0.0) || s.iter().all(|&v| v <= 0.0)
+}
+
+impl Probes {
+    /// The points of `specs` in `model`, whose blocks `fill` (`Plan::fill`: the staged
+    /// excavation whose rock each block is, or `NOT_FILL`) are left out: a wall point reads the
+    /// wall, not the rock a stage removes (`histories[i]` errors name the field).
+    pub fn of(specs: &[HistorySpec], model: &Model, fill: &[u32]) -> anyhow::Result<Probes> {
+        let mut probes = Probes::default();
+        for (i, h) in specs.iter().enumerate() {
+            let at = Self::find(h, model, fill).ok_or_else(|| {
+                anyhow::anyhow!(
+                    "histories[{i}]: nothing in the model to read {} from",
+                    h.quantity.column()
+                )
+            })?;
+            probes.probes.push(Probe {
+                quantity: h.quantity,
+                at,
+            });
+            probes
+                .columns
+                .push(format!("{}:{}", h.name, h.quantity.column()));
+        }
+        Ok(probes)
+    }
+
+    /// The node, zone, segment or element `h` reads.
+    fn find(h: &HistorySpec, model: &Model, fill: &[u32]) -> Option<usize> {
+        use HistoryQuantity as Q;
+        let nodes = &model.nodes.pos;
+        let blocks = &model.blocks;
+        let rock = |b: usize| fill.get(b).is_none_or(|&f| f == NOT_FILL);
+        // The nearest of `items` (by `place`) that lie in rock, as an index among all.
+        let nearest_in_rock = |items: Vec<usize>, place: &dyn Fn(usize) -> [f64; 2]| {
+            let k = nearest(items.iter().map(|&i| place(i)), h.at)?;
+            Some(items[k])
+        };
+        match h.quantity {
+            Q::DisplacementX | Q::DisplacementY | Q::Displacement | Q::VelocityX | Q::VelocityY => {
+                let candidates = (0..nodes.len())
+                    .filter(|&n| rock(blocks.block_of_node(n as u32)))
+                    .collect();
+                nearest_in_rock(candidates, &|n| nodes[n])
+            }
+            Q::StressXx | Q::StressYy | Q::StressXy => {
+                let zones = &model.zones;
+                let corners = |z: usize| zones.nodes[z].map(|n| nodes[n as usize]);
+                let candidates: Vec<usize> = (0..zones.len())
+                    .filter(|&z| rock(blocks.block_of_node(zones.nodes[z][0])))
+                    .collect();
+                (candidates.iter().copied())
+                    .find(|&z| in_triangle(corners(z), h.at))
+                    .or_else(|| nearest_in_rock(candidates, &|z| zones.centroid(z, nodes)))
+            }
+            Q::BoltForce => {
+                let c = &model.supports.cables;
+                let middle = |s: &[u32; 2]| {
+                    let [a, b] = s.map(|n| c.pos[n as usize]);
+                    [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])]
+                };
+                nearest(c.segment.iter().map(middle), h.at)
+            }
+            Q::LinerThrust | Q::LinerMoment => {
+                let l = &model.supports.liners;
+                nearest((0..l.element.len()).map(|e| l.middle(e)), h.at)
+            }
+        }
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.probes.is_empty()
+    }
+
+    /// The header of `histories.csv`.
+    pub fn header(&self) -> String {
+        let mut h = String::from("cycle,time_s");
+        for c in &self.columns {
+            h.push(',');
+            h.push_str(&super::csv_field(c));
+        }
+        h
+    }
+
+    /// The columns' names.
+    pub fn columns(&self) -> &[String] {
+        &self.columns
+    }
+
+    /// Every point's value in `model` now.
+    pub fn sample(&self, model: &Model) -> Vec<f64> {
+        use HistoryQuantity as Q;
+        let (nodes, zones) = (&model.nodes, &model.zones);
+        let (cables, liners) = (&model.supports.cables, &model.supports.liners);
+        let moved = |n: usize| {
+            let (u, o) = (nodes.disp[n], nodes.origin[n]);
+            [u[0] - o[0], u[1] - o[1]]
+        };
+        (self.probes.iter())
+            .map(|p| match p.quantity {
+                Q::DisplacementX => moved(p.at)[0],
+                Q::DisplacementY => moved(p.at)[1],
+                Q::Displacement => {
+                    let u = moved(p.at);
+                    u[0].hypot(u[1])
+                }
+                Q::VelocityX => nodes.vel[p.at][0],
+                Q::VelocityY => nodes.vel[p.at][1],
+                Q::StressXx => zones.stress[p.at][0],
+                Q::StressYy => zones.stress[p.at][1],
+                Q::StressXy => zones.stress[p.at][3],
+                Q::BoltForce => cables.bolt_force(p.at),
+                Q::LinerThrust => liners.section_forces(p.at)[0].thrust,
+                Q::LinerMoment => {
+                    let [a, b] = liners.section_forces(p.at);
+                    0.5 * (a.moment + b.moment)
+                }
+            })
+            .collect()
+    }
+}
+
+/// One row of `histories.csv`.
+pub fn row(w: &mut dyn Write, cycle: u64, time: f64, values: &[f64]) -> std::io::Result<()> {
+    write!(w, "{cycle},{time:e}")?;
+    for v in values {
+        write!(w, ",{v:e}")?;
+    }
+    writeln!(w)
+}
+
+/// The samples of a run: one row of values per monitor step, with its cycle (from the start of
+/// the run) and time, s.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Samples {
+    pub cycle: Vec<u64>,
+    pub time: Vec<f64>,
+    pub values: Vec<Vec<f64>>,
+}
+
+impl Samples {
+    pub fn push(&mut self, cycle: u64, time: f64, values: Vec<f64>) {
+        self.cycle.push(cycle);
+        self.time.push(time);
+        self.values.push(values);
+    }
+
+    pub fn len(&self) -> usize {
+        self.cycle.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.cycle.is_empty()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_point_is_in_the_triangle_around_it_and_on_its_edges() {
+        let t = [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]];
+        assert!(in_triangle(t, [0.2, 0.2]));
+        assert!(in_triangle(t, [0.5, 0.0]));
+        assert!(!in_triangle(t, [0.6, 0.6]));
+        let clockwise = [t[0], t[2], t[1]];
+        assert!(in_triangle(clockwise, [0.2, 0.2]));
+        assert_eq!(
+            nearest([[0.0, 0.0], [2.0, 0.0]].into_iter(), [1.5, 0.1]),
+            Some(1)
+        );
+    }
+}
