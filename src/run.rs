@@ -441,6 +441,7 @@ fn build_solve_write(
             final_ratio: measured(solution.final_ratio),
             support_fraction: staging.support_fraction(),
             closure: staging.closures(model, plan),
+            walls: staging.wall_moves(model, plan),
             factor_of_safety: fos.found,
             moving: match (&solution.status, spec.mode) {
                 (Status::Converged, SolveMode::Static) => {

@@ -4,7 +4,10 @@
 
 use adit_meshing::BoundaryEdge;
 
+use std::collections::BTreeMap;
+
 use crate::model::{FIX_X, FIX_Y, MaterialId, Model, traction};
+use crate::output::WallMoves;
 use crate::setup::{
     BoundaryEffect, NOT_FILL, Plan, StagePlan, add_body_weight, add_tractions, add_zone_weight,
     rock_walls,
@@ -146,9 +149,88 @@ impl Staging {
         out
     }
 
+    /// How the wall of each excavation made so far moved (`WallMoves`): of its rock wall nodes
+    /// (by their place at the start), the crown and the invert are those within 1 % of the
+    /// wall's height of its top and its bottom nearest its vertical mid-line, the sidewalls those
+    /// within 1 % of its width of its leftmost and rightmost nearest its mid-height (a flat roof,
+    /// floor or wall is read at its middle, not at a corner); displacements since the start of
+    /// the run.
+    pub fn wall_moves(&self, model: &Model, plan: &Plan) -> BTreeMap<String, WallMoves> {
+        let m = model;
+        let pos = &m.nodes.pos;
+        let mut out = BTreeMap::new();
+        for (j, support) in self.support.iter().enumerate() {
+            if support.is_none() {
+                continue;
+            }
+            let nodes: Vec<usize> =
+                rock_walls(&plan.boundary.edges, &m.blocks, &plan.fill, j as u32)
+                    .flat_map(|e| e.nodes.map(|n| n as usize))
+                    .collect();
+            let Some(points) = WallPoints::of(&nodes, pos) else {
+                continue;
+            };
+            let u = |n: usize| m.nodes.disp[n];
+            let moves = WallMoves::of(
+                u(points.crown),
+                u(points.invert),
+                u(points.left),
+                u(points.right),
+            );
+            // A failed run's state may not be finite: its moves are left out, not written null.
+            if moves.is_finite() {
+                out.insert(plan.excavations[j].clone(), moves);
+            }
+        }
+        out
+    }
+
     /// The support fraction now applied (that of the last stage).
     pub fn support_fraction(&self) -> f64 {
         self.support.iter().flatten().copied().next().unwrap_or(0.0)
+    }
+}
+
+/// The nodes `WallMoves` reads on one wall (`Staging::wall_moves`).
+struct WallPoints {
+    crown: usize,
+    invert: usize,
+    left: usize,
+    right: usize,
+}
+
+impl WallPoints {
+    /// Of the wall nodes `nodes` at positions `pos`; none without nodes.
+    fn of(nodes: &[usize], pos: &[[f64; 2]]) -> Option<WallPoints> {
+        let (lo, hi) = nodes.iter().fold(
+            ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]),
+            |(lo, hi), &n| {
+                let p = pos[n];
+                (
+                    [lo[0].min(p[0]), lo[1].min(p[1])],
+                    [hi[0].max(p[0]), hi[1].max(p[1])],
+                )
+            },
+        );
+        let mid = [0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1])];
+        let tol = [0.01 * (hi[0] - lo[0]), 0.01 * (hi[1] - lo[1])];
+        // Of the nodes whose coordinate `d` is within tolerance of `edge`, the nearest the
+        // mid-line across it.
+        let pick = |d: usize, edge: f64| {
+            let across = 1 - d;
+            (nodes.iter().copied())
+                .filter(|&n| (pos[n][d] - edge).abs() <= tol[d])
+                .min_by(|&a, &b| {
+                    let off = |n: usize| (pos[n][across] - mid[across]).abs();
+                    off(a).total_cmp(&off(b))
+                })
+        };
+        Some(WallPoints {
+            crown: pick(1, hi[1])?,
+            invert: pick(1, lo[1])?,
+            left: pick(0, lo[0])?,
+            right: pick(0, hi[0])?,
+        })
     }
 }
 

@@ -582,3 +582,33 @@ fn monitoring_points_are_checked() {
         "unknown variant `temperature`",
     );
 }
+
+/// Each stage reports how its excavations' walls moved: the bundled tunnel's invert (the floor's
+/// middle, not a corner) is the node its `invert` monitoring point reads, the crown settles, the
+/// invert heaves, both sidewalls move in, and the convergences are the sums.
+#[test]
+fn a_stage_reports_its_crown_invert_and_sidewalls() {
+    let s = Scene::load(&Path::new(env!("CARGO_MANIFEST_DIR")).join("models/tunnel.json")).unwrap();
+    let out = out_dir("walls");
+    let r = run_scene(&s, &out, &mut Quiet).unwrap();
+    let last = r.summary.stages.last().unwrap();
+    let w = last.walls["tunnel"];
+    let csv = std::fs::read_to_string(out.join("histories.csv")).unwrap();
+    let header: Vec<&str> = csv.lines().next().unwrap().split(',').collect();
+    let row: Vec<f64> = (csv.lines().last().unwrap().split(','))
+        .map(|v| v.parse().unwrap())
+        .collect();
+    let column = |name: &str| row[header.iter().position(|h| *h == name).unwrap()];
+    assert_eq!(w.invert_m, column("invert:displacement_y_m"));
+    assert_eq!(w.crown_m, -column("crown:displacement_y_m"));
+    assert!(
+        w.crown_m > 0.0 && w.invert_m > 0.0 && w.left_m > 0.0 && w.right_m > 0.0,
+        "{w:?}"
+    );
+    assert_eq!(w.span_convergence_m, w.left_m + w.right_m);
+    assert_eq!(w.height_convergence_m, w.crown_m + w.invert_m);
+    assert!(
+        r.summary.stages[0].walls.is_empty(),
+        "nothing excavated in-situ"
+    );
+}

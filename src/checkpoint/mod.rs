@@ -20,9 +20,9 @@ use codec::{Codec, Reader, put};
 use crate::Scene;
 use crate::implicit::Cost;
 use crate::model::Model;
-use crate::output::StageSummary;
 use crate::output::factor_of_safety::{FactorOfSafety, MovingBlock, Trial};
 use crate::output::histories::Samples;
+use crate::output::{StageSummary, WallMoves};
 use crate::solve::HistoryRow;
 
 /// The format's version: a checkpoint of another version is refused. 2: each stage's summary
@@ -30,8 +30,9 @@ use crate::solve::HistoryRow;
 /// holds its shear path and mobilized JRC (the Barton–Bandis law). 4: each stage's summary holds
 /// its factor of safety (`StageSummary::factor_of_safety`). 5: each trial of it, its largest
 /// displacement (`Trial::displacement_m`), and the mechanism's blocks (`FactorOfSafety::mechanism`).
-/// 6: the monitoring points' samples (`RunSoFar::samples`).
-pub const VERSION: u32 = 6;
+/// 6: the monitoring points' samples (`RunSoFar::samples`). 7: each stage's summary, its
+/// excavations' wall moves (`StageSummary::walls`).
+pub const VERSION: u32 = 7;
 
 const MAGIC: &[u8; 8] = b"ADITCKPT";
 
@@ -146,6 +147,10 @@ impl Codec for StageSummary {
         put(out, &self.support_fraction);
         let closure: Vec<(String, f64)> = self.closure.clone().into_iter().collect();
         put(out, &closure);
+        let walls: Vec<(String, [f64; 4])> = (self.walls.iter())
+            .map(|(k, w)| (k.clone(), [w.crown_m, w.invert_m, w.left_m, w.right_m]))
+            .collect();
+        put(out, &walls);
         put(out, &self.moving);
         put(out, &self.factor_of_safety);
     }
@@ -156,6 +161,7 @@ impl Codec for StageSummary {
         let final_ratio = Option::<f64>::get(r)?;
         let support_fraction = f64::get(r)?;
         let closure: Vec<(String, f64)> = Codec::get(r)?;
+        let walls: Vec<(String, [f64; 4])> = Codec::get(r)?;
         let moving = Option::<String>::get(r)?;
         let factor_of_safety = Codec::get(r)?;
         Ok(StageSummary {
@@ -165,6 +171,11 @@ impl Codec for StageSummary {
             final_ratio,
             support_fraction,
             closure: closure.into_iter().collect::<BTreeMap<_, _>>(),
+            walls: (walls.into_iter())
+                .map(|(k, [c, i, l, r])| {
+                    (k, WallMoves::of([0.0, -c], [0.0, i], [l, 0.0], [-r, 0.0]))
+                })
+                .collect(),
             moving,
             factor_of_safety,
         })

@@ -422,6 +422,10 @@ pub struct StageSummary {
     /// positive, displacement since the start of the run): with `support_fraction`, the ground
     /// reaction curve.
     pub closure: std::collections::BTreeMap<String, f64>,
+    /// How the crown, invert and sidewalls of each excavation made so far moved by the end of
+    /// the stage, and its span's and height's convergence (`WallMoves`); absent when none is.
+    #[serde(skip_serializing_if = "std::collections::BTreeMap::is_empty")]
+    pub walls: std::collections::BTreeMap<String, WallMoves>,
     /// The block still sliding when the stage's explicit solve converged, or the fastest when it
     /// stopped at its cycle limit, named with its speed (`cycle::drift`); absent when none is.
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -430,6 +434,43 @@ pub struct StageSummary {
     /// its trials; absent when not asked.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub factor_of_safety: Option<factor_of_safety::FactorOfSafety>,
+}
+
+/// An excavation's wall at its four extreme points (its rock wall nodes highest, lowest,
+/// leftmost and rightmost at the start), each displacement inward positive, m, since the start
+/// of the run (as `closure`): the crown's settlement, the invert's heave, each sidewall's move
+/// toward the opening, and their sums, the convergence of the span (left + right) and of the
+/// height (crown + invert).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize)]
+pub struct WallMoves {
+    pub crown_m: f64,
+    pub invert_m: f64,
+    pub left_m: f64,
+    pub right_m: f64,
+    pub span_convergence_m: f64,
+    pub height_convergence_m: f64,
+}
+
+impl WallMoves {
+    /// From the displacements (m) of the crown, invert, left and right wall points.
+    pub fn of(crown: [f64; 2], invert: [f64; 2], left: [f64; 2], right: [f64; 2]) -> WallMoves {
+        let (crown_m, invert_m, left_m, right_m) = (-crown[1], invert[1], left[0], -right[0]);
+        WallMoves {
+            crown_m,
+            invert_m,
+            left_m,
+            right_m,
+            span_convergence_m: left_m + right_m,
+            height_convergence_m: crown_m + invert_m,
+        }
+    }
+
+    /// Every figure finite (a failed stage's state may not be).
+    pub fn is_finite(&self) -> bool {
+        [self.crown_m, self.invert_m, self.left_m, self.right_m]
+            .iter()
+            .all(|v| v.is_finite())
+    }
 }
 
 /// Contents of `summary.json`.
@@ -602,6 +643,7 @@ mod tests {
             final_ratio: measured(f64::INFINITY),
             support_fraction: 0.0,
             closure: Default::default(),
+            walls: Default::default(),
             moving: None,
             factor_of_safety: None,
         };
