@@ -171,12 +171,18 @@ impl Staging {
                 continue;
             };
             let u = |n: usize| m.nodes.disp[n];
-            let moves = WallMoves::of(
+            let mut moves = WallMoves::of(
                 u(points.crown),
                 u(points.invert),
                 u(points.left),
                 u(points.right),
             );
+            let pressure = liner_pressure(m, plan, j as u32);
+            let centre = nodes.iter().map(|&n| pos[n][1]).sum::<f64>() / nodes.len() as f64;
+            let s = plan.in_situ.at(centre);
+            let mean = -0.5 * (s[0] + s[1]);
+            moves.support_pressure_pa = pressure;
+            moves.support_pressure_ratio = if mean > 0.0 { pressure / mean } else { 0.0 };
             // A failed run's state may not be finite: its moves are left out, not written null.
             if moves.is_finite() {
                 out.insert(plan.excavations[j].clone(), moves);
@@ -189,6 +195,37 @@ impl Staging {
     pub fn support_fraction(&self) -> f64 {
         self.support.iter().flatten().copied().next().unwrap_or(0.0)
     }
+}
+
+/// The pressure the installed liners put on the rock wall of excavation `j`, Pa: their links'
+/// forces on its wall nodes along the rock's outward normal there (the edges' normals weighted by
+/// their half lengths), against it, over the wall's length.
+fn liner_pressure(m: &Model, plan: &Plan, j: u32) -> f64 {
+    let mut normal: BTreeMap<usize, [f64; 2]> = BTreeMap::new();
+    let mut length = 0.0;
+    for e in rock_walls(&plan.boundary.edges, &m.blocks, &plan.fill, j) {
+        let [a, b] = e.nodes.map(|n| n as usize);
+        let (pa, pb) = (m.nodes.pos[a], m.nodes.pos[b]);
+        // Material on the left: (dy, −dx) points out of the rock, into the opening.
+        let half = [0.5 * (pb[1] - pa[1]), -0.5 * (pb[0] - pa[0])];
+        length += (pb[0] - pa[0]).hypot(pb[1] - pa[1]);
+        for n in [a, b] {
+            let w = normal.entry(n).or_insert([0.0; 2]);
+            *w = [w[0] + half[0], w[1] + half[1]];
+        }
+    }
+    if length <= 0.0 {
+        return 0.0;
+    }
+    let pushed: f64 = (m.supports.liners.rock_forces(&m.nodes.disp))
+        .filter_map(|(n, f)| {
+            let w = normal.get(&n)?;
+            let size = w[0].hypot(w[1]);
+            (size > 0.0).then(|| -(f[0] * w[0] + f[1] * w[1]) / size)
+        })
+        .sum();
+    // + 0.0: an empty sum is −0.0.
+    pushed / length + 0.0
 }
 
 /// The nodes `WallMoves` reads on one wall (`Staging::wall_moves`).

@@ -166,3 +166,35 @@ fn liner_strengths_are_checked() {
         "tensile_strength",
     );
 }
+
+/// A ring lining a hole under hydrostatic stress carries no shear and no moment: the pressure it
+/// puts on the wall (`walls[..].support_pressure_pa`) is its thrust over its radius (Laplace).
+#[test]
+fn a_rings_wall_pressure_is_its_thrust_over_its_radius() {
+    let mut v: serde_json::Value =
+        serde_json::from_str(include_str!("../models/kirsch.json")).unwrap();
+    v["in_situ"] = serde_json::json!({ "sxx": -20e6, "syy": -20e6 });
+    v["zoning"] =
+        serde_json::json!({ "edge_at_excavation": 0.15, "edge_far": 8.0, "grading": 0.4 });
+    v["excavations"][0]["circle"]["segments"] = 48.into();
+    v["liners"] = serde_json::json!([{ "name": "ring", "excavation": "tunnel", "young": 30e9,
+        "area": 0.15, "inertia": 2.8125e-4 }]);
+    v["stages"] = serde_json::json!([
+        { "name": "in-situ" },
+        { "name": "excavate", "excavate": ["tunnel"], "support_fraction": 0.5 },
+        { "name": "lined", "install": ["ring"], "support_fraction": 0.0 }
+    ]);
+    let sc = Scene::from_json(&v.to_string(), "ring").unwrap();
+    let out = std::env::temp_dir().join("adit_ring_pressure_test");
+    let r = adit::run_scene(&sc, &out, &mut Quiet).unwrap();
+    let walls = &r.summary.stages[2].walls["tunnel"];
+    let thrust = r.summary.liners[0].thrust_n;
+    let (p, expected) = (walls.support_pressure_pa, thrust / 1.0);
+    assert!(
+        (p - expected).abs() < 0.01 * expected,
+        "{p} against {expected}"
+    );
+    assert!((walls.support_pressure_ratio - p / 20e6).abs() < 1e-12);
+    // Before the liner is installed it puts nothing on the wall.
+    assert_eq!(r.summary.stages[1].walls["tunnel"].support_pressure_pa, 0.0);
+}

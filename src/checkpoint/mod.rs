@@ -31,8 +31,8 @@ use crate::solve::HistoryRow;
 /// its factor of safety (`StageSummary::factor_of_safety`). 5: each trial of it, its largest
 /// displacement (`Trial::displacement_m`), and the mechanism's blocks (`FactorOfSafety::mechanism`).
 /// 6: the monitoring points' samples (`RunSoFar::samples`). 7: each stage's summary, its
-/// excavations' wall moves (`StageSummary::walls`).
-pub const VERSION: u32 = 7;
+/// excavations' wall moves (`StageSummary::walls`). 8: with their liners' wall pressure.
+pub const VERSION: u32 = 8;
 
 const MAGIC: &[u8; 8] = b"ADITCKPT";
 
@@ -147,8 +147,8 @@ impl Codec for StageSummary {
         put(out, &self.support_fraction);
         let closure: Vec<(String, f64)> = self.closure.clone().into_iter().collect();
         put(out, &closure);
-        let walls: Vec<(String, [f64; 4])> = (self.walls.iter())
-            .map(|(k, w)| (k.clone(), [w.crown_m, w.invert_m, w.left_m, w.right_m]))
+        let walls: Vec<(String, [f64; 6])> = (self.walls.iter())
+            .map(|(k, w)| (k.clone(), w.to_array()))
             .collect();
         put(out, &walls);
         put(out, &self.moving);
@@ -161,7 +161,7 @@ impl Codec for StageSummary {
         let final_ratio = Option::<f64>::get(r)?;
         let support_fraction = f64::get(r)?;
         let closure: Vec<(String, f64)> = Codec::get(r)?;
-        let walls: Vec<(String, [f64; 4])> = Codec::get(r)?;
+        let walls: Vec<(String, [f64; 6])> = Codec::get(r)?;
         let moving = Option::<String>::get(r)?;
         let factor_of_safety = Codec::get(r)?;
         Ok(StageSummary {
@@ -172,9 +172,7 @@ impl Codec for StageSummary {
             support_fraction,
             closure: closure.into_iter().collect::<BTreeMap<_, _>>(),
             walls: (walls.into_iter())
-                .map(|(k, [c, i, l, r])| {
-                    (k, WallMoves::of([0.0, -c], [0.0, i], [l, 0.0], [-r, 0.0]))
-                })
+                .map(|(k, w)| (k, WallMoves::from_array(w)))
                 .collect(),
             moving,
             factor_of_safety,

@@ -441,6 +441,9 @@ pub struct StageSummary {
 /// of the run (as `closure`): the crown's settlement, the invert's heave, each sidewall's move
 /// toward the opening, and their sums, the convergence of the span (left + right) and of the
 /// height (crown + invert).
+/// With them, the pressure the installed liners put on the wall (the links' forces on the rock
+/// along its outward normals, over the wall's length), Pa, and over the in-situ mean normal
+/// stress at the opening's centre (the support's reaction curve against the ground's).
 #[derive(Debug, Clone, Copy, Default, PartialEq, Serialize)]
 pub struct WallMoves {
     pub crown_m: f64,
@@ -449,6 +452,8 @@ pub struct WallMoves {
     pub right_m: f64,
     pub span_convergence_m: f64,
     pub height_convergence_m: f64,
+    pub support_pressure_pa: f64,
+    pub support_pressure_ratio: f64,
 }
 
 impl WallMoves {
@@ -462,14 +467,42 @@ impl WallMoves {
             right_m,
             span_convergence_m: left_m + right_m,
             height_convergence_m: crown_m + invert_m,
+            ..WallMoves::default()
         }
     }
 
     /// Every figure finite (a failed stage's state may not be).
     pub fn is_finite(&self) -> bool {
-        [self.crown_m, self.invert_m, self.left_m, self.right_m]
-            .iter()
-            .all(|v| v.is_finite())
+        [
+            self.crown_m,
+            self.invert_m,
+            self.left_m,
+            self.right_m,
+            self.support_pressure_pa,
+            self.support_pressure_ratio,
+        ]
+        .iter()
+        .all(|v| v.is_finite())
+    }
+
+    /// Its figures in codec order (`from_array` reads them back).
+    pub fn to_array(&self) -> [f64; 6] {
+        [
+            self.crown_m,
+            self.invert_m,
+            self.left_m,
+            self.right_m,
+            self.support_pressure_pa,
+            self.support_pressure_ratio,
+        ]
+    }
+
+    pub fn from_array([c, i, l, r, p, q]: [f64; 6]) -> WallMoves {
+        WallMoves {
+            support_pressure_pa: p,
+            support_pressure_ratio: q,
+            ..WallMoves::of([0.0, -c], [0.0, i], [l, 0.0], [-r, 0.0])
+        }
     }
 }
 

@@ -1,7 +1,7 @@
 //! PNG plots beside the results, for a look without ParaView: the unbalanced-force ratio's history
 //! (`history.png`), the ground reaction curve of each excavation (`ground_reaction.png`, staged
 //! scenes: support pressure against mean wall closure at each stage's end, from no closure under
-//! the whole in-situ pressure), the axial force along each installed bolt (`bolts.png`, scenes with
+//! the whole in-situ pressure, with the liners' reaction curve), the axial force along each installed bolt (`bolts.png`, scenes with
 //! bolts) and the liners' forces against their capacity (`liner_capacity.png`, `capacity_plot.rs`).
 //!
 //! Each is drawn into a buffer and written atomically. A plot that cannot be drawn (no font on
@@ -95,10 +95,11 @@ pub fn write_plots(
                 .collect(),
         })
         .filter(|l| l.points.len() > 1)
+        .chain(support_reaction_curves(stages, excavations))
         .collect();
     plot(
         "ground_reaction.png",
-        "Ground reaction curve",
+        "Ground reaction curve, and the liners' reaction",
         ("mean wall closure (mm)", "support pressure (% of in-situ)"),
         false,
         curves,
@@ -117,6 +118,36 @@ pub fn write_plots(
         warnings.extend(super::capacity_plot::write(dir, &model.supports.liners));
     }
     warnings
+}
+
+/// Each excavation's support reaction curve: the pressure its liners put on the wall (% of the
+/// in-situ mean stress, `WallMoves::support_pressure_ratio`) against its mean closure, from the
+/// closure when they were installed (the stage before the first that carries pressure) on.
+fn support_reaction_curves<'a>(
+    stages: &'a [StageSummary],
+    excavations: &'a [String],
+) -> impl Iterator<Item = Line> + 'a {
+    excavations.iter().filter_map(move |name| {
+        let carried = |s: &StageSummary| {
+            s.walls
+                .get(name)
+                .is_some_and(|w| w.support_pressure_pa > 0.0)
+        };
+        let first = stages.iter().position(carried)?;
+        let installed_at = first
+            .checked_sub(1)
+            .and_then(|k| stages[k].closure.get(name));
+        let points = (installed_at.map(|c| (1e3 * c, 0.0)).into_iter())
+            .chain(stages[first..].iter().filter_map(|s| {
+                let (c, w) = (s.closure.get(name)?, s.walls.get(name)?);
+                Some((1e3 * c, 100.0 * w.support_pressure_ratio))
+            }))
+            .collect();
+        Some(Line {
+            label: format!("liners of {name}"),
+            points,
+        })
+    })
 }
 
 /// The axial force per bolt (kN) against distance from the head (m, at segment middles) of each

@@ -213,24 +213,44 @@ impl Liners {
             self.force[b][1] -= fa[1];
             self.force[b][2] -= mb;
         }
-        for l in 0..self.link_node.len() {
+        for (l, slot) in slots.iter_mut().enumerate().take(self.link_node.len()) {
             let n = self.link_node[l] as usize;
             if !self.active[self.group[n] as usize] {
                 continue;
             }
-            let (r, o, k) = (
-                rock[self.link_rock[l] as usize],
-                self.link_origin[l],
-                self.link_stiffness[l],
-            );
-            let f = [
-                k * (r[0] - o[0] - self.disp[n][0]),
-                k * (r[1] - o[1] - self.disp[n][1]),
-            ];
+            let f = self.link_force(l, rock);
             self.force[n][0] += f[0];
             self.force[n][1] += f[1];
-            slots[l] = [-f[0], -f[1]];
+            *slot = [-f[0], -f[1]];
         }
+    }
+
+    /// The force of link `l` on its liner node, N/m: k (u_rock − u_rock,installed − u_liner);
+    /// the rock node gets its opposite.
+    fn link_force(&self, l: usize, rock: &[[f64; 2]]) -> [f64; 2] {
+        let n = self.link_node[l] as usize;
+        let (r, o, k) = (
+            rock[self.link_rock[l] as usize],
+            self.link_origin[l],
+            self.link_stiffness[l],
+        );
+        [
+            k * (r[0] - o[0] - self.disp[n][0]),
+            k * (r[1] - o[1] - self.disp[n][1]),
+        ]
+    }
+
+    /// The force each installed liner's links exert on their rock nodes, N/m: (rock node, force).
+    pub fn rock_forces<'a>(
+        &'a self,
+        rock: &'a [[f64; 2]],
+    ) -> impl Iterator<Item = (usize, [f64; 2])> + 'a {
+        (0..self.link_node.len())
+            .filter(|&l| self.active[self.group[self.link_node[l] as usize] as usize])
+            .map(move |l| {
+                let f = self.link_force(l, rock);
+                (self.link_rock[l] as usize, [-f[0], -f[1]])
+            })
     }
 
     /// Central-difference update of the active liner nodes with local damping α; returns the
