@@ -266,6 +266,15 @@ fn run(
         eprintln!("error: run failed: {reason}");
         return Ok(ExitCode::from(2));
     }
+    if s.status == Status::CycleLimit.label() {
+        eprintln!(
+            "warning: the run stopped at its cycle limit (ratio {}), not at equilibrium: its \
+             results are not converged (raise solve.max_cycles, or see summary.json's stages)",
+            s.final_ratio
+                .map_or("not measured".into(), |r| format!("{r:.2e}"))
+        );
+        return Ok(ExitCode::from(3));
+    }
     Ok(ExitCode::SUCCESS)
 }
 

@@ -46,3 +46,28 @@ fn check_prints_mesh_statistics() {
     assert_eq!(code, 0);
     assert!(out.contains("zones") && out.contains("min angle"), "{out}");
 }
+
+/// A run that stops at its cycle limit is not a success (issue 49, friction item 2): it says so
+/// and exits with 3, its files written.
+#[test]
+fn a_run_at_its_cycle_limit_exits_with_3() {
+    let mut v: serde_json::Value =
+        serde_json::from_str(include_str!("../models/kirsch.json")).unwrap();
+    v["solve"]["max_cycles"] = 20.into();
+    let dir = std::env::temp_dir().join(format!("adit-cycle-limit-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let scene = dir.join("limit.json");
+    std::fs::write(&scene, v.to_string()).unwrap();
+    let out = dir.join("out");
+    let (code, _, err) = adit(&[
+        "run",
+        scene.to_str().unwrap(),
+        "--quiet",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 3, "{err}");
+    assert!(err.contains("cycle limit"), "{err}");
+    assert!(out.join("summary.json").exists());
+    std::fs::remove_dir_all(&dir).unwrap();
+}

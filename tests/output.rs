@@ -84,7 +84,9 @@ fn run_writes_every_contract_file() {
     }
 
     let history = std::fs::read_to_string(dir.join("history.csv")).unwrap();
-    assert!(history.starts_with("cycle,time_s,unbalanced_ratio,kinetic_energy_J_per_m\n"));
+    // One spelling of each unit in every column (issue 49, friction item 9): lower case, as the
+    // Python tables and the progress rows spell it.
+    assert!(history.starts_with("cycle,time_s,unbalanced_ratio,kinetic_energy_j_per_m\n"));
     assert_eq!(history.lines().count(), 1 + 30);
     let summary: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();

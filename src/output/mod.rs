@@ -600,7 +600,7 @@ impl FarFieldSummary {
 }
 
 /// The header of `history.csv`.
-const HISTORY_HEADER: &str = "cycle,time_s,unbalanced_ratio,kinetic_energy_J_per_m";
+const HISTORY_HEADER: &str = "cycle,time_s,unbalanced_ratio,kinetic_energy_j_per_m";
 
 /// One row of `history.csv`.
 fn history_row(w: &mut dyn Write, r: &HistoryRow) -> std::io::Result<()> {
