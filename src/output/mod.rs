@@ -164,15 +164,11 @@ impl OutputWriter {
         if !self.live_history {
             return Ok(());
         }
-        let h = match &mut self.history {
-            Some(h) => h,
-            None => {
-                let file = std::fs::File::create(self.dir.join("history.csv"))?;
-                let mut h = std::io::BufWriter::new(file);
-                writeln!(h, "{HISTORY_HEADER}")?;
-                self.history.insert(h)
-            }
-        };
+        let h = live_csv(
+            &mut self.history,
+            &self.dir.join("history.csv"),
+            HISTORY_HEADER,
+        )?;
         history_row(h, r)?;
         h.flush()
     }
@@ -189,15 +185,7 @@ impl OutputWriter {
         if !self.live_history {
             return Ok(());
         }
-        let h = match &mut self.histories {
-            Some(h) => h,
-            None => {
-                let file = std::fs::File::create(self.dir.join("histories.csv"))?;
-                let mut h = std::io::BufWriter::new(file);
-                writeln!(h, "{header}")?;
-                self.histories.insert(h)
-            }
-        };
+        let h = live_csv(&mut self.histories, &self.dir.join("histories.csv"), header)?;
         histories::row(h, cycle, time, values)?;
         h.flush()
     }
@@ -597,6 +585,20 @@ impl FarFieldSummary {
             stretch: f.stretch,
         }
     }
+}
+
+/// A CSV file a run writes as it goes: `slot`'s, or `path` created with its `header` line.
+fn live_csv<'a>(
+    slot: &'a mut Option<std::io::BufWriter<std::fs::File>>,
+    path: &Path,
+    header: &str,
+) -> std::io::Result<&'a mut std::io::BufWriter<std::fs::File>> {
+    if slot.is_none() {
+        let mut h = std::io::BufWriter::new(std::fs::File::create(path)?);
+        writeln!(h, "{header}")?;
+        *slot = Some(h);
+    }
+    Ok(slot.as_mut().expect("opened above"))
 }
 
 /// The header of `history.csv`.
