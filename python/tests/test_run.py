@@ -75,6 +75,9 @@ def test_jointed_results_have_contacts_and_supports(root, tmp_path):
     assert least < 1 and len(r.liners["shear_force_n_per_m"]) == len(r.liners["group"])
     assert r.stages[-1]["name"] == "bolts and shotcrete"
     assert 5e-3 < r.closure("tunnel") < 2e-2
+    # A misspelt excavation is named with those there are (issue 49, friction item 7).
+    with pytest.raises(KeyError, match="the excavations the stages made: 'tunnel'"):
+        r.closure("Tunnel")
     # Excavated zones are flagged, and hold no stress.
     gone = r.zones["excavated"] == 1
     assert gone.sum() > 100 and np.all(r.zones["stress_pa"][gone] == 0)

@@ -130,7 +130,11 @@ class Results:
         for stage in reversed(self.stages):
             if excavation in stage["closure"]:
                 return stage["closure"][excavation]
-        raise KeyError(f"no stage excavated {excavation!r}")
+        made = sorted({name for stage in self.stages for name in stage["closure"]})
+        there = ", ".join(repr(name) for name in made) if made else "none"
+        raise KeyError(
+            f"no stage excavated {excavation!r}; the excavations the stages made: {there}"
+        )
 
 
 def run(
