@@ -85,18 +85,40 @@ enum Command {
     },
 }
 
-/// Progress bar over cycles (or implicit iterations) showing the unbalanced-force ratio, and the
-/// last factorization's size and time when the solve is implicit.
-struct Progress(ProgressBar, String);
+/// Progress bar over the current stage's cycles (or implicit iterations) against its own limit,
+/// showing the stage's name, the unbalanced-force ratio and the last factorization's size and
+/// time when the solve is implicit.
+struct Progress {
+    bar: ProgressBar,
+    /// The factorization's note, the stage's name and the cycle it started at.
+    factor: String,
+    stage: String,
+    from: u64,
+}
+
+/// The bar's message: the stage (staged runs), the ratio and the factorization's note.
+fn progress_message(stage: &str, ratio: f64, factor: &str) -> String {
+    let stage = if stage.is_empty() {
+        String::new()
+    } else {
+        format!("stage '{stage}', ")
+    };
+    format!("{stage}ratio {ratio:.2e}{factor}")
+}
 
 impl Observer for Progress {
     fn monitored(&mut self, row: &HistoryRow) {
-        self.0.set_position(row.cycle);
-        self.0
-            .set_message(format!("ratio {:.2e}{}", row.ratio, self.1));
+        self.bar.set_position(row.cycle.saturating_sub(self.from));
+        self.bar
+            .set_message(progress_message(&self.stage, row.ratio, &self.factor));
     }
     fn factorized(&mut self, bytes: usize, seconds: f64) {
-        self.1 = format!(", factor {:.1} MB in {seconds:.3} s", bytes as f64 / 1e6);
+        self.factor = format!(", factor {:.1} MB in {seconds:.3} s", bytes as f64 / 1e6);
+    }
+    fn stage_started(&mut self, name: &str, from: u64, max_cycles: u64) {
+        (self.stage, self.from) = (name.to_string(), from);
+        self.bar.set_length(max_cycles);
+        self.bar.set_position(0);
     }
 }
 
@@ -121,10 +143,15 @@ fn run(
         ProgressStyle::with_template("{elapsed_precise} [{bar:30}] {pos}/{len} cycles, {msg}")?
             .progress_chars("=> "),
     );
-    let mut progress = Progress(bar, String::new());
+    let mut progress = Progress {
+        bar,
+        factor: String::new(),
+        stage: String::new(),
+        from: 0,
+    };
     anyhow::ensure!(from_stage >= 1, "--from-stage: stages are numbered from 1");
     let result = adit::run_scene_from(&scene, &out, from_stage, &mut progress)?;
-    progress.0.finish_and_clear();
+    progress.bar.finish_and_clear();
     let s = &result.summary;
     for w in &s.warnings {
         eprintln!("warning: {w}");
@@ -548,4 +575,21 @@ fn is_broken_pipe(e: &anyhow::Error) -> bool {
         c.downcast_ref::<std::io::Error>()
             .is_some_and(|io| io.kind() == std::io::ErrorKind::BrokenPipe)
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The bar names the stage it counts (issue 49, friction item 8), and no stage in an
+    /// unstaged run.
+    #[test]
+    fn the_progress_bar_names_its_stage() {
+        let staged = progress_message("bolts and shotcrete", 2.5e-4, "");
+        assert_eq!(staged, "stage 'bolts and shotcrete', ratio 2.50e-4");
+        assert_eq!(
+            progress_message("", 1e-3, ", factor 1.0 MB in 0.010 s"),
+            "ratio 1.00e-3, factor 1.0 MB in 0.010 s"
+        );
+    }
 }

@@ -79,6 +79,9 @@ impl Observer for Writing<'_> {
     fn factorized(&mut self, bytes: usize, seconds: f64) {
         self.inner.factorized(bytes, seconds);
     }
+    fn stage_started(&mut self, name: &str, from: u64, max_cycles: u64) {
+        self.inner.stage_started(name, from, max_cycles);
+    }
     fn output_step(&mut self, cycle: u64, _time: f64, model: &Model, _c: &mut Cycle) {
         let t = Instant::now();
         if let Err(e) = self.writer.write_step(model, (cycle + self.offset) as f64) {
@@ -372,6 +375,8 @@ fn build_solve_write(
             samples: &mut samples,
             at: (cycles, 0.0),
         };
+        let shown = if plan.staged { stage.name.as_str() } else { "" };
+        writing.stage_started(shown, cycles, spec.max_cycles);
         let (mut handed_over, mut implicit_moving) = (None, None);
         let solution = match method {
             Method::Implicit => {

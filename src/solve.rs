@@ -86,6 +86,9 @@ pub trait Observer: Send {
     /// After each monitor step, right after `monitored`: the model as it is then (the
     /// monitoring points read it).
     fn sampled(&mut self, _model: &Model) {}
+    /// When stage `name` starts (empty in an unstaged run), at cycle `from` of the run (monitor
+    /// rows count from the run's start), with its own cycle limit `max_cycles`.
+    fn stage_started(&mut self, _name: &str, _from: u64, _max_cycles: u64) {}
     /// When an intermediate output step is due (every `output_every` cycles).
     fn output_step(&mut self, _cycle: u64, _time: f64, _model: &Model, _cycle_state: &mut Cycle) {}
     /// After an implicit solve factorized its stiffness: the factor's size (bytes of its
