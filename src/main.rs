@@ -268,21 +268,19 @@ fn run(
         if let Some(f) = &st.factor_of_safety {
             say!("stage '{}': {}", st.name, f.describe())?;
         }
-        // The last stage: where each wall moved (inward positive).
-        if std::ptr::eq(st, s.stages.last().expect("a stage")) {
-            for (name, w) in &st.walls {
-                say!(
-                    "{name}: crown {:.2} mm down, invert {:.2} mm up, walls {:.2} and {:.2} mm in; \
-                     span converges {:.2} mm, height {:.2} mm",
-                    1e3 * w.crown_m,
-                    1e3 * w.invert_m,
-                    1e3 * w.left_m,
-                    1e3 * w.right_m,
-                    1e3 * w.span_convergence_m,
-                    1e3 * w.height_convergence_m
-                )?;
-            }
-        }
+    }
+    // Where each wall moved by the end (inward positive).
+    for (name, w) in s.stages.last().iter().flat_map(|st| &st.walls) {
+        say!(
+            "{name}: crown {:.2} mm down, invert {:.2} mm up, walls {:.2} and {:.2} mm in; \
+             span converges {:.2} mm, height {:.2} mm",
+            1e3 * w.crown_m,
+            1e3 * w.invert_m,
+            1e3 * w.left_m,
+            1e3 * w.right_m,
+            1e3 * w.span_convergence_m,
+            1e3 * w.height_convergence_m
+        )?;
     }
     say!("results in {}", result.out_dir.display())?;
     if s.status == Status::Interrupted.label() {

@@ -71,7 +71,7 @@ impl Observer for Writing<'_> {
         let values = self.probes.sample(model);
         let (cycle, time) = self.at;
         let header = self.probes.header();
-        if let Err(e) = self.writer.append_samples(&header, cycle, time, &values) {
+        if let Err(e) = self.writer.append_samples(header, cycle, time, &values) {
             self.error.get_or_insert(e.into());
         }
         self.samples.push(cycle, time, values);
@@ -339,7 +339,7 @@ fn build_solve_write(
             writer.resume(&run.steps, &run.history)?;
             for k in 0..run.samples.len() {
                 let s = &run.samples;
-                writer.append_samples(&probes.header(), s.cycle[k], s.time[k], &s.values[k])?;
+                writer.append_samples(probes.header(), s.cycle[k], s.time[k], &s.values[k])?;
             }
             run
         }
@@ -509,7 +509,7 @@ fn build_solve_write(
     let t = Instant::now();
     writer.write_history(&solution.history)?;
     if !probes.is_empty() {
-        writer.write_histories(&probes.header(), &samples)?;
+        writer.write_histories(probes.header(), &samples)?;
     }
     if plan.staged {
         writer.write_ground_reaction(&stage_summaries, &plan.excavations)?;

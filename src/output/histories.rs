@@ -26,6 +26,8 @@ struct Probe {
 pub struct Probes {
     probes: Vec<Probe>,
     columns: Vec<String>,
+    /// The header of `histories.csv`, made once.
+    header: String,
 }
 
 /// Index of the item of `points` nearest `p` (the first of equals); none when there are none.
@@ -65,6 +67,11 @@ impl Probes {
             probes
                 .columns
                 .push(format!("{}:{}", h.name, h.quantity.column()));
+        }
+        probes.header = String::from("cycle,time_s");
+        for c in &probes.columns {
+            probes.header.push(',');
+            probes.header.push_str(&super::csv_field(c));
         }
         Ok(probes)
     }
@@ -117,13 +124,8 @@ impl Probes {
     }
 
     /// The header of `histories.csv`.
-    pub fn header(&self) -> String {
-        let mut h = String::from("cycle,time_s");
-        for c in &self.columns {
-            h.push(',');
-            h.push_str(&super::csv_field(c));
-        }
-        h
+    pub fn header(&self) -> &str {
+        &self.header
     }
 
     /// The columns' names.

@@ -461,16 +461,7 @@ impl WallMoves {
 
     /// Every figure finite (a failed stage's state may not be).
     pub fn is_finite(&self) -> bool {
-        [
-            self.crown_m,
-            self.invert_m,
-            self.left_m,
-            self.right_m,
-            self.support_pressure_pa,
-            self.support_pressure_ratio,
-        ]
-        .iter()
-        .all(|v| v.is_finite())
+        self.to_array().iter().all(|v| v.is_finite())
     }
 
     /// Its figures in codec order (`from_array` reads them back).

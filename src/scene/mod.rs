@@ -401,6 +401,18 @@ pub struct Region {
     pub far_field: Option<FarFieldSpec>,
 }
 
+impl Region {
+    /// The polygon's bounding box (min corner, max corner), m.
+    pub(crate) fn bounds(&self) -> ([f64; 2], [f64; 2]) {
+        (self.polygon.iter()).fold(([f64::MAX; 2], [f64::MIN; 2]), |(lo, hi), p| {
+            (
+                [lo[0].min(p[0]), lo[1].min(p[1])],
+                [hi[0].max(p[0]), hi[1].max(p[1])],
+            )
+        })
+    }
+}
+
 /// `region.far_field`: the infinite elastic medium outside the region.
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]

@@ -759,15 +759,7 @@ impl Scene {
     /// Monitoring points: distinct names, a point within the region's bounds, and a support of
     /// the kind a support quantity asks for.
     fn validate_histories(&self) -> Result<(), SceneError> {
-        let (lo, hi) = self.region.polygon.iter().fold(
-            ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]),
-            |(lo, hi), p| {
-                (
-                    [lo[0].min(p[0]), lo[1].min(p[1])],
-                    [hi[0].max(p[0]), hi[1].max(p[1])],
-                )
-            },
-        );
+        let (lo, hi) = self.region.bounds();
         for (i, h) in self.histories.iter().enumerate() {
             let p = format!("histories[{i}]");
             if self.histories[..i].iter().any(|o| o.name == h.name) {
@@ -981,13 +973,7 @@ impl Scene {
             ));
         }
         // The region's extent, from which the tolerances and the depth follow.
-        let (lo, hi) =
-            (self.region.polygon.iter()).fold(([f64::MAX; 2], [f64::MIN; 2]), |(lo, hi), p| {
-                (
-                    [lo[0].min(p[0]), lo[1].min(p[1])],
-                    [hi[0].max(p[0]), hi[1].max(p[1])],
-                )
-            });
+        let (lo, hi) = self.region.bounds();
         let span = (lo.iter().chain(&hi)).fold(surface.abs(), |m, v| m.max(v.abs()));
         let above = surface + 1e-9 * span.max(1.0);
         if let Some(p) = (self.region.polygon.iter()).find(|p| p[1] > above) {
