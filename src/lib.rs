@@ -27,5 +27,5 @@ pub mod support;
 pub mod sweep;
 mod vector_state;
 
-pub use run::{RunResult, run_scene, run_scene_from};
+pub use run::{RunResult, run_scene, run_scene_branch, run_scene_from};
 pub use scene::Scene;

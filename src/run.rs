@@ -4,6 +4,7 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use crate::checkpoint::{self, RunSoFar};
+use crate::cycle::timestep::StepLimit;
 use crate::cycle::{Cycle, ZoneScheme};
 use crate::implicit::{self, Method};
 use crate::model::Model;
@@ -15,7 +16,7 @@ use crate::scene::Scene;
 use crate::scene::{SolveMethod, SolveMode};
 use crate::setup::StagePlan;
 use crate::setup::{Plan, Setup, setup};
-use crate::solve::{HistoryRow, Observer, Quiet, Solution, Solver, Status};
+use crate::solve::{HistoryRow, Observer, Quiet, Solution, Solver, Status, derive_masses};
 use crate::stage::Staging;
 use crate::strength_reduction::{self, FactorOfSafety, Searched};
 
@@ -35,6 +36,27 @@ pub fn default_out_dir(scene: &Scene) -> PathBuf {
         .as_ref()
         .map(PathBuf::from)
         .unwrap_or_else(|| Path::new("out").join(&scene.name))
+}
+
+/// A folder no earlier run wrote, for a run given no folder (Python's `adit.run`): the scene's
+/// `output.folder` as given, else the first of `out/<name>`, `out/<name>-2`, `out/<name>-3`, …
+/// that holds no `summary.json`; absolute.
+pub fn fresh_out_dir(scene: &Scene) -> PathBuf {
+    let dir = match &scene.output.folder {
+        Some(folder) => PathBuf::from(folder),
+        None => {
+            let base = Path::new("out");
+            let taken = |d: &Path| d.join("summary.json").exists();
+            let mut dir = base.join(&scene.name);
+            let mut k = 2;
+            while taken(&dir) {
+                dir = base.join(format!("{}-{k}", scene.name));
+                k += 1;
+            }
+            dir
+        }
+    };
+    std::path::absolute(&dir).unwrap_or(dir)
 }
 
 /// Forwards monitor rows to the caller and writes intermediate output steps; cycles count from
@@ -170,6 +192,74 @@ pub fn run_scene_from(
     result
 }
 
+/// Go on from `checkpoint`, a stage's checkpoint of this scene or of another whose stages up to
+/// it are the same (UDEC's save and restore, branched: the same excavation bolted otherwise),
+/// and run only the later stages, writing into `out_dir` what a whole run of `scene` writes: the
+/// earlier output steps and checkpoints are copied from the checkpoint's run folder (renamed for
+/// this scene) unless that is `out_dir`. Refused, naming the first field that differs, when an
+/// earlier stage differs.
+pub fn run_scene_branch(
+    scene: &Scene,
+    out_dir: &Path,
+    checkpoint: &Path,
+    observer: &mut dyn Observer,
+) -> anyhow::Result<RunResult> {
+    let field = |e: &dyn std::fmt::Display| anyhow::anyhow!("--from {}: {e}", checkpoint.display());
+    let bytes = std::fs::read(checkpoint).map_err(|e| field(&e))?;
+    let read = checkpoint::read(&bytes).map_err(|e| field(&e))?;
+    read.same_stages_as(scene).map_err(|e| field(&e))?;
+    let done = read.run.stages_done;
+    let stages = scene.stages.len().max(1);
+    if done >= stages {
+        return Err(field(&format!(
+            "the checkpoint is of stage {done}, the scene's last: there is nothing to go on with"
+        )));
+    }
+    let source = checkpoint
+        .parent()
+        .and_then(Path::parent)
+        .unwrap_or(Path::new("."));
+    if !same_folder(source, out_dir) {
+        copy_run_so_far(source, out_dir, &read, scene).map_err(|e| field(&e))?;
+    }
+    run_scene_from(scene, out_dir, done + 1, observer)
+}
+
+/// Whether `a` and `b` name the same folder (a folder that does not exist yet is no other's).
+fn same_folder(a: &Path, b: &Path) -> bool {
+    match (a.canonicalize(), b.canonicalize()) {
+        (Ok(a), Ok(b)) => a == b,
+        _ => false,
+    }
+}
+
+/// Copy the output steps and the checkpoints up to `read`'s stage from the run folder `source`
+/// into `out`, each file named for `scene`.
+fn copy_run_so_far(
+    source: &Path,
+    out: &Path,
+    read: &checkpoint::Read,
+    scene: &Scene,
+) -> anyhow::Result<()> {
+    std::fs::create_dir_all(out.join("checkpoints"))?;
+    for (_, _, files) in &read.run.steps {
+        for f in files {
+            let to = out.join(checkpoint::renamed(f, &scene.name));
+            std::fs::copy(source.join(f), &to)
+                .map_err(|e| anyhow::anyhow!("copying {}: {e}", source.join(f).display()))?;
+        }
+    }
+    for stage in 1..=read.run.stages_done {
+        let from = checkpoint::path(source, stage);
+        if let Ok(bytes) = std::fs::read(&from) {
+            let renamed = checkpoint::named(&bytes, &scene.name)
+                .map_err(|e| anyhow::anyhow!("{}: {e}", from.display()))?;
+            write_atomic(&checkpoint::path(out, stage), |w| w.write_all(&renamed))?;
+        }
+    }
+    Ok(())
+}
+
 /// The path stage `i` of `plan` takes on `model`; an error naming the field when it asks the
 /// implicit path of a model that path cannot solve. The model's feature it depends on (its zone
 /// scheme) is set up once, so the answer holds from the start of the run.
@@ -188,15 +278,76 @@ fn stage_method(plan: &Plan, i: usize, model: &Model) -> anyhow::Result<Method> 
     })
 }
 
-/// What a run refuses once the model is built, before any solve (`adit check` refuses it too): a
-/// stage asking the implicit path of a model it cannot solve, a factor of safety asked of laws
-/// that have no strength reduction.
-pub fn refuse_before_solving(plan: &Plan, model: &Model) -> anyhow::Result<()> {
+/// What a run refuses once the model is built, before any solve (`adit check` and Python's
+/// `adit.check` refuse it too): a stage asking the implicit path of a model it cannot solve, a
+/// factor of safety asked of laws that have no strength reduction, a monitoring point with
+/// nothing to read.
+pub fn refuse_before_solving(scene: &Scene, plan: &Plan, model: &Model) -> anyhow::Result<()> {
     for i in 0..plan.stages.len() {
         stage_method(plan, i, model)?;
         strength_reduction_refused(plan, i, model)?;
     }
+    Probes::of(&scene.histories, model, &plan.fill)?;
     Ok(())
+}
+
+/// The smallest critical step (real masses) over the stages solved or replayed, and its stage:
+/// what `summary.json` and `adit check` report (supports a later stage installs, or rock it
+/// removes, change the step).
+#[derive(Default)]
+pub struct SmallestStep(Option<(StepLimit, usize)>);
+
+impl SmallestStep {
+    /// Keep `step` of stage `i` if it is the smallest so far.
+    pub fn tighten(&mut self, step: StepLimit, i: usize) {
+        if self.0.is_none_or(|(s, _)| step.dt_critical < s.dt_critical) {
+            self.0 = Some((step, i));
+        }
+    }
+
+    /// The smallest step, else `solver`'s.
+    fn step(&self, solver: &Solver) -> StepLimit {
+        self.0.map_or(solver.step, |(s, _)| s)
+    }
+
+    /// The name of the stage that has the smallest step, in a staged plan.
+    pub fn stage(&self, plan: &Plan) -> Option<String> {
+        let (_, i) = self.0?;
+        plan.staged.then(|| plan.stages[i].name.clone())
+    }
+
+    /// The step limit and stage of `scene`'s stages replayed on `built` without solving (the
+    /// model is left at the last stage's start): `adit check`'s answer, the run's own up to the
+    /// contacts its solves form.
+    pub fn replayed(built: &mut Setup) -> SmallestStep {
+        let Setup { model, plan, .. } = built;
+        let mut staging = Staging::new(plan);
+        let mut smallest = SmallestStep::default();
+        for (i, stage) in plan.stages.iter().enumerate() {
+            staging.apply(stage, model, plan);
+            smallest.tighten(derive_masses(model, &stage.solve).1, i);
+        }
+        smallest
+    }
+
+    /// `4.870e-6 s (supports, stage 'bolts')`.
+    pub fn describe(&self, plan: &Plan) -> String {
+        match self.0 {
+            Some((s, _)) => match self.stage(plan) {
+                Some(name) => format!("{:.3e} s ({}, stage '{name}')", s.dt_critical, s.describe()),
+                None => format!("{:.3e} s ({})", s.dt_critical, s.describe()),
+            },
+            None => "none (no stage)".to_string(),
+        }
+    }
+}
+
+/// Validate and build `scene` as a run does and refuse what the run would refuse, without
+/// solving: `adit check`'s and Python's `adit.check`'s verdict.
+pub fn check_scene(scene: &Scene) -> anyhow::Result<Setup> {
+    let built = setup(scene)?;
+    refuse_before_solving(scene, &built.plan, &built.model)?;
+    Ok(built)
 }
 
 /// An error naming `stages[i].factor_of_safety` when stage `i` of `plan` asks a factor of safety
@@ -312,7 +463,8 @@ fn build_solve_write(
     let mut seconds = crate::cycle::StageSeconds::default();
     let mut output_seconds = 0.0;
     let mut last: Option<(Solver, Solution, usize)> = None;
-    refuse_before_solving(plan, model)?;
+    let mut smallest = SmallestStep::default();
+    refuse_before_solving(scene, plan, model)?;
     let probes = Probes::of(&scene.histories, model, &plan.fill)?;
     // Going on from a checkpoint: the stages before replayed (what the state does not hold),
     // then the state put in.
@@ -325,8 +477,9 @@ fn build_solve_write(
                 first + 1,
                 plan.stages.len()
             );
-            for stage in &plan.stages[..first] {
+            for (i, stage) in plan.stages[..first].iter().enumerate() {
                 staging.apply(stage, model, plan);
+                smallest.tighten(derive_masses(model, &stage.solve).1, i);
             }
             let run = checkpoint::decode(bytes, scene, model)
                 .map_err(|e| anyhow::anyhow!("--from-stage {}: {e}", first + 1))?;
@@ -363,6 +516,7 @@ fn build_solve_write(
         writer.set_stage(i, &stage.name);
         let mut solver = Solver::new(model, &stage.solve, scene.output.every);
         ensure_time_step(&solver)?;
+        smallest.tighten(solver.step, i);
         let spec = &stage.solve;
         let method = stage_method(plan, i, model)?;
         let mut writing = Writing {
@@ -495,6 +649,8 @@ fn build_solve_write(
     let Some((solver, last_solution, last_stage)) = last else {
         anyhow::bail!("stages: the plan has no stage to solve");
     };
+    let critical = smallest.step(&solver);
+    let critical_stage = smallest.stage(plan);
     // A failed stage's state may not be finite: its reactions are not reported.
     let reactions = match last_solution.status {
         Status::Failed(_) => Vec::new(),
@@ -523,12 +679,7 @@ fn build_solve_write(
         model,
     );
     if !crate::interrupt::requested() {
-        let ends: Vec<u64> = (stage_summaries.iter())
-            .scan(0, |done, s| {
-                *done += s.cycles;
-                Some(*done)
-            })
-            .collect();
+        let ends = crate::output::plots::stage_ends(&stage_summaries);
         let columns = probes.columns();
         let drawn = crate::output::histories_plot::write(&writer.dir, columns, &samples, &ends);
         plot_warnings.extend(drawn);
@@ -575,10 +726,11 @@ fn build_solve_write(
             _ => None,
         },
         timestep: solver.params.dt,
-        critical_timestep: solver.step.dt_critical,
-        critical_node: solver.step.limiting_node.0,
-        critical_block: solver.step.limiting_block,
-        critical_limiter: solver.step.describe(),
+        critical_timestep: critical.dt_critical,
+        critical_node: critical.limiting_node.0,
+        critical_block: critical.limiting_block,
+        critical_limiter: critical.describe(),
+        critical_stage,
         min_zone_angle: built.mesh.min_angle_deg,
         warnings: [
             built.warnings.clone(),

@@ -13,58 +13,68 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use adit::output::arrays::{Tables, Values, names};
-use adit::{Scene, run_scene_from};
+use adit::{Scene, run_scene_branch, run_scene_from};
 
 use progress::Progress;
 
-/// Parse and validate a scene given as JSON text, as `adit check` does before building: a
-/// `ValueError` naming the field when it is not a valid scene.
+/// Validate and build a scene given as JSON text and refuse what a run would refuse, as
+/// `adit check` does (no solve): a `ValueError` naming the field when a run would not start.
 #[pyfunction]
-fn check(scene_json: &str) -> PyResult<()> {
-    parse(scene_json).map(|_| ())
+fn check(py: Python<'_>, scene_json: &str) -> PyResult<()> {
+    let scene = parse(scene_json)?;
+    py.detach(|| adit::run::check_scene(&scene).map(|_| ()))
+        .map_err(|e| PyValueError::new_err(format!("{e:#}")))
 }
 
-/// The scene in `scene_json`; a parse error (which names a line and column) quotes that line, so
-/// that a scene given as a dict (sent here one field a line) names its field.
+/// The scene in `scene_json`; a parse error names the JSON path of the value (the text was
+/// written by `json.dumps`, not by the user: its lines mean nothing to them).
 fn parse(scene_json: &str) -> PyResult<Scene> {
-    Scene::from_json(scene_json, "scene").map_err(|e| {
-        let text = e.to_string();
-        let line = text
-            .split("line ")
-            .nth(1)
-            .and_then(|rest| rest.split(|c: char| !c.is_ascii_digit()).next())
-            .and_then(|n| n.parse::<usize>().ok())
-            .and_then(|n| scene_json.lines().nth(n.saturating_sub(1)));
-        match line {
-            Some(l) => PyValueError::new_err(format!("{text} (at {})", l.trim())),
-            None => PyValueError::new_err(text),
+    Scene::from_json(scene_json, "scene").map_err(|e| match e {
+        adit::scene::SceneError::Parse { path, message, .. } if !path.is_empty() => {
+            PyValueError::new_err(format!("{path}: {message}"))
         }
+        adit::scene::SceneError::Parse { message, .. } => PyValueError::new_err(message),
+        other => PyValueError::new_err(other.to_string()),
     })
 }
 
 /// Run the scene given as JSON text (from stage `from_stage`, numbered from 1: a later one goes on
 /// from the checkpoint the stage before left in `out`), writing its output files into `out`
-/// (default: the scene's `output.folder`, else `out/<name>`), calling `progress(row)` at each
+/// (default: the scene's `output.folder`, else the first of `out/<name>`, `out/<name>-2`, … no
+/// earlier run wrote; a resumed run's default is `out/<name>`; `from_checkpoint`: go on from that
+/// checkpoint of this scene or of another whose stages up to it are the same), calling `progress(row)` at each
 /// monitor step with a dict of `cycle`, `time_s`, `ratio` and `kinetic_energy_j_per_m`. Ctrl-C
 /// stops the run at the end of a cycle (its files are written, its summary says `interrupted`)
 /// and raises `KeyboardInterrupt`; an exception in `progress` stops it the same way and is
 /// raised. Returns a dict of the results (`adit.Results` wraps it).
 #[pyfunction]
-#[pyo3(signature = (scene_json, out=None, progress=None, from_stage=1))]
+#[pyo3(signature = (scene_json, out=None, progress=None, from_stage=1, from_checkpoint=None))]
 fn run<'py>(
     py: Python<'py>,
     scene_json: &str,
     out: Option<PathBuf>,
     progress: Option<Py<PyAny>>,
     from_stage: usize,
+    from_checkpoint: Option<PathBuf>,
 ) -> PyResult<Bound<'py, PyDict>> {
     if from_stage < 1 {
         return Err(PyValueError::new_err(
             "from_stage: stages are numbered from 1",
         ));
     }
+    if from_stage > 1 && from_checkpoint.is_some() {
+        return Err(PyValueError::new_err(
+            "from_checkpoint: give it or from_stage, not both (a checkpoint names its stage)",
+        ));
+    }
     let scene = parse(scene_json)?;
-    let out = out.unwrap_or_else(|| adit::run::default_out_dir(&scene));
+    // A run given no folder never writes over an earlier one (a resumed run goes on in its own).
+    let out = match out {
+        Some(dir) => dir,
+        None if from_stage > 1 => adit::run::default_out_dir(&scene),
+        None => adit::run::fresh_out_dir(&scene),
+    };
+    let out = std::path::absolute(&out).unwrap_or(out);
     // A Ctrl-C that stopped an earlier run of this process does not stop this one.
     adit::interrupt::clear();
     // The run goes on its own thread; this (main) thread watches for Ctrl-C, which Python only
@@ -72,7 +82,10 @@ fn run<'py>(
     let dir = out.clone();
     let worker = std::thread::spawn(move || {
         let mut observer = Progress::new(progress);
-        let result = run_scene_from(&scene, &dir, from_stage, &mut observer);
+        let result = match &from_checkpoint {
+            Some(checkpoint) => run_scene_branch(&scene, &dir, checkpoint, &mut observer),
+            None => run_scene_from(&scene, &dir, from_stage, &mut observer),
+        };
         (result, observer)
     });
     let mut interrupted = false;

@@ -118,3 +118,22 @@ def test_a_run_from_stage_2_equals_the_whole_run(root, tmp_path):
     assert np.array_equal(whole.nodes["displacement_m"], again.nodes["displacement_m"])
     assert np.array_equal(whole.history["ratio"], again.history["ratio"])
     assert whole.summary["stages"] == again.summary["stages"]
+
+
+def test_a_branch_from_the_excavation_equals_the_whole_run_of_its_scene(root, tmp_path):
+    """Issue 49: the tunnel excavated once, continued with bolts closer together."""
+    base = adit.run(root / "models" / "tunnel.json", out=tmp_path / "base")
+    closer = adit.load_scene(root / "models" / "tunnel.json")
+    closer["bolts"][0]["pattern"].update(spacing=0.9, count=13)
+    whole = adit.run(closer, out=tmp_path / "whole")
+    checkpoint = base.out_dir / "checkpoints" / "stage_02.ckpt"
+    branch = adit.run(closer, out=tmp_path / "branch", from_checkpoint=checkpoint)
+    for table in ("zones", "nodes", "bolts", "liners"):
+        for name, values in whole.__dict__[table].items():
+            assert np.array_equal(values, branch.__dict__[table][name]), (table, name)
+    assert whole.summary["stages"] == branch.summary["stages"]
+    assert len(branch.bolts["group"]) > len(base.bolts["group"])
+    earlier = adit.load_scene(root / "models" / "tunnel.json")
+    earlier["stages"][1]["support_fraction"] = 0.3
+    with pytest.raises(RuntimeError, match=r"first at stages\[1\]\.support_fraction"):
+        adit.run(earlier, out=tmp_path / "refused", from_checkpoint=checkpoint)

@@ -38,6 +38,11 @@ impl<'a> Reader<'a> {
         Ok(n as usize)
     }
 
+    /// How many bytes were read.
+    pub fn position(&self) -> usize {
+        self.at
+    }
+
     /// Whether every byte was read.
     pub fn at_end(&self) -> bool {
         self.at == self.bytes.len()

@@ -1,15 +1,21 @@
 //! Checkpoints: the state at the end of every stage, so that `adit run SCENE --from-stage N`
-//! goes on from there and gives the numbers of the run that was not stopped, bit for bit.
+//! goes on from there and gives the numbers of the run that was not stopped, bit for bit, and
+//! `adit run SCENE --from CHECKPOINT` branches: another scene whose stages up to the checkpoint's
+//! are the same (another bolt pattern, liner or strength later) goes on from it.
 //!
 //! A checkpoint (`<out>/checkpoints/stage_NN.ckpt`, NN the stage's number from 1) is versioned
-//! binary: the magic `ADITCKPT`, the format's version, a hash of the scene as parsed, then the
-//! run so far (stages done, cycles, history, each stage's summary, the paths taken, the implicit
-//! solves' cost, the output steps) and the model's state (`state.rs`). A restart builds the model
-//! from the scene, replays the stages before N (their excavations, materials, supports and loads,
-//! which set what the state does not hold: the laws), and puts the saved state in. A checkpoint of
-//! another scene, of another version or a damaged one is refused, naming why.
+//! binary: the magic `ADITCKPT`, the format's version, the text of the part of the scene that
+//! sets the state so far (`prefix.rs`: the scene as parsed, without its name, output folder,
+//! later stages and the supports only they install), the run's scene name, then the run so far
+//! (stages done, cycles, history, each stage's summary, the paths taken, the implicit solves'
+//! cost, the output steps) and the model's state (`state.rs`). A restart builds the model from
+//! the scene, replays the stages before N (their excavations, materials, supports and loads,
+//! which set what the state does not hold: the laws), and puts the saved state in. A checkpoint
+//! whose part differs from the scene's is refused naming the first field that differs; one of
+//! another version or a damaged one is refused, naming why.
 
 pub mod codec;
+pub mod prefix;
 pub mod state;
 
 use std::collections::BTreeMap;
@@ -31,8 +37,10 @@ use crate::solve::HistoryRow;
 /// its factor of safety (`StageSummary::factor_of_safety`). 5: each trial of it, its largest
 /// displacement (`Trial::displacement_m`), and the mechanism's blocks (`FactorOfSafety::mechanism`).
 /// 6: the monitoring points' samples (`RunSoFar::samples`). 7: each stage's summary, its
-/// excavations' wall moves (`StageSummary::walls`). 8: with their liners' wall pressure.
-pub const VERSION: u32 = 8;
+/// excavations' wall moves (`StageSummary::walls`). 8: with their liners' wall pressure. 9: the
+/// scene's part so far as text (`prefix.rs`) for its hash, the run's name, the supports' state
+/// per installed group.
+pub const VERSION: u32 = 9;
 
 const MAGIC: &[u8; 8] = b"ADITCKPT";
 
@@ -58,37 +66,40 @@ pub fn path(out: &Path, number: usize) -> PathBuf {
         .join(format!("stage_{number:02}.ckpt"))
 }
 
-/// FNV-1a (64 bits) of the scene as parsed (its `Debug` text: the same scene, whatever its
-/// layout in the file, hashes the same).
-pub fn scene_hash(scene: &Scene) -> u64 {
-    format!("{scene:?}")
-        .bytes()
-        .fold(0xcbf2_9ce4_8422_2325, |h, b| {
-            (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3)
-        })
-}
-
 /// The checkpoint of `run` and `model` for `scene`, as bytes.
 pub fn encode(scene: &Scene, run: &RunSoFar, model: &Model) -> Vec<u8> {
     let mut out = MAGIC.to_vec();
     put(&mut out, &VERSION);
-    put(&mut out, &scene_hash(scene));
-    put(&mut out, &run.stages_done);
-    put(&mut out, &run.cycles);
-    put(&mut out, &run.history);
-    put(&mut out, &run.samples);
-    put(&mut out, &run.summaries);
-    put(&mut out, &run.methods);
-    put(&mut out, &run.implicit);
-    put(&mut out, &run.steps);
+    put(&mut out, &prefix::prefix(scene, run.stages_done));
+    put_run(&mut out, run);
     state::save(model, &mut out);
     out
 }
 
-/// Read the run so far from `bytes` and put the state into `model` (built from `scene`, the
-/// stages before replayed): an error naming why when the bytes are not a checkpoint of `scene`
-/// at this version.
-pub fn decode(bytes: &[u8], scene: &Scene, model: &mut Model) -> anyhow::Result<RunSoFar> {
+fn put_run(out: &mut Vec<u8>, run: &RunSoFar) {
+    put(out, &run.stages_done);
+    put(out, &run.cycles);
+    put(out, &run.history);
+    put(out, &run.samples);
+    put(out, &run.summaries);
+    put(out, &run.methods);
+    put(out, &run.implicit);
+    put(out, &run.steps);
+}
+
+/// A checkpoint read up to the model's state: the run so far, its scene's part and name.
+pub struct Read<'a> {
+    pub run: RunSoFar,
+    /// The part of the checkpoint's scene that set its state (`prefix::prefix`).
+    pub prefix: String,
+    /// Where the model's state starts in the checkpoint's bytes.
+    state_at: usize,
+    state: Reader<'a>,
+}
+
+/// Read the run so far from `bytes`: an error naming why when they are not a checkpoint of this
+/// version.
+pub fn read(bytes: &[u8]) -> anyhow::Result<Read<'_>> {
     anyhow::ensure!(
         bytes.len() >= MAGIC.len() && &bytes[..MAGIC.len()] == MAGIC,
         "not an adit checkpoint"
@@ -99,10 +110,7 @@ pub fn decode(bytes: &[u8], scene: &Scene, model: &mut Model) -> anyhow::Result<
         version == VERSION,
         "a checkpoint of format version {version}; this adit reads version {VERSION}"
     );
-    anyhow::ensure!(
-        u64::get(&mut r)? == scene_hash(scene),
-        "the checkpoint is of another scene (or of this scene before it was changed)"
-    );
+    let prefix = String::get(&mut r)?;
     let run = RunSoFar {
         stages_done: Codec::get(&mut r)?,
         cycles: Codec::get(&mut r)?,
@@ -113,12 +121,85 @@ pub fn decode(bytes: &[u8], scene: &Scene, model: &mut Model) -> anyhow::Result<
         implicit: Codec::get(&mut r)?,
         steps: Codec::get(&mut r)?,
     };
-    state::restore(model, &mut r)?;
-    anyhow::ensure!(
-        r.at_end(),
-        "the checkpoint has bytes after its state (damaged?)"
-    );
-    Ok(run)
+    Ok(Read {
+        run,
+        prefix,
+        state_at: MAGIC.len() + r.position(),
+        state: r,
+    })
+}
+
+impl Read<'_> {
+    /// An error naming the first field where `scene`'s stages so far differ from the
+    /// checkpoint's.
+    pub fn same_stages_as(&self, scene: &Scene) -> anyhow::Result<()> {
+        let ours = prefix::prefix(scene, self.run.stages_done);
+        match prefix::first_difference(&self.prefix, &ours) {
+            None => Ok(()),
+            Some((path, theirs, ours)) => anyhow::bail!(
+                "the checkpoint's run differs from this scene in its first {} stage(s): first at \
+                 {path} (the checkpoint's `{theirs}`, the scene's `{ours}`); a run goes on from a \
+                 checkpoint whose stages so far are the scene's",
+                self.run.stages_done
+            ),
+        }
+    }
+
+    /// Put the state into `model` (built from `scene`, the stages before replayed) and return
+    /// the run so far, its output files named for `scene`.
+    pub fn restore(mut self, scene: &Scene, model: &mut Model) -> anyhow::Result<RunSoFar> {
+        self.same_stages_as(scene)?;
+        state::restore(model, &mut self.state)?;
+        anyhow::ensure!(
+            self.state.at_end(),
+            "the checkpoint has bytes after its state (damaged?)"
+        );
+        Ok(self.run.named(&scene.name))
+    }
+}
+
+impl RunSoFar {
+    /// The run so far with its output files named as the run of the scene named `name` writes
+    /// them.
+    fn named(mut self, name: &str) -> RunSoFar {
+        for (_, _, files) in &mut self.steps {
+            for f in files.iter_mut() {
+                *f = renamed(f, name);
+            }
+        }
+        self
+    }
+}
+
+/// The checkpoint `bytes` as the run of the scene named `name` writes it: its output files
+/// renamed, the rest (the stages' part of the scene, the state) the same for any scene going on
+/// from it.
+pub fn named(bytes: &[u8], name: &str) -> anyhow::Result<Vec<u8>> {
+    let read = read(bytes)?;
+    let mut out = MAGIC.to_vec();
+    put(&mut out, &VERSION);
+    put(&mut out, &read.prefix);
+    let state_at = read.state_at;
+    put_run(&mut out, &read.run.named(name));
+    out.extend_from_slice(&bytes[state_at..]);
+    Ok(out)
+}
+
+/// The output file `file` (`<name>_<kind>_NNNN.vtu`) as the run of the scene named `name`
+/// writes it.
+pub fn renamed(file: &str, name: &str) -> String {
+    let mut parts = file.rsplitn(3, '_');
+    match (parts.next(), parts.next(), parts.next()) {
+        (Some(step), Some(kind), Some(_)) => format!("{name}_{kind}_{step}"),
+        _ => file.to_string(),
+    }
+}
+
+/// Read the run so far from `bytes` and put the state into `model` (built from `scene`, the
+/// stages before replayed): an error naming why when the bytes are not a checkpoint of `scene`'s
+/// stages so far at this version.
+pub fn decode(bytes: &[u8], scene: &Scene, model: &mut Model) -> anyhow::Result<RunSoFar> {
+    read(bytes)?.restore(scene, model)
 }
 
 impl Codec for HistoryRow {

@@ -5,6 +5,7 @@
 use super::codec::{Codec, Reader, put};
 use crate::joint::JointState;
 use crate::model::{MaterialId, Model};
+use crate::support::{Cables, Liners};
 
 impl Codec for MaterialId {
     fn put(&self, out: &mut Vec<u8>) {
@@ -117,27 +118,7 @@ pub fn save(model: &Model, out: &mut Vec<u8>) {
     put(out, &c.material);
     put(out, &c.corner);
     put(out, &c.state);
-    let k = &model.supports.cables;
-    put(out, &k.active);
-    put(out, &k.disp);
-    put(out, &k.vel);
-    put(out, &k.force);
-    put(out, &k.applied);
-    put(out, &k.mass);
-    put(out, &k.rock_origin);
-    put(out, &k.grout_force);
-    put(out, &k.slip);
-    put(out, &k.axial);
-    put(out, &k.plastic);
-    let l = &model.supports.liners;
-    put(out, &l.active);
-    put(out, &l.disp);
-    put(out, &l.vel);
-    put(out, &l.force);
-    put(out, &l.mass);
-    put(out, &l.link_origin);
-    put(out, &l.axial);
-    put(out, &l.moment);
+    save_supports(model, out);
     put(out, &model.far_field.as_ref().map(|f| f.attached.clone()));
 }
 
@@ -201,36 +182,154 @@ pub fn restore(model: &mut Model, r: &mut Reader) -> anyhow::Result<()> {
         "the checkpoint's contacts name nodes or edges the scene does not have (not this scene's?)"
     );
     model.contacts = std::mem::take(&mut model.contacts).indexed(nodes, &model.blocks.edges);
-    let k = &mut model.supports.cables;
-    k.active = same(r, k.active.len(), "bolt groups")?;
-    let cable = k.nodes();
-    k.disp = same(r, cable, "bolt displacements")?;
-    k.vel = same(r, cable, "bolt velocities")?;
-    k.force = same(r, cable, "bolt forces")?;
-    k.applied = same(r, cable, "bolt loads")?;
-    k.mass = same(r, cable, "bolt masses")?;
-    k.rock_origin = same(r, cable, "bolt rock origins")?;
-    k.grout_force = same(r, cable, "grout forces")?;
-    k.slip = same(r, cable, "grout slips")?;
-    let segments = k.segment.len();
-    k.axial = same(r, segments, "bolt axial forces")?;
-    k.plastic = same(r, segments, "bolt plastic elongations")?;
-    let l = &mut model.supports.liners;
-    l.active = same(r, l.active.len(), "liners")?;
-    let liner = l.nodes();
-    l.disp = same(r, liner, "liner displacements")?;
-    l.vel = same(r, liner, "liner velocities")?;
-    l.force = same(r, liner, "liner forces")?;
-    l.mass = same(r, liner, "liner masses")?;
-    l.link_origin = same(r, l.link_node.len(), "liner link origins")?;
-    let elements = l.element.len();
-    l.axial = same(r, elements, "liner axial forces")?;
-    l.moment = same(r, elements, "liner moments")?;
+    restore_supports(model, r)?;
     let attached: Option<Vec<[f64; 2]>> = Codec::get(r)?;
     match (&mut model.far_field, attached) {
         (Some(f), Some(a)) if a.len() == f.attached.len() => f.attached = a,
         (None, None) => {}
         _ => anyhow::bail!("the checkpoint's far field is not the scene's"),
+    }
+    Ok(())
+}
+
+/// The items of `values` at `at`.
+fn pick<T: Clone>(values: &[T], at: &[usize]) -> Vec<T> {
+    at.iter().map(|&i| values[i].clone()).collect()
+}
+
+/// Read as many items as `at` holds into `values` at `at`.
+fn scatter<T: Codec>(
+    r: &mut Reader,
+    values: &mut [T],
+    at: &[usize],
+    what: &str,
+) -> anyhow::Result<()> {
+    for (v, &i) in same::<T>(r, at.len(), what)?.into_iter().zip(at) {
+        values[i] = v;
+    }
+    Ok(())
+}
+
+/// Where each installed bolt group's state lies: its cable nodes and its segments.
+fn cable_items(k: &Cables, g: u32) -> (Vec<usize>, Vec<usize>) {
+    let nodes = (0..k.nodes()).filter(|&n| k.group[n] == g).collect();
+    let segments = (0..k.segment.len())
+        .filter(|&s| k.segment_group[s] == g)
+        .collect();
+    (nodes, segments)
+}
+
+/// Where each installed liner's state lies: its nodes, its links and its elements.
+fn liner_items(l: &Liners, g: u32) -> (Vec<usize>, Vec<usize>, Vec<usize>) {
+    let nodes = (0..l.nodes()).filter(|&n| l.group[n] == g).collect();
+    let links = (0..l.link_node.len())
+        .filter(|&k| l.group[l.link_node[k] as usize] == g)
+        .collect();
+    let elements = (0..l.element.len())
+        .filter(|&e| l.element_group[e] == g)
+        .collect();
+    (nodes, links, elements)
+}
+
+/// The state of each installed bolt group and liner, by name: the supports a later stage
+/// installs hold none yet, and a scene that branches from this checkpoint may define them
+/// otherwise.
+fn save_supports(model: &Model, out: &mut Vec<u8>) {
+    let k = &model.supports.cables;
+    let groups: Vec<u32> = (0..k.names.len() as u32)
+        .filter(|&g| k.active[g as usize])
+        .collect();
+    put(out, &groups.len());
+    for &g in &groups {
+        let (n, s) = cable_items(k, g);
+        put(out, &k.names[g as usize]);
+        put(out, &pick(&k.disp, &n));
+        put(out, &pick(&k.vel, &n));
+        put(out, &pick(&k.force, &n));
+        put(out, &pick(&k.applied, &n));
+        put(out, &pick(&k.mass, &n));
+        put(out, &pick(&k.rock_origin, &n));
+        put(out, &pick(&k.grout_force, &n));
+        put(out, &pick(&k.slip, &n));
+        put(out, &pick(&k.axial, &s));
+        put(out, &pick(&k.plastic, &s));
+    }
+    let l = &model.supports.liners;
+    let liners: Vec<u32> = (0..l.names.len() as u32)
+        .filter(|&g| l.active[g as usize])
+        .collect();
+    put(out, &liners.len());
+    for &g in &liners {
+        let (n, links, e) = liner_items(l, g);
+        put(out, &l.names[g as usize]);
+        put(out, &pick(&l.disp, &n));
+        put(out, &pick(&l.vel, &n));
+        put(out, &pick(&l.force, &n));
+        put(out, &pick(&l.mass, &n));
+        put(out, &pick(&l.link_origin, &links));
+        put(out, &pick(&l.axial, &e));
+        put(out, &pick(&l.moment, &e));
+    }
+}
+
+/// The index of the support named `name` among `names`, installed (`active`) in the scene's
+/// stages so far: an error naming it otherwise.
+fn installed(names: &[String], active: &[bool], name: &str, kind: &str) -> anyhow::Result<u32> {
+    let g = names.iter().position(|n| n == name).ok_or_else(|| {
+        anyhow::anyhow!("the checkpoint's {kind} '{name}' is not in the scene (not this scene's?)")
+    })?;
+    anyhow::ensure!(
+        active[g],
+        "the checkpoint's {kind} '{name}' is installed, the scene's is not yet (not this scene's?)"
+    );
+    Ok(g as u32)
+}
+
+/// Put the saved state of the installed supports into `model`'s, group by group by name; every
+/// support the stages so far installed must be saved.
+fn restore_supports(model: &mut Model, r: &mut Reader) -> anyhow::Result<()> {
+    let k = &mut model.supports.cables;
+    let groups = usize::get(r)?;
+    anyhow::ensure!(
+        groups == k.active.iter().filter(|&&a| a).count(),
+        "the checkpoint holds {groups} installed bolt group(s), the scene's stages so far install \
+         {} (not this scene's?)",
+        k.active.iter().filter(|&&a| a).count()
+    );
+    for _ in 0..groups {
+        let name = String::get(r)?;
+        let g = installed(&k.names, &k.active, &name, "bolt group")?;
+        let (n, s) = cable_items(k, g);
+        scatter(r, &mut k.disp, &n, "bolt displacements")?;
+        scatter(r, &mut k.vel, &n, "bolt velocities")?;
+        scatter(r, &mut k.force, &n, "bolt forces")?;
+        scatter(r, &mut k.applied, &n, "bolt loads")?;
+        scatter(r, &mut k.mass, &n, "bolt masses")?;
+        scatter(r, &mut k.rock_origin, &n, "bolt rock origins")?;
+        scatter(r, &mut k.grout_force, &n, "grout forces")?;
+        scatter(r, &mut k.slip, &n, "grout slips")?;
+        scatter(r, &mut k.axial, &s, "bolt axial forces")?;
+        scatter(r, &mut k.plastic, &s, "bolt plastic elongations")?;
+    }
+    let l = &mut model.supports.liners;
+    let liners = usize::get(r)?;
+    anyhow::ensure!(
+        liners == l.active.iter().filter(|&&a| a).count(),
+        "the checkpoint holds {liners} installed liner(s), the scene's stages so far install {} \
+         (not this scene's?)",
+        l.active.iter().filter(|&&a| a).count()
+    );
+    for _ in 0..liners {
+        let name = String::get(r)?;
+        let g = installed(&l.names, &l.active, &name, "liner")?;
+        let (n, links, e) = liner_items(l, g);
+        scatter(r, &mut l.disp, &n, "liner displacements")?;
+        scatter(r, &mut l.vel, &n, "liner velocities")?;
+        scatter(r, &mut l.force, &n, "liner forces")?;
+        scatter(r, &mut l.mass, &n, "liner masses")?;
+        scatter(r, &mut l.link_origin, &links, "liner link origins")?;
+        scatter(r, &mut l.axial, &e, "liner axial forces")?;
+        scatter(r, &mut l.moment, &e, "liner moments")?;
     }
     Ok(())
 }

@@ -37,7 +37,7 @@
 //! would hold zones beyond their strength. There each trial adds the shift of the iteration
 //! before to its predictor instead, and keeps the return's stress: at convergence the shift is
 //! the one that return produces, and every zone lies on or within its surface. Added after the
-//! return, a dilatant hole (ν = 0.4, ψ = 10°: `tests/implicit.rs`) closed 27 % less than
+//! return, a dilatant hole (ν = 0.4, ψ = 10°: `tests/engine/implicit.rs`) closed 27 % less than
 //! explicitly released slowly, and an explicit stage after it closed it 40 % further; lagged,
 //! +0.55 %, and the explicit stage after it is at rest.
 

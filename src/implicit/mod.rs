@@ -16,7 +16,7 @@
 //! iterations; 111 iterations to 1e-5 accelerated, the joints' trial from the commit). The
 //! tangent of slipping and open contacts diverged there (a wedge left without stiffness runs
 //! off); at a tenth of their stiffness it saved iterations (52 instead of 118) but moved answers
-//! that depend on where contacts are detected (`tests/implicit.rs`,
+//! that depend on where contacts are detected (`tests/engine/implicit.rs`,
 //! `a_joint_that_closes_converges_on_the_stiff_answer`) and let a sliding block run off before
 //! it was named.
 //!

@@ -51,7 +51,7 @@ impl JointLaw for CoulombSlip {
     /// the cycle after it failed, and dilates by the slip beyond its intact limit, as the cycles
     /// after failing count it: returned to c − σn tan φ instead, the implicit answer held the
     /// joints that failed at their intact strength, and explicit cycles after it closed a
-    /// jointed hole 13 % further (`tests/implicit.rs`).
+    /// jointed hole 13 % further (`tests/engine/implicit.rs`).
     fn trial(&self, s: &mut JointState, dn: f64, ds: f64) {
         let committed = *s;
         self.advance(s, dn, ds, Dilation::PlasticSlip(0.0));

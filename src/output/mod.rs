@@ -239,11 +239,13 @@ impl OutputWriter {
             Ok(())
         };
         write("zones", grid(vtu::zones_vtu(model, &labels))?)?;
-        if model.blocks.len() > 1 {
+        // A step with no contact (the joints all left the model, as a staged hole's fill does)
+        // writes neither file: an empty grid is valid VTK but meshio cannot read it.
+        if model.blocks.len() > 1 && !model.contacts.is_empty() {
             write("contacts", grid(vtu::contacts_vtu(model, &labels))?)?;
             write("joints", grid(joints_vtu::joints_vtu(model, &labels))?)?;
         }
-        if !model.supports.is_empty() {
+        if model.supports.any_installed() {
             write(
                 "supports",
                 grid(supports_vtu::supports_vtu(model, &labels))?,
@@ -262,7 +264,8 @@ impl OutputWriter {
     }
 
     /// The collection: one data set per file of each step, its `part` and `name` the file's kind
-    /// (0 `zones`, then `contacts`, `joints`, `supports` as present: ParaView names its blocks so)
+    /// (`PARTS`: 0 `zones`, 1 `contacts`, 2 `joints`, 3 `supports`, the same at every step whatever
+    /// a step leaves out; ParaView names its blocks so)
     /// and its `stage` the step's stage (an attribute readers pass over; the files' field data
     /// `stage` carries it into ParaView).
     fn write_pvd(&self) -> std::io::Result<()> {
@@ -276,8 +279,9 @@ impl OutputWriter {
             writeln!(w, "  <Collection>")?;
             for s in &self.steps {
                 let stage = xml_attribute(&s.stage);
-                for (part, file) in s.files.iter().enumerate() {
+                for file in &s.files {
                     let kind = file_kind(file);
+                    let part = PARTS.iter().position(|&k| k == kind).unwrap_or(PARTS.len());
                     writeln!(
                         w,
                         "    <DataSet timestep=\"{}\" group=\"\" part=\"{part}\" name=\"{kind}\" stage=\"{stage}\" file=\"{file}\"/>",
@@ -372,6 +376,9 @@ struct Step {
 }
 
 /// The kind of a grid file `<name>_<kind>_NNNN.vtu`: `zones`, `contacts`, `joints` or `supports`.
+/// The kinds of a step's files, in the order of their `part` in the collection.
+const PARTS: [&str; 4] = ["zones", "contacts", "joints", "supports"];
+
 fn file_kind(file: &str) -> &str {
     let stem = file.strip_suffix(".vtu").unwrap_or(file);
     let stem = stem.rsplit_once('_').map_or(stem, |(s, _)| s);
@@ -520,10 +527,14 @@ pub struct Summary {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub(crate) critical_block: Option<u32>,
     /// What sets the critical step: `zones at node N`, `contacts at node N`, `supports`, `block B`.
+    /// The step is the smallest over the stages (the supports a stage installs stiffen it).
     pub critical_limiter: String,
+    /// The stage whose critical step is the smallest (staged scenes only).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub critical_stage: Option<String>,
     /// Smallest zone angle, degrees.
     pub min_zone_angle: f64,
-    /// What building the model found worth a warning (sliver blocks, absorbed joints).
+    /// What building the model found worth a warning (sliver blocks, joints merged into walls).
     pub warnings: Vec<String>,
     /// Each stage of a staged scene, in order (empty without stages).
     #[serde(skip_serializing_if = "Vec::is_empty")]

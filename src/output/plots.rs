@@ -56,32 +56,29 @@ pub fn write_plots(
     model: &Model,
 ) -> Vec<String> {
     let mut warnings = Vec::new();
-    let mut plot = |file: &str, title: &str, axes: (&str, &str), log_y: bool, lines: Vec<Line>| {
-        if lines.iter().all(|l| l.points.is_empty()) {
-            return;
-        }
-        // Plots are the last of a run's outputs: an interrupt skips those not yet drawn.
-        if crate::interrupt::requested() {
-            warnings.push(format!("{file} not written: interrupted"));
-            return;
-        }
-        warnings.extend(write_png(dir, file, || draw(title, axes, log_y, &lines)));
-    };
     let ratio = history
         .iter()
         .filter(|r| r.ratio.is_finite() && r.ratio > 0.0)
         .map(|r| (r.cycle as f64, r.ratio))
         .collect();
-    plot(
-        "history.png",
-        "Unbalanced-force ratio",
-        ("cycle (implicit: iteration)", "ratio"),
-        true,
-        vec![Line {
-            label: "ratio".into(),
-            points: ratio,
-        }],
+    let marks: Vec<f64> = if stages.len() > 1 {
+        stage_ends(stages).into_iter().map(|c| c as f64).collect()
+    } else {
+        Vec::new()
+    };
+    let ratio = [Line {
+        label: "ratio".into(),
+        points: ratio,
+    }];
+    let axes = (
+        "cycle (implicit: iteration); dashed: a stage's end",
+        "ratio",
     );
+    let file = ("history.png", "Unbalanced-force ratio", axes, true);
+    plot_marked(&mut warnings, dir, file, &ratio, &marks);
+    let mut plot = |file: &str, title: &str, axes: (&str, &str), log_y: bool, lines: Vec<Line>| {
+        plot_marked(&mut warnings, dir, (file, title, axes, log_y), &lines, &[]);
+    };
     // Each excavation's curve starts at no closure under the whole in-situ pressure.
     let curves = excavations
         .iter()
@@ -223,16 +220,46 @@ fn padded(lo: f64, hi: f64) -> (f64, f64) {
     (lo - pad, hi + pad)
 }
 
-/// Draw `lines` as a PNG image (their finite points: [`drawable`]).
-fn draw(title: &str, axes: (&str, &str), log_y: bool, lines: &[Line]) -> Result<Vec<u8>, String> {
-    draw_finite(title, axes, log_y, &drawable(lines, log_y)?)
+/// Draw `lines` (with a dashed vertical line at each of `marks`) into `dir` as the file of
+/// `(file, title, axes, log_y)`, unless they hold no point; what could not be drawn goes to
+/// `warnings`.
+fn plot_marked(
+    warnings: &mut Vec<String>,
+    dir: &Path,
+    (file, title, axes, log_y): (&str, &str, (&str, &str), bool),
+    lines: &[Line],
+    marks: &[f64],
+) {
+    if lines.iter().all(|l| l.points.is_empty()) {
+        return;
+    }
+    // Plots are the last of a run's outputs: an interrupt skips those not yet drawn.
+    if crate::interrupt::requested() {
+        warnings.push(format!("{file} not written: interrupted"));
+        return;
+    }
+    warnings.extend(write_png(dir, file, || {
+        draw_finite(title, axes, log_y, &drawable(lines, log_y)?, marks)
+    }));
 }
 
+/// The cycle at which each stage ends, counted from the start of the run.
+pub fn stage_ends(stages: &[StageSummary]) -> Vec<u64> {
+    (stages.iter())
+        .scan(0, |done, s| {
+            *done += s.cycles;
+            Some(*done)
+        })
+        .collect()
+}
+
+/// Draw `lines` with a dashed vertical line at each of `marks` (x).
 fn draw_finite(
     title: &str,
     (x_label, y_label): (&str, &str),
     log_y: bool,
     lines: &[Line],
+    marks: &[f64],
 ) -> Result<Vec<u8>, String> {
     let mut rgb = vec![255u8; (SIZE.0 * SIZE.1 * 3) as usize];
     {
@@ -267,6 +294,16 @@ fn draw_finite(
                 .y_label_formatter(&|v| format!("{v:.0e}"))
                 .draw()
                 .map_err(|e| err(&e))?;
+            for &x in marks.iter().filter(|&&x| x > x0 && x < x1) {
+                chart
+                    .draw_series(DashedLineSeries::new(
+                        [(x, lo * 0.5), (x, hi * 2.0)],
+                        4,
+                        4,
+                        BLACK.mix(0.5).stroke_width(1),
+                    ))
+                    .map_err(|e| err(&e))?;
+            }
             for (i, l) in lines.iter().enumerate() {
                 let color = color_of(i, lines.len());
                 chart
@@ -401,6 +438,40 @@ mod tests {
     use super::*;
 
     /// A plot comes out as a PNG of the plot's size.
+    #[test]
+    fn the_ratio_plot_marks_the_stages_ends() {
+        let lines = [Line {
+            label: "ratio".into(),
+            points: vec![(0.0, 1.0), (60.0, 1e-2), (100.0, 1e-5)],
+        }];
+        let axes = ("cycle", "ratio");
+        let plain = draw_finite("r", axes, true, &lines, &[]).unwrap();
+        let marked = draw_finite("r", axes, true, &lines, &[60.0]).unwrap();
+        assert_ne!(plain, marked, "the stage's end is drawn");
+    }
+
+    /// Draw `lines` as a PNG image (their finite points: [`drawable`]).
+    fn draw(
+        title: &str,
+        axes: (&str, &str),
+        log_y: bool,
+        lines: &[Line],
+    ) -> Result<Vec<u8>, String> {
+        draw_finite(title, axes, log_y, &drawable(lines, log_y)?, &[])
+    }
+
+    /// Issue 49: colours do not repeat among the bolts (the tunnel has 11, a pattern may have
+    /// dozens).
+    #[test]
+    fn no_two_lines_share_a_colour() {
+        for n in [1, 6, 7, 11, 40] {
+            let colors: Vec<_> = (0..n).map(|i| color_of(i, n).rgb()).collect();
+            for i in 0..n {
+                assert!(!colors[..i].contains(&colors[i]), "{n} lines: {i} repeats");
+            }
+        }
+    }
+
     #[test]
     fn a_plot_is_a_png_image() {
         let line = Line {

@@ -7,7 +7,9 @@
 //! cables), `liner_utilization` (1 over the element's factor of safety against its thrust, moment
 //! and shear, `support::liner_capacity`: 1 on its capacity envelope; 0 for cables and for liners
 //! without strengths), `kind` (0 bolt, 1 liner), `installed` and `yielded` per cell, and the
-//! rock's `displacement` (m) at each point.
+//! rock's `displacement` (m) at each point. Only the supports installed so far are written (a
+//! step before any is installed writes no file): a branch of a run that bolts differently later
+//! writes the same files up to its branching stage.
 
 use vtkio::model::{Attribute, Attributes, CellType, Cells, UnstructuredGridPiece, VertexNumbers};
 
@@ -45,7 +47,6 @@ pub fn supports_vtu(model: &Model, labels: &Labels) -> Result<Vec<u8>, vtkio::Er
         displacement.extend([u[0], u[1], 0.0]);
     }
     let segments = c.segment.len();
-    let cells = segments + l.element.len();
     let connectivity: Vec<u64> = c
         .segment
         .iter()
@@ -87,29 +88,96 @@ pub fn supports_vtu(model: &Model, labels: &Labels) -> Result<Vec<u8>, vtkio::Er
         .map(|&p| i32::from(p != 0.0))
         .chain(std::iter::repeat_n(0, l.element.len()))
         .collect();
+    let kept = Kept::of(&installed, &connectivity, points.len() / 3);
+    let cells = kept.cells;
     let piece = UnstructuredGridPiece {
-        points: points.into(),
+        points: kept.points(&points).into(),
         cells: Cells {
             cell_verts: VertexNumbers::XML {
-                connectivity,
+                connectivity: kept.connectivity(&connectivity),
                 offsets: (1..=cells as u64).map(|k| 2 * k).collect(),
             },
             types: vec![CellType::Line; cells],
         },
         data: Attributes {
-            point: vec![Attribute::generic("displacement", 3).with_data(displacement)],
+            point: vec![
+                Attribute::generic("displacement", 3).with_data(kept.points(&displacement)),
+            ],
             cell: vec![
-                Attribute::generic("axial_force", 1).with_data(axial),
-                Attribute::generic("bolt_force_n", 1).with_data(per_bolt),
-                Attribute::generic("bolt_utilization", 1).with_data(utilization),
-                Attribute::generic("moment", 1).with_data(moment),
-                Attribute::generic("shear_force_n_per_m", 1).with_data(shear),
-                Attribute::generic("liner_utilization", 1).with_data(liner_utilization),
-                Attribute::generic("kind", 1).with_data(kind),
-                Attribute::generic("installed", 1).with_data(installed),
-                Attribute::generic("yielded", 1).with_data(yielded),
+                Attribute::generic("axial_force", 1).with_data(kept.cell(&axial)),
+                Attribute::generic("bolt_force_n", 1).with_data(kept.cell(&per_bolt)),
+                Attribute::generic("bolt_utilization", 1).with_data(kept.cell(&utilization)),
+                Attribute::generic("moment", 1).with_data(kept.cell(&moment)),
+                Attribute::generic("shear_force_n_per_m", 1).with_data(kept.cell(&shear)),
+                Attribute::generic("liner_utilization", 1).with_data(kept.cell(&liner_utilization)),
+                Attribute::generic("kind", 1).with_data(kept.cell(&kind)),
+                Attribute::generic("installed", 1).with_data(kept.cell(&installed)),
+                Attribute::generic("yielded", 1).with_data(kept.cell(&yielded)),
             ],
         },
     };
     xml_of(piece, labels)
+}
+
+/// The installed cells of the supports' grid and the points they use, renumbered in order.
+struct Kept {
+    keep: Vec<bool>,
+    /// New number of each old point (`u64::MAX`: not used by a kept cell).
+    renumber: Vec<u64>,
+    cells: usize,
+}
+
+impl Kept {
+    /// The cells whose `installed` flag is set, of line cells `connectivity` over `points`.
+    fn of(installed: &[i32], connectivity: &[u64], points: usize) -> Kept {
+        let keep: Vec<bool> = installed.iter().map(|&i| i != 0).collect();
+        let mut used = vec![false; points];
+        for (cell, ends) in connectivity.chunks(2).enumerate() {
+            if keep[cell] {
+                ends.iter().for_each(|&p| used[p as usize] = true);
+            }
+        }
+        let mut next = 0;
+        let renumber = used
+            .iter()
+            .map(|&u| {
+                if u {
+                    next += 1;
+                    next - 1
+                } else {
+                    u64::MAX
+                }
+            })
+            .collect();
+        let cells = keep.iter().filter(|&&k| k).count();
+        Kept {
+            keep,
+            renumber,
+            cells,
+        }
+    }
+
+    fn cell<T: Copy>(&self, values: &[T]) -> Vec<T> {
+        values
+            .iter()
+            .zip(&self.keep)
+            .filter(|(_, k)| **k)
+            .map(|(v, _)| *v)
+            .collect()
+    }
+
+    /// Point values, three per point.
+    fn points(&self, values: &[f64]) -> Vec<f64> {
+        (values.chunks(3).zip(&self.renumber))
+            .filter(|(_, n)| **n != u64::MAX)
+            .flat_map(|(v, _)| v.iter().copied())
+            .collect()
+    }
+
+    fn connectivity(&self, connectivity: &[u64]) -> Vec<u64> {
+        (connectivity.chunks(2).zip(&self.keep))
+            .filter(|(_, k)| **k)
+            .flat_map(|(ends, _)| ends.iter().map(|&p| self.renumber[p as usize]))
+            .collect()
+    }
 }

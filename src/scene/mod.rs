@@ -2,6 +2,7 @@
 //! boundary conditions, solve criterion, output). Every field is documented in
 //! `docs/scene-format.md`; unknown fields are errors.
 
+mod json_path;
 mod limits;
 mod magnitudes;
 mod names;
@@ -1139,7 +1140,8 @@ impl Scene {
             source_name: source.to_string(),
             line: e.line(),
             column: e.column(),
-            message: e.to_string(),
+            path: json_path::path_at(text, e.line(), e.column()),
+            message: json_path::plain_message(&e.to_string()),
         };
         let scene: Scene = serde_json::from_str(text).map_err(parse_error)?;
         let numbers: serde_json::Value = serde_json::from_str(text).map_err(parse_error)?;
@@ -1163,6 +1165,7 @@ impl Scene {
                 source_name: source.clone(),
                 line,
                 column,
+                path: String::new(),
                 message: "not UTF-8 text".into(),
             }
         })?;
@@ -1261,7 +1264,9 @@ mod tests {
     fn unknown_field_is_named() {
         let msg = error_of(&GOOD.replace("\"density\"", "\"densty\": 1, \"density\""));
         assert!(
-            msg.contains("unknown field `densty`") && msg.contains("line 3"),
+            msg.contains("unknown field `densty`")
+                && msg.contains("line 3")
+                && msg.contains(", at materials.rock.densty:"),
             "{msg}"
         );
     }

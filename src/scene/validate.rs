@@ -13,16 +13,27 @@ pub enum SceneError {
     #[error("cannot read {path}: {message}")]
     Io { path: String, message: String },
     /// Malformed JSON, an unknown field, or a value of the wrong type.
-    #[error("{source_name}: line {line}, column {column}: {message}")]
+    #[error("{source_name}: line {line}, column {column}{}: {message}", at_path(.path))]
     Parse {
         source_name: String,
         line: usize,
         column: usize,
+        /// The JSON path of the value there (`materials.rock.young`), empty at the top level.
+        path: String,
         message: String,
     },
     /// A well-formed value that is not allowed.
     #[error("{path}: {reason}")]
     Invalid { path: String, reason: String },
+}
+
+/// `, at materials.rock.young` for a parse error's path; nothing at the top level.
+fn at_path(path: &str) -> String {
+    if path.is_empty() {
+        String::new()
+    } else {
+        format!(", at {path}")
+    }
 }
 
 /// A number as a message shows it: plainly between 1e-4 and 1e9 in size, else in scientific

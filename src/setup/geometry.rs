@@ -162,6 +162,58 @@ impl Meshed {
     }
 }
 
+impl Meshed {
+    /// Why the sharpest zone is sharper than `min_angle` (degrees), for `adit check` and the run's
+    /// console: the corner of its block's boundary nearest to it, when that corner is itself
+    /// sharper (refinement cannot make a zone's angle exceed the corner it sits in), else that
+    /// refinement stopped there. Empty when no zone is sharper than `min_angle`.
+    pub fn min_angle_note(&self, min_angle: f64) -> String {
+        let Some((angle, at, b)) = self.sharpest_zone() else {
+            return String::new();
+        };
+        if angle >= min_angle - 0.05 {
+            return String::new();
+        }
+        let corner = self.blocking.blocks[b]
+            .rings()
+            .flat_map(|(ring, _)| {
+                let v = &ring.vertices;
+                (0..v.len()).map(move |i| {
+                    (
+                        v[i],
+                        corner_angle(v[(i + v.len() - 1) % v.len()], v[i], v[(i + 1) % v.len()]),
+                    )
+                })
+            })
+            .min_by(|(p, _), (q, _)| dist(*p, at).total_cmp(&dist(*q, at)));
+        match corner {
+            Some((p, c)) if c < min_angle => format!(
+                " (block {b}'s boundary meets at {c:.1}° at ({:.3}, {:.3}) m, where joints or \
+                 walls cross: zoning.min_angle = {min_angle}° holds everywhere but in such corners)",
+                p[0], p[1]
+            ),
+            _ => format!(
+                " (in block {b} near ({:.3}, {:.3}) m: refinement to zoning.min_angle = \
+                 {min_angle}° stopped there, where its constraints lie close together)",
+                at[0], at[1]
+            ),
+        }
+    }
+}
+
+/// The angle at `v` between the edges to `a` and `b`, degrees (0 to 180).
+fn corner_angle(a: [f64; 2], v: [f64; 2], b: [f64; 2]) -> f64 {
+    let (p, q) = ([a[0] - v[0], a[1] - v[1]], [b[0] - v[0], b[1] - v[1]]);
+    (p[0] * q[1] - p[1] * q[0])
+        .abs()
+        .atan2(p[0] * q[0] + p[1] * q[1])
+        .to_degrees()
+}
+
+fn dist(p: [f64; 2], q: [f64; 2]) -> f64 {
+    (p[0] - q[0]).hypot(p[1] - q[1])
+}
+
 /// Marks a block that is no excavation's fill.
 pub const NOT_FILL: u32 = u32::MAX;
 

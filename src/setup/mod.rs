@@ -46,7 +46,7 @@ pub struct Setup {
     pub model: Model,
     pub plan: Plan,
     pub mesh: MeshStats,
-    /// Things worth a warning: sliver blocks, joints absorbed into blocks.
+    /// Things worth a warning: sliver blocks, joints merged into walls.
     pub warnings: Vec<String>,
 }
 

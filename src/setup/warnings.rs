@@ -1,5 +1,5 @@
 //! What setting up a scene found worth saying: sliver and thin blocks, repairs, refinement that
-//! did not reach its angle, merged vertices, joints merged into walls, absorbed joints, an in-situ
+//! did not reach its angle, merged vertices, joints merged into walls, an in-situ
 //! stress that does not balance gravity; and the one mesh fault that is an error, a zone sharper
 //! than the scene accepts.
 
@@ -188,12 +188,6 @@ pub(super) fn warnings(scene: &Scene, meshed: &Meshed) -> anyhow::Result<Vec<Str
              mostly inside it and goes with them (the cutter merged their vertices onto the wall \
              within zoning.merge_tolerance = {:.4} m)",
             f.area, f.at[0], f.at[1], meshed.merge_tolerance
-        ));
-    }
-    if meshed.blocking.absorbed_joint_length > 0.0 {
-        warnings.push(format!(
-            "{:.3} m of joint traces end inside blocks and were absorbed into them",
-            meshed.blocking.absorbed_joint_length
         ));
     }
     Ok(warnings)

@@ -42,6 +42,14 @@ impl Supports {
         self.cables.nodes() == 0 && self.liners.nodes() == 0
     }
 
+    /// Whether a bolt group or a liner holding any element is installed.
+    pub fn any_installed(&self) -> bool {
+        let c = &self.cables;
+        let l = &self.liners;
+        c.segment_group.iter().any(|&g| c.active[g as usize])
+            || l.element_group.iter().any(|&g| l.active[g as usize])
+    }
+
     /// The largest forces the bolts and liners carry now.
     pub fn loads(&self) -> SupportLoads {
         let (c, l) = (&self.cables, &self.liners);

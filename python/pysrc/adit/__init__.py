@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import json
 import os
+import warnings
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Callable, Dict, List, Mapping, Optional, TypedDict, Union
@@ -27,6 +28,7 @@ import numpy as np
 from . import _adit
 
 __all__ = [
+    "AditWarning",
     "ProgressRow",
     "Results",
     "SceneLike",
@@ -62,15 +64,31 @@ def load_scene(path: Union[str, "os.PathLike[str]"]) -> Dict[str, Any]:
         return json.load(f)
 
 
+class AditWarning(UserWarning):
+    """What a run says that is worth a look but is no error: a run stopped at its cycle limit
+    (not at equilibrium), a build's repairs, a liner over capacity."""
+
+
+def _plain(value: Any) -> Any:
+    """``value`` as JSON can hold it: NumPy scalars as Python numbers, arrays as lists."""
+    if isinstance(value, np.generic):
+        return value.item()
+    if isinstance(value, np.ndarray):
+        return value.tolist()
+    if isinstance(value, os.PathLike):
+        return os.fspath(value)
+    raise TypeError(f"a scene holds numbers, strings, lists and dicts, not {type(value).__name__}")
+
+
 def _scene_json(scene: SceneLike) -> str:
-    # One field a line: an error's line then names the field.
     if isinstance(scene, (str, os.PathLike)):
-        return json.dumps(load_scene(scene), indent=1)
-    return json.dumps(scene, indent=1)
+        scene = load_scene(scene)
+    return json.dumps(scene, indent=1, default=_plain)
 
 
 def check(scene: SceneLike) -> None:
-    """Validate ``scene``: raises ``ValueError`` naming the field when it is not valid."""
+    """Validate and build ``scene`` as ``run`` does, without solving: raises ``ValueError``
+    naming the field (its JSON path) for exactly what ``run`` would refuse."""
     _adit.check(_scene_json(scene))
 
 
@@ -115,6 +133,14 @@ class Results:
     summary: Dict[str, Any] = field(repr=False)
     out_dir: Path
 
+    def __repr__(self) -> str:
+        s = self.summary
+        return (
+            f"Results({s['scene']!r}, status={self.status!r}, zones={s['zones']}, "
+            f"nodes={s['nodes']}, blocks={s['blocks']}, cycles={s['cycles']}, "
+            f"out_dir={str(self.out_dir)!r})"
+        )
+
     @property
     def status(self) -> str:
         """``converged``, ``cycle_limit``, ``failed`` or ``interrupted``."""
@@ -142,24 +168,38 @@ def run(
     out: Optional[Union[str, "os.PathLike[str]"]] = None,
     progress: Optional[Callable[[ProgressRow], None]] = None,
     from_stage: int = 1,
+    from_checkpoint: Optional[Union[str, "os.PathLike[str]"]] = None,
 ) -> Results:
     """Run ``scene`` and return its results.
 
-    The run writes its files into ``out`` (default: the scene's ``output.folder``, else
-    ``out/<name>``), as ``adit run`` does. ``progress`` is called at each monitor step. Ctrl-C
-    stops the run at the end of a cycle, writes its last state (summary status ``interrupted``)
-    and raises ``KeyboardInterrupt``; an exception in ``progress`` stops it the same way and is
-    raised. A scene that is not valid raises ``ValueError`` naming the field; a run that cannot
-    be built or solved raises ``RuntimeError`` with the reason.
+    The run writes its files into ``out`` (default: the scene's ``output.folder``, else the
+    first of ``out/<name>``, ``out/<name>-2``, ... that no earlier run wrote, so that a run never
+    writes over another), as ``adit run`` does; ``Results.out_dir`` is that folder, absolute.
+    ``progress`` is called at each monitor step. Ctrl-C stops the run at the end of a cycle,
+    writes its last state (summary status ``interrupted``) and raises ``KeyboardInterrupt``; an
+    exception in ``progress`` stops it the same way and is raised. A scene that is not valid
+    raises ``ValueError`` naming the field; a run that cannot be built, or whose solve fails (a
+    NaN, runaway energy, interpenetration), raises ``RuntimeError`` with the reason (its files,
+    summary status ``failed``, stay in ``out_dir``). A run that stops at its cycle limit, not at
+    equilibrium, and each warning of the build (``summary["warnings"]``) issue an
+    ``AditWarning``.
 
     Each stage that ends leaves a checkpoint in ``out/checkpoints/``; ``from_stage=N`` goes on
     from the one stage N - 1 left, giving the numbers of the run that was not stopped (the
-    results then hold the whole run).
+    results then hold the whole run). ``from_checkpoint`` branches (UDEC's save and restore):
+    the checkpoint of a stage of this scene, or of another whose stages up to it are the same
+    (the same excavation, another bolt pattern, liner or strength after it), and only the later
+    stages run; ``out`` then holds the files of a whole run of ``scene``. A scene whose earlier
+    stages differ is refused (``RuntimeError``) naming the first field that differs.
     """
     raw = _adit.run(
-        _scene_json(scene), None if out is None else os.fspath(out), progress, from_stage
+        _scene_json(scene),
+        None if out is None else os.fspath(out),
+        progress,
+        from_stage,
+        None if from_checkpoint is None else os.fspath(from_checkpoint),
     )
-    return Results(
+    results = Results(
         nodes=raw["nodes"],
         zones=raw["zones"],
         contacts=raw["contacts"],
@@ -173,6 +213,29 @@ def run(
         summary=json.loads(raw["summary_json"]),
         out_dir=Path(raw["out_dir"]),
     )
+    _report(results)
+    return results
+
+
+def _report(results: Results) -> None:
+    """Raise on a failed solve; warn of a cycle limit and of each build warning."""
+    s = results.summary
+    if results.status == "failed":
+        raise RuntimeError(
+            f"the solve failed: {s.get('reason', 'no reason given')} "
+            f"(its last state is in {results.out_dir})"
+        )
+    for w in s.get("warnings", []):
+        warnings.warn(w, AditWarning, stacklevel=3)
+    if results.status == "cycle_limit":
+        ratio = s.get("final_ratio")
+        warnings.warn(
+            f"the run stopped at its cycle limit ({s['cycles']} cycles, ratio {ratio}), not at "
+            "equilibrium: its results are not converged (raise solve.max_cycles, or see "
+            "summary['stages'])",
+            AditWarning,
+            stacklevel=3,
+        )
 
 
 from .sweep import sweep  # noqa: E402  (sweep uses run)

@@ -68,7 +68,7 @@ impl Case for Pullout {
          (P > s tanh(λL)/λ = {:.1} kN), the slipped length a with (P − s a) λ coth(λ(L−a)) = s. `axial`: \
          largest |N_h − N| over the segments relative to P. Beyond s·L the bolt pulls out \
          (`the_bolt_pulls_out_beyond_its_bond_capacity` in `validation/src/pullout.rs`). A bolt across an open \
-         joint carries the block hanging on it to 3 % (`tests/supports.rs`).\n",
+         joint carries the block hanging on it to 3 % (`tests/engine/supports.rs`).\n",
             pullout::CASE.first_slip() / 1e3
         );
         table(&mut md, &pullout_cases);

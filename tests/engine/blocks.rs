@@ -1,6 +1,6 @@
 //! Jointed models: blocks cut by joints interact through contacts.
 
-mod common;
+use crate::common;
 
 use adit::Scene;
 use adit::setup::setup;

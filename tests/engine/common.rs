@@ -1,7 +1,5 @@
 //! Pieces the integration tests share.
 
-#![allow(dead_code)]
-
 use std::io::Read;
 use std::process::Child;
 use std::time::{Duration, Instant};

@@ -1,7 +1,7 @@
 //! Staged runs: a tunnel filled with rock until its stage, excavation releasing the wall, a
 //! support pressure lowered stage by stage, displacements reset, one output step per stage.
 
-mod common;
+use crate::common;
 
 use adit::Scene;
 use adit::solve::Quiet;

@@ -1,6 +1,6 @@
 //! The implicit path (issue 17): a sparse direct solve reaches the explicit path's equilibrium.
 
-mod common;
+use crate::common;
 
 use adit::Scene;
 use adit::solve::Quiet;

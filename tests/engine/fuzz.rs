@@ -3,7 +3,7 @@
 //! checked by `adit check` in a child process under a time and memory limit. Every case ends with
 //! exit 0, or exit 1 and one `error:` line; never a panic (101), an abort (134), a kill or a hang.
 
-mod common;
+use crate::common;
 
 use std::process::{Command, Stdio};
 use std::time::Duration;

@@ -1,7 +1,7 @@
 //! Bad, huge and odd input (issue 15): one clear `error:` line naming the field and the limit,
 //! before anything large is built, and never a panic, an abort or a hang.
 
-mod common;
+use crate::common;
 
 use std::process::{Command, Stdio};
 use std::time::Duration;

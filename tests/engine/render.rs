@@ -79,6 +79,8 @@ fn the_tunnel_figure_renders_from_an_output_folder() {
     assert_eq!(&png[1..4], b"PNG");
     assert!(png.len() > 20_000, "a figure of {} bytes", png.len());
     let said = String::from_utf8_lossy(&out.stdout);
-    assert!(said.contains("step 'support'"), "{said}");
+    // The title names the scene, the stage and its cycle.
+    assert!(said.contains("figure: stage 'support', cycle "), "{said}");
+    assert!(said.contains("yielded zones"), "{said}");
     std::fs::remove_dir_all(&dir).unwrap();
 }

@@ -1,16 +1,17 @@
-//! Checkpoints and `--from-stage`: a run of `models/tunnel.json` restarted from stage 2 or 3
-//! writes the files of the run that was not stopped, bit for bit, also after the first run was
-//! killed in the middle of a stage; a checkpoint of another scene, a damaged one or a missing one
-//! is refused naming why.
+//! Checkpoints, `--from-stage` and `--from`: a run of `models/tunnel.json` restarted from stage 2
+//! or 3 writes the files of the run that was not stopped, bit for bit, also after the first run
+//! was killed in the middle of a stage; the tunnel excavated once and continued with other bolt
+//! patterns writes, for each, the files of a whole run of that scene (issue 49's branching bar);
+//! a checkpoint of another scene's stages, a damaged one or a missing one is refused naming why.
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
-mod common;
+use crate::common;
 
 use adit::solve::Quiet;
-use adit::{Scene, run_scene, run_scene_from};
+use adit::{Scene, run_scene, run_scene_branch, run_scene_from};
 
 fn tunnel() -> Scene {
     Scene::load(&Path::new(env!("CARGO_MANIFEST_DIR")).join("models/tunnel.json")).unwrap()
@@ -219,7 +220,8 @@ fn a_checkpoint_of_another_scene_or_damaged_or_missing_is_refused() {
     let mut other = small.clone();
     other.in_situ.sxx *= 1.01;
     assert!(
-        error(&other, 2).contains("another scene"),
+        error(&other, 2)
+            .contains("differs from this scene in its first 1 stage(s): first at in_situ.sxx"),
         "{}",
         error(&other, 2)
     );
@@ -270,4 +272,65 @@ fn a_run_without_checkpoints_leaves_none_and_says_so() {
     );
     std::fs::remove_dir_all(&with).unwrap();
     std::fs::remove_dir_all(&without).unwrap();
+}
+
+/// Every file of `a` and `b`, checkpoints and plots too, has the same bytes but summary.json,
+/// whose figures but the seconds are the same (`same_results`).
+fn same_files(a: &Path, b: &Path) {
+    same_results(a, b);
+    for sub in ["", "checkpoints"] {
+        for e in std::fs::read_dir(a.join(sub)).unwrap().flatten() {
+            let name = e.file_name();
+            if e.path().is_file() && name != "summary.json" {
+                let theirs = std::fs::read(b.join(sub).join(&name)).unwrap();
+                assert!(
+                    std::fs::read(e.path()).unwrap() == theirs,
+                    "{sub}/{name:?} differs"
+                );
+            }
+        }
+    }
+}
+
+/// Issue 49's branching bar: the tunnel excavated once (its run's checkpoint after stage 2)
+/// and continued with two other bolt patterns (closer bolts round the wall; bolts farther apart
+/// along the tunnel, in a scene of another name) writes, for each, the files of a whole run of
+/// that scene; a scene whose second stage differs is refused naming the field.
+#[test]
+fn the_tunnel_branched_after_its_excavation_writes_the_files_of_its_whole_run() {
+    let base = folder("branch-base");
+    run_scene(&tunnel(), &base, &mut Quiet).unwrap();
+    let checkpoint = base.join("checkpoints/stage_02.ckpt");
+    let mut closer = tunnel();
+    let pattern = closer.bolts[0]
+        .pattern
+        .as_mut()
+        .expect("the tunnel's bolts are a pattern");
+    (pattern.spacing, pattern.count) = (0.9, 13);
+    let mut wider = tunnel();
+    wider.name = "tunnel_wide".into();
+    wider.bolts[0].out_of_plane_spacing = 2.5;
+    for (tag, scene) in [("closer", closer), ("wider", wider)] {
+        let whole = folder(&format!("branch-{tag}-whole"));
+        let branch = folder(&format!("branch-{tag}"));
+        run_scene(&scene, &whole, &mut Quiet).unwrap();
+        let r = run_scene_branch(&scene, &branch, &checkpoint, &mut Quiet).unwrap();
+        assert_eq!(r.summary.status, "converged");
+        same_files(&whole, &branch);
+        std::fs::remove_dir_all(&whole).unwrap();
+        std::fs::remove_dir_all(&branch).unwrap();
+    }
+    let mut earlier = tunnel();
+    earlier.stages[1].support_fraction = 0.3;
+    let e = run_scene_branch(&earlier, &folder("branch-refused"), &checkpoint, &mut Quiet)
+        .err()
+        .expect("refused");
+    let e = format!("{e:#}");
+    assert!(
+        e.contains(
+            "first at stages[1].support_fraction (the checkpoint's `support_fraction: 0.25,`"
+        ),
+        "{e}"
+    );
+    std::fs::remove_dir_all(&base).unwrap();
 }

@@ -68,7 +68,7 @@ fn without_its_bolt_the_block_falls() {
 fn support_input_errors_name_the_field() {
     let bad = |edit: &dyn Fn(&mut serde_json::Value), field: &str| {
         let mut v: serde_json::Value =
-            serde_json::from_str(include_str!("../models/tunnel.json")).unwrap();
+            serde_json::from_str(include_str!("../../models/tunnel.json")).unwrap();
         edit(&mut v);
         let err = Scene::from_json(&v.to_string(), "tunnel")
             .unwrap_err()
@@ -150,7 +150,7 @@ fn an_overloaded_liner_is_warned_with_its_factor_of_safety() {
 fn liner_strengths_are_checked() {
     let bad = |capacity: serde_json::Value, field: &str| {
         let mut v: serde_json::Value =
-            serde_json::from_str(include_str!("../models/tunnel.json")).unwrap();
+            serde_json::from_str(include_str!("../../models/tunnel.json")).unwrap();
         v["liners"][0]["capacity"] = capacity;
         let err = Scene::from_json(&v.to_string(), "tunnel")
             .unwrap_err()
@@ -172,7 +172,7 @@ fn liner_strengths_are_checked() {
 #[test]
 fn a_rings_wall_pressure_is_its_thrust_over_its_radius() {
     let mut v: serde_json::Value =
-        serde_json::from_str(include_str!("../models/kirsch.json")).unwrap();
+        serde_json::from_str(include_str!("../../models/kirsch.json")).unwrap();
     v["in_situ"] = serde_json::json!({ "sxx": -20e6, "syy": -20e6 });
     v["zoning"] =
         serde_json::json!({ "edge_at_excavation": 0.15, "edge_far": 8.0, "grading": 0.4 });

@@ -1,7 +1,7 @@
 //! The boundary-element far field in whole runs (`region.far_field`): at rest it stays at rest,
 //! a tunnel released in stages closes as in the infinite medium, and what cannot act is refused.
 
-mod common;
+use crate::common;
 
 use adit::Scene;
 use adit::solve::Quiet;
