@@ -3,7 +3,6 @@
 import os
 import signal
 import subprocess
-import threading
 
 import meshio
 import numpy as np
@@ -74,6 +73,12 @@ def test_jointed_results_have_contacts_and_supports(root, tmp_path):
     assert np.isclose(r.liners["utilization"].max(), 1 / least, rtol=1e-12)
     assert least < 1 and len(r.liners["shear_force_n_per_m"]) == len(r.liners["group"])
     assert r.stages[-1]["name"] == "bolts and shotcrete"
+    # The monitoring points, as histories.csv holds them (issue 49).
+    h = r.histories
+    assert {"cycle", "time_s", "crown:displacement_y_m"} <= set(h)
+    assert len(h["cycle"]) == len(h["crown:displacement_y_m"]) > 10
+    walls = r.stages[-1]["walls"]["tunnel"]
+    assert np.isclose(-h["crown:displacement_y_m"][-1], walls["crown_m"], rtol=0.05)
     assert 5e-3 < r.closure("tunnel") < 2e-2
     # A misspelt excavation is named with those there are (issue 49, friction item 7).
     with pytest.raises(KeyError, match="the excavations the stages made: 'tunnel'"):
@@ -98,12 +103,19 @@ def test_progress_is_called_and_its_exception_stops_the_run(root, tmp_path):
 
 
 def test_ctrl_c_stops_the_run_and_leaves_it_interrupted(root, tmp_path):
-    """A real SIGINT, as Ctrl-C sends it, half way through the tunnel model."""
-    timer = threading.Timer(0.4, lambda: os.kill(os.getpid(), signal.SIGINT))
-    timer.start()
+    """A real SIGINT, as Ctrl-C sends it, half way through the tunnel model: sent once the run
+    has cycled 200 times (a timer could fire before the run starts or after it ends on a
+    loaded machine)."""
+    sent = []
+
+    def ctrl_c(row):
+        if row["cycle"] >= 200 and not sent:
+            sent.append(row["cycle"])
+            os.kill(os.getpid(), signal.SIGINT)
+
     with pytest.raises(KeyboardInterrupt):
-        adit.run(root / "models" / "tunnel.json", out=tmp_path)
-    timer.join()
+        adit.run(root / "models" / "tunnel.json", out=tmp_path, progress=ctrl_c)
+    assert sent
     summary = (tmp_path / "summary.json").read_text()
     assert '"interrupted"' in summary
     # The next run of this process is not stopped by the earlier Ctrl-C.

@@ -117,6 +117,41 @@ impl HoekBrown {
         }
     }
 
+    /// The law with its shear strength divided by `factor` at every normal stress (the
+    /// generalized method of Hammah et al. 2005, `hoek_brown_reduction`): mb, s, a fitted to the
+    /// reduced envelope (the residual's likewise), the tension cut-off over F, the dilation
+    /// reduced as a friction angle is (tan ψ/F).
+    pub fn reduced_by(&self, factor: f64) -> HoekBrown {
+        let dilation = super::reduced_friction(self.dilation, factor).to_degrees();
+        let constants = super::reduced_constants(self, factor);
+        let law = HoekBrown::new(
+            self.elastic,
+            self.sigma_ci,
+            constants,
+            dilation,
+            self.cut_off / factor,
+        );
+        match &self.residual {
+            None => law,
+            Some(r) => {
+                let at_residual = HoekBrown {
+                    mb: r.mb,
+                    s: r.s,
+                    a: r.a,
+                    residual: None,
+                    ..self.clone()
+                };
+                let (mb, s, a) = super::reduced_constants(&at_residual, factor);
+                law.with_residual(Residual {
+                    mb,
+                    s,
+                    a,
+                    strain: r.strain,
+                })
+            }
+        }
+    }
+
     /// The law softening from these constants to `residual`'s.
     pub fn with_residual(mut self, residual: Residual) -> Self {
         self.residual = Some(residual);
@@ -439,10 +474,8 @@ impl HoekBrown {
 }
 
 impl ZoneLaw for HoekBrown {
-    fn reduced(&self, _factor: f64) -> Result<Box<dyn ZoneLaw>, &'static str> {
-        Err(
-            "Hoek–Brown zones have no strength reduction yet (the generalized method of Hammah et al. 2005 is to come)",
-        )
+    fn reduced(&self, factor: f64) -> Result<Box<dyn ZoneLaw>, &'static str> {
+        Ok(Box::new(self.reduced_by(factor)))
     }
 
     fn update(&self, s: &mut Stress, state: &mut u8, plastic: &mut f64, de: &StrainIncrement) {

@@ -3,6 +3,7 @@
 mod corner_return;
 mod elastic;
 mod hoek_brown;
+mod hoek_brown_reduction;
 mod mohr_coulomb;
 mod null;
 mod principal;
@@ -10,6 +11,7 @@ mod ubiquitous_joint;
 
 pub use elastic::{Elastic, plane_strain_moduli};
 pub use hoek_brown::{HoekBrown, Residual, hoek_brown_constants};
+pub use hoek_brown_reduction::{fit_misfit, reduced_constants};
 pub use mohr_coulomb::{MohrCoulomb, SHEAR_NOW, SHEAR_PAST, TENSION_NOW, TENSION_PAST};
 pub use null::Null;
 pub use ubiquitous_joint::{

@@ -268,17 +268,13 @@ impl ZoneLaw for UbiquitousJoint {
         self.elastic.density
     }
 
-    /// The matrix reduced as its own law is (a Hoek–Brown matrix not yet), the plane as a
+    /// The matrix reduced as its own law is, the plane as a
     /// Mohr–Coulomb criterion: cj/F, tan φj/F, ψj capped at the reduced φj, σtj/F.
     fn reduced(&self, factor: f64) -> Result<Box<dyn ZoneLaw>, &'static str> {
         let matrix = match &self.matrix {
             Matrix::Elastic(e) => Matrix::Elastic(*e),
             Matrix::MohrCoulomb(m) => Matrix::MohrCoulomb(m.reduced_by(factor)),
-            Matrix::HoekBrown(_) => {
-                return Err(
-                    "a ubiquitous-joint zone with a Hoek–Brown matrix has no strength reduction yet",
-                );
-            }
+            Matrix::HoekBrown(h) => Matrix::HoekBrown(h.reduced_by(factor)),
         };
         let p = &self.plane;
         let friction = reduced_friction(p.friction, factor);

@@ -318,6 +318,9 @@ impl OutputWriter {
             write!(w, "stage,support_fraction")?;
             for n in names {
                 write!(w, ",{}", csv_field(&format!("closure_{n}_m")))?;
+                for (column, _) in WALL_COLUMNS {
+                    write!(w, ",{}", csv_field(&format!("{n}_{column}")))?;
+                }
             }
             writeln!(w)?;
             for s in stages {
@@ -326,6 +329,12 @@ impl OutputWriter {
                     match s.closure.get(n) {
                         Some(c) => write!(w, ",{c:e}")?,
                         None => write!(w, ",")?,
+                    }
+                    for (_, figure) in WALL_COLUMNS {
+                        match s.walls.get(n) {
+                            Some(moves) => write!(w, ",{:e}", figure(moves))?,
+                            None => write!(w, ",")?,
+                        }
                     }
                 }
                 writeln!(w)?;
@@ -450,6 +459,22 @@ pub struct WallMoves {
     pub support_pressure_pa: f64,
     pub support_pressure_ratio: f64,
 }
+
+/// One figure of an excavation's wall moves.
+type WallFigure = fn(&WallMoves) -> f64;
+
+/// The wall moves `ground_reaction.csv` gives per excavation, each column after the
+/// excavation's name: inward displacements of the crown, invert and side walls, the span's and
+/// height's convergence (m), and the liners' pressure on the wall (Pa).
+const WALL_COLUMNS: [(&str, WallFigure); 7] = [
+    ("crown_m", |w| w.crown_m),
+    ("invert_m", |w| w.invert_m),
+    ("left_wall_m", |w| w.left_m),
+    ("right_wall_m", |w| w.right_m),
+    ("span_convergence_m", |w| w.span_convergence_m),
+    ("height_convergence_m", |w| w.height_convergence_m),
+    ("support_pressure_pa", |w| w.support_pressure_pa),
+];
 
 impl WallMoves {
     /// From the displacements (m) of the crown, invert, left and right wall points.

@@ -431,12 +431,12 @@ fn a_factor_of_safety_that_cannot_be_searched_is_refused() {
     let mut dynamic = with_fos("tunnel", json!({}));
     dynamic["stages"][2]["solve"] = json!({ "mode": "dynamic", "max_cycles": 100 });
     refused(&dynamic, "stages[2].factor_of_safety");
-    let err = refused(
-        &with_fos("tunnel_hb", json!({})),
-        "stages[2].factor_of_safety",
-    );
+    let mut yielding = with_fos("tunnel", json!({}));
+    yielding["joint_materials"]["joint"] = json!({ "law": "continuously_yielding",
+        "normal_stiffness": 2e10, "shear_stiffness": 1e10, "friction": 30, "roughness": 1e-3 });
+    let err = refused(&yielding, "stages[2].factor_of_safety");
     assert!(
-        err.contains("material 'rock'") && err.contains("Hoek–Brown"),
+        err.contains("joint material 'joint'") && err.contains("continuously yielding"),
         "{err}"
     );
     let mut residual = model("tunnel");

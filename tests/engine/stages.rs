@@ -37,8 +37,19 @@ fn staged_excavation_releases_the_wall_stage_by_stage() {
     // The ground reaction curve: closure grows as the support is lowered (elastic: linear).
     let grc = std::fs::read_to_string(out.join("ground_reaction.csv")).unwrap();
     let rows: Vec<&str> = grc.lines().collect();
-    assert_eq!(rows[0], "stage,support_fraction,closure_tunnel_m");
+    assert_eq!(
+        rows[0],
+        "stage,support_fraction,closure_tunnel_m,tunnel_crown_m,tunnel_invert_m,\
+         tunnel_left_wall_m,tunnel_right_wall_m,tunnel_span_convergence_m,\
+         tunnel_height_convergence_m,tunnel_support_pressure_pa"
+    );
     assert_eq!(rows.len(), 4, "{grc}");
+    // The wall moves per stage are the summary's (issue 49: not only the mean closure).
+    let last: Vec<&str> = rows[3].split(',').collect();
+    let crown: f64 = last[3].parse().unwrap();
+    assert_eq!(crown, stages[2].walls["tunnel"].crown_m);
+    let span: f64 = last[7].parse().unwrap();
+    assert!(span > 0.0 && span == stages[2].walls["tunnel"].span_convergence_m);
     let (half, none) = (stages[1].closure["tunnel"], stages[2].closure["tunnel"]);
     assert!(
         half > 0.0 && (none / half - 2.0).abs() < 0.05,

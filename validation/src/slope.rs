@@ -35,10 +35,83 @@ pub struct Homogeneous {
     pub height: f64,
     pub run: f64,
     pub plateau: f64,
-    /// Unit weight γ, N/m³; cohesion c, Pa; friction φ, degrees.
+    /// Unit weight γ, N/m³; cohesion c, Pa; friction φ, degrees (a Coulomb rock).
     pub unit_weight: f64,
     pub cohesion: f64,
     pub friction: f64,
+    /// A generalized Hoek–Brown rock instead, if given.
+    pub hoek_brown: Option<HoekBrownRock>,
+}
+
+/// A generalized Hoek–Brown rock: σci (Pa), mb, s, a.
+#[derive(Debug, Clone, Copy)]
+pub struct HoekBrownRock {
+    pub sigma_ci: f64,
+    pub mb: f64,
+    pub s: f64,
+    pub a: f64,
+}
+
+impl HoekBrownRock {
+    /// The envelope's point at σ3 (Pa, compression positive) by Balmer's parametric form (Hoek,
+    /// Carranza-Torres & Corkum 2002, eqs. 12–13): σn, τ (Pa) and the tangent's tan φᵢ.
+    fn balmer(&self, sigma3: f64) -> (f64, f64, f64) {
+        let (ci, mb, s, a) = (self.sigma_ci, self.mb, self.s, self.a);
+        let base = (mb * sigma3 / ci + s).max(1e-300);
+        let sigma1 = sigma3 + ci * base.powf(a);
+        let k = 1.0 + a * mb * base.powf(a - 1.0);
+        let sn = 0.5 * (sigma1 + sigma3) - 0.5 * (sigma1 - sigma3) * (k - 1.0) / (k + 1.0);
+        let tau = (sigma1 - sigma3) * k.sqrt() / (k + 1.0);
+        (sn, tau, (k - 1.0) / (2.0 * k.sqrt()))
+    }
+
+    /// The instantaneous cohesion cᵢ (Pa) and tan φᵢ of the envelope at normal stress `sn` (Pa,
+    /// compression positive; at the apex below it): σ3 found by bisection on σn(σ3).
+    pub fn instantaneous(&self, sn: f64) -> (f64, f64) {
+        let apex = -self.s * self.sigma_ci / self.mb;
+        let (mut lo, mut hi) = (apex, self.sigma_ci);
+        while self.balmer(hi).0 < sn {
+            hi *= 2.0;
+        }
+        for _ in 0..200 {
+            let mid = 0.5 * (lo + hi);
+            if self.balmer(mid).0 < sn {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        let (at, tau, tan) = self.balmer(0.5 * (lo + hi));
+        (tau - at * tan, tan)
+    }
+}
+
+/// A 2:1 slope 20 m high, 24 m of crest behind it, of a weak rock mass (GSI 30, mi 10, D 0,
+/// σci 1 MPa; γ 25 kN/m³), the Hoek–Brown twin of Griffiths & Lane's slope.
+pub fn hoek_brown_slope() -> Homogeneous {
+    Homogeneous {
+        height: 20.0,
+        run: 2.0,
+        plateau: 24.0,
+        unit_weight: 25e3,
+        cohesion: 0.0,
+        friction: 0.0,
+        hoek_brown: Some(HoekBrownRock::of_gsi(1.0e6, 30.0, 10.0)),
+    }
+}
+
+impl HoekBrownRock {
+    /// σci (Pa) and mb, s, a from GSI and mi, undisturbed (Hoek, Carranza-Torres & Corkum 2002,
+    /// eqs. 3–5 with D = 0): mb = mi e^((GSI − 100)/28), s = e^((GSI − 100)/9),
+    /// a = 1/2 + (e^(−GSI/15) − e^(−20/3))/6.
+    pub fn of_gsi(sigma_ci: f64, gsi: f64, mi: f64) -> HoekBrownRock {
+        HoekBrownRock {
+            sigma_ci,
+            mb: mi * ((gsi - 100.0) / 28.0).exp(),
+            s: ((gsi - 100.0) / 9.0).exp(),
+            a: 0.5 + ((-gsi / 15.0).exp() - (-20.0f64 / 3.0).exp()) / 6.0,
+        }
+    }
 }
 
 /// Griffiths & Lane's example 1.
@@ -49,6 +122,7 @@ pub const GRIFFITHS_LANE: Homogeneous = Homogeneous {
     unit_weight: 20e3,
     cohesion: 10e3,
     friction: 20.0,
+    hoek_brown: None,
 };
 
 /// Griffiths & Lane's finite-element factor of safety and Bishop & Morgenstern's chart value
@@ -141,15 +215,24 @@ impl Homogeneous {
         if driving <= 0.0 {
             return None;
         }
+        let envelope = self.hoek_brown.map(|rock| rock.envelope());
+        // Each slice's base normal stress, Pa (Hoek–Brown rock: carried from one F to the next).
+        let mut normal: Vec<f64> = (parts.iter())
+            .map(|&(w, _, cos)| w * cos * cos / width)
+            .collect();
         let mut f = 1.0;
         for _ in 0..200 {
             let mut resisting = 0.0;
-            for &(w, sin, cos) in &parts {
+            for (&(w, sin, cos), sn) in parts.iter().zip(&mut normal) {
+                let (c, tan) = match &envelope {
+                    None => (self.cohesion, tan),
+                    Some(e) => slice_strength(e, (w, sin, cos), width, f, sn),
+                };
                 let m = cos + sin * tan / f;
                 if m < 0.2 {
                     return None;
                 }
-                resisting += (self.cohesion * width + w * tan) / m;
+                resisting += (c * width + w * tan) / m;
             }
             let next = resisting / driving;
             if (next - f).abs() < 1e-12 * f {
@@ -215,18 +298,26 @@ impl Homogeneous {
         (f, c)
     }
 
-    /// The scene: the slope's rock (Mohr–Coulomb, ψ = 0) settled under gravity from no stress,
-    /// then its factor of safety searched by `method` within `max_cycles`; zones of about
-    /// `zone` m.
+    /// The scene: the slope's rock (Mohr–Coulomb or Hoek–Brown, ψ = 0) settled under gravity
+    /// from no stress, then its factor of safety searched by `method` within `max_cycles`; zones
+    /// of about `zone` m.
     pub fn scene(&self, method: SolveMethod, zone: f64, max_cycles: u64) -> adit::Scene {
         let (h, crest, toe) = (self.height, self.crest(), self.toe());
-        let text = serde_json::json!({
-            "name": "homogeneous_slope",
-            "materials": { "soil": {
+        let material = match &self.hoek_brown {
+            None => serde_json::json!({
                 "density": self.unit_weight / G, "young": 100e6, "poisson": 0.3,
                 "law": "mohr_coulomb", "cohesion": self.cohesion, "friction": self.friction,
                 "dilation": 0.0
-            } },
+            }),
+            Some(r) => serde_json::json!({
+                "density": self.unit_weight / G, "young": 500e6, "poisson": 0.3,
+                "law": "hoek_brown", "sigma_ci": r.sigma_ci, "mb": r.mb, "s": r.s, "a": r.a,
+                "dilation": 0.0
+            }),
+        };
+        let text = serde_json::json!({
+            "name": "homogeneous_slope",
+            "materials": { "soil": material },
             "region": {
                 "polygon": [[0, 0], [toe, 0], [crest, h], [0, h]],
                 "edge_names": ["base", "face", "top", "back"],
@@ -240,6 +331,74 @@ impl Homogeneous {
             "stages": [{ "name": "gravity", "factor_of_safety": { "tolerance": 0.005 } }]
         });
         adit::Scene::from_json(&text.to_string(), "homogeneous slope").expect("valid slope")
+    }
+}
+
+/// The strength (cᵢ, tan φᵢ) on the base of a Hoek–Brown slice (weight `w`, base angle by its
+/// sine and cosine, `width` m) at the trial factor `f`: the instantaneous values at the base's
+/// normal stress σn = N/l, N = (W − cᵢ l sin α / F)/m_α from the slice's vertical equilibrium
+/// (Bishop's assumption), iterated to a fixed point from `sn` (Pa), which it updates.
+fn slice_strength(
+    envelope: &Envelope,
+    (w, sin, cos): (f64, f64, f64),
+    width: f64,
+    f: f64,
+    sn: &mut f64,
+) -> (f64, f64) {
+    let l = width / cos;
+    let mut strength = envelope.at(*sn);
+    for _ in 0..50 {
+        let (c, tan) = strength;
+        let m = cos + sin * tan / f;
+        let next = ((w - c * l * sin / f) / (m * l)).max(0.0);
+        let done = (next - *sn).abs() <= 1e-9 * (1.0 + sn.abs());
+        *sn = next;
+        strength = envelope.at(next);
+        if done {
+            break;
+        }
+    }
+    strength
+}
+
+/// A Hoek–Brown envelope tabulated by normal stress: σn (Pa, increasing), cᵢ (Pa), tan φᵢ.
+pub struct Envelope {
+    points: Vec<(f64, f64, f64)>,
+}
+
+impl Envelope {
+    /// cᵢ and tan φᵢ at `sn` (Pa), linear between the table's points (the apex's below it, the
+    /// last's beyond it).
+    pub fn at(&self, sn: f64) -> (f64, f64) {
+        let p = &self.points;
+        let k = p.partition_point(|q| q.0 < sn);
+        if k == 0 {
+            return (p[0].1, p[0].2);
+        }
+        if k == p.len() {
+            let last = p[p.len() - 1];
+            return (last.1, last.2);
+        }
+        let (a, b) = (p[k - 1], p[k]);
+        let t = (sn - a.0) / (b.0 - a.0);
+        (a.1 + t * (b.1 - a.1), a.2 + t * (b.2 - a.2))
+    }
+}
+
+impl HoekBrownRock {
+    /// The envelope tabulated at 4000 σ3 from the apex to 4 σci, denser toward the apex.
+    pub fn envelope(&self) -> Envelope {
+        const POINTS: usize = 4000;
+        let apex = -self.s * self.sigma_ci / self.mb;
+        let top = 4.0 * self.sigma_ci;
+        let points = (0..=POINTS)
+            .map(|i| {
+                let t = (i as f64 / POINTS as f64).powi(3);
+                let (sn, tau, tan) = self.balmer(apex + t * (top - apex));
+                (sn, tau - sn * tan, tan)
+            })
+            .collect();
+        Envelope { points }
     }
 }
 
@@ -406,6 +565,34 @@ pub fn homogeneous(
     Ok((row, f))
 }
 
+/// The Hoek–Brown slope ([`hoek_brown_slope`]) by `method` on zones of `zone` m within
+/// `max_cycles`: the row (`bishop`: |F − F_Bishop| / F_Bishop, Bishop's simplified method with
+/// the envelope's instantaneous strength on each slice's base), F and Bishop's F.
+pub fn hoek_brown(
+    method: SolveMethod,
+    zone: f64,
+    max_cycles: u64,
+) -> anyhow::Result<(CaseReport, f64, f64)> {
+    let slope = hoek_brown_slope();
+    let (bishop, _) = slope.bishop();
+    let scene = slope.scene(method, zone, max_cycles);
+    let (found, zones, cycles, seconds) = search(&scene, &format!("hb-{}", method.name()))?;
+    let f = found.factor;
+    let row = CaseReport::new(
+        format!(
+            "Hoek–Brown 2:1 slope, 20 m, GSI 30, mi 10, σci 1 MPa: Bishop {bishop:.3}, found {f:.3} in {} trials, zones ~{zone} m{}",
+            found.trials.len(),
+            crate::method_suffix(method)
+        ),
+        zones,
+        cycles,
+        seconds,
+        None,
+        &[("bishop", (f - bishop).abs() / bishop)],
+    );
+    Ok((row, f, bishop))
+}
+
 /// The planar slope `p` by `method`: the row (`factor`: |F − FoS| / FoS) and the search.
 pub fn planar(p: &Planar, method: SolveMethod) -> anyhow::Result<(CaseReport, FactorOfSafety)> {
     let exact = p.exact();
@@ -476,6 +663,45 @@ mod tests {
             let (r, _) = planar(&p, method).unwrap();
             assert!(r.errors["factor"] < 0.02, "{r:?}");
         }
+    }
+
+    /// The instantaneous strength is the envelope's tangent (its chord to a near point has the
+    /// tangent's slope, the envelope is concave), and the table Bishop's slices read gives it.
+    #[test]
+    fn the_instantaneous_strength_is_the_envelopes_tangent() {
+        let rock = HoekBrownRock::of_gsi(1.0e6, 30.0, 10.0);
+        let table = rock.envelope();
+        for sn in [1e3, 3e4, 1e5, 4e5, 1e6] {
+            let (c, tan) = rock.instantaneous(sn);
+            let (ct, tant) = table.at(sn);
+            // The table interpolates the envelope closely.
+            assert!(
+                (ct - c).abs() < 1e-4 * (c + sn * tan),
+                "σn {sn}: c {ct} {c}"
+            );
+            assert!(
+                (tant / tan - 1.0).abs() < 1e-4,
+                "σn {sn}: tan φ {tant} {tan}"
+            );
+            let (c2, tan2) = rock.instantaneous(1.001 * sn);
+            let tau = c + sn * tan;
+            let tau2 = c2 + 1.001 * sn * tan2;
+            // The chord's slope between two near points is the tangent's.
+            assert!(
+                ((tau2 - tau) / (0.001 * sn) / tan - 1.0).abs() < 2e-3,
+                "σn {sn}"
+            );
+            assert!(tan2 < tan, "concave at {sn}");
+        }
+    }
+
+    /// Coarse twin of the report's Hoek–Brown slope: implicitly on 1 m zones, within 15 % of
+    /// Bishop's with the envelope (the coarse zones stand stiffer: the 0.25 m zones carry the
+    /// report's 5 % bar).
+    #[test]
+    fn the_hoek_brown_slope_meets_bishop_coarsely() {
+        let (r, f, bishop) = hoek_brown(SolveMethod::Implicit, 1.0, 40_000).unwrap();
+        assert!(r.errors["bishop"] < 0.15 && f >= 0.97 * bishop, "{r:?}");
     }
 
     /// Coarse twin of the report's homogeneous slope: implicitly, on 0.25 m zones, within 5 %

@@ -16,6 +16,7 @@ Sweeps of parameters and joint realizations: ``adit.sweep`` (module ``adit.sweep
 
 from __future__ import annotations
 
+import csv
 import json
 import os
 import warnings
@@ -117,7 +118,8 @@ class Results:
     - ``history``: ``cycle``, ``time_s``, ``ratio``, ``kinetic_energy_j_per_m`` per monitor step.
 
     ``summary`` is ``summary.json`` as a dict (with ``stages``, each with its ``closure`` per
-    excavation in m); ``out_dir`` the folder the run wrote.
+    excavation in m and its ``walls``: crown, invert and side walls' moves); ``out_dir`` the
+    folder the run wrote; ``histories`` the monitoring points' records.
     """
 
     nodes: Dict[str, np.ndarray]
@@ -145,6 +147,19 @@ class Results:
     def status(self) -> str:
         """``converged``, ``cycle_limit``, ``failed`` or ``interrupted``."""
         return self.summary["status"]
+
+    @property
+    def histories(self) -> Dict[str, np.ndarray]:
+        """The monitoring points' records (scene ``histories``, ``histories.csv``): ``cycle``,
+        ``time_s`` and one array per point, named as the file's columns
+        (``<name>:<quantity>_<unit>``, e.g. ``crown:displacement_y_m``); empty without them."""
+        path = self.out_dir / "histories.csv"
+        if not path.exists():
+            return {}
+        with open(path, newline="", encoding="utf-8") as f:
+            rows = list(csv.reader(f))
+        header, values = rows[0], np.array(rows[1:], dtype=float).reshape(-1, len(rows[0]))
+        return {name: values[:, i] for i, name in enumerate(header)}
 
     @property
     def stages(self) -> List[Dict[str, Any]]:

@@ -32,6 +32,7 @@ mod scale;
 mod shallow;
 mod slivers;
 mod slope;
+mod slope_hb;
 mod softening;
 mod spalling;
 mod stiff_joints;
@@ -83,5 +84,6 @@ pub fn all() -> Vec<Box<dyn Case>> {
         Box::new(column_slide::ColumnSlide),
         Box::new(strength_reduction::StrengthReduction),
         Box::new(slope::Slope),
+        Box::new(slope_hb::SlopeHoekBrown),
     ]
 }

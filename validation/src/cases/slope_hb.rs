@@ -1,0 +1,122 @@
+//! Slopes by strength reduction of Hoek–Brown rock (issue 49): the generalized method of Hammah
+//! et al. (2005) against Bishop's simplified method with the envelope's instantaneous strength.
+
+use std::fmt::Write as _;
+
+use adit::scene::SolveMethod;
+
+use crate::case::{Case, Context, Section, print_row, table};
+use crate::slope::{self, hoek_brown_slope};
+
+/// Bar: within 5 % of Bishop's on the 0.5 m zones (as the Coulomb slope's on its finest),
+/// explicit and implicit within 1 % of each other there.
+const SLOPE_BAR: f64 = 0.05;
+const APART_BAR: f64 = 0.01;
+
+/// The zone sizes, m: the last carries the bar. (On 0.25 m zones, 44 271 of them, the implicit
+/// path does not settle the gravity stage itself: its ratio stalls where the surface rock sits
+/// at the envelope's apex, and the search finds F < 1; measured once, left for the implicit
+/// path's apex handling.)
+const ZONES: [f64; 2] = [1.0, 0.5];
+
+/// `max_cycles` of the explicit search on the 0.5 m zones.
+const EXPLICIT_CYCLES: u64 = 150_000;
+
+pub struct SlopeHoekBrown;
+
+impl Case for SlopeHoekBrown {
+    fn name(&self) -> &'static str {
+        "slope_hb"
+    }
+
+    fn run(&self, cx: &Context) -> anyhow::Result<Section> {
+        let (mut rows, mut missed) = (Vec::new(), Vec::new());
+        let mut implicit = Vec::new();
+        let mut bishop = 0.0;
+        for zone in ZONES {
+            let (r, f, b) = slope::hoek_brown(SolveMethod::Implicit, zone, 40_000)?;
+            print_row(&r);
+            bishop = b;
+            implicit.push(f);
+            rows.push(r);
+        }
+        let at_bar = &rows[ZONES.len() - 1];
+        if !(at_bar.errors["bishop"] <= SLOPE_BAR) {
+            missed.push(format!(
+                "{}: {:?} beyond {SLOPE_BAR}",
+                at_bar.case, at_bar.errors
+            ));
+        }
+        let (r, explicit, _) = slope::hoek_brown(SolveMethod::Explicit, ZONES[1], EXPLICIT_CYCLES)?;
+        print_row(&r);
+        rows.push(r);
+        let apart = (explicit - implicit[1]).abs() / implicit[1];
+        if apart > APART_BAR {
+            missed.push(format!(
+                "0.5 m zones: explicit {explicit:.4}, implicit {:.4} ({:.2} % apart)",
+                implicit[1],
+                100.0 * apart
+            ));
+        }
+        let (tunnel_row, tunnel_fos, _) =
+            slope::bundled(&cx.root, "models/tunnel_hb.json", None, true)?;
+        print_row(&tunnel_row);
+        rows.push(tunnel_row);
+        let rock = hoek_brown_slope().hoek_brown.expect("a Hoek–Brown slope");
+        let mut md = String::new();
+        let _ = writeln!(
+            md,
+            "\n## Factor of safety by strength reduction: Hoek–Brown rock (issue 49)\n"
+        );
+        let _ = writeln!(
+            md,
+            "A Hoek–Brown rock has no single c and φ: at each normal stress its envelope's tangent \
+             has its own (instantaneous) cᵢ and φᵢ, and dividing those by F divides the shear \
+             strength by F at every σn. The reduced envelope is fitted with a generalized \
+             Hoek–Brown one (σci kept, mb, s, a fitted; Hammah, Yacoub, Corkum & Curran 2005, as \
+             RS2 does; `src/law/hoek_brown_reduction.rs`, formulas in `docs/theory.md`). \
+             **Slope**: a 2:1 slope 20 m high with a 24 m crest plateau, its base (fixed) at the \
+             toe's level, rollers behind, γ 25 kN/m³, GSI 30, mi 10, D 0, σci 1 MPa (mb \
+             {:.4}, s {:.3e}, a {:.4}), ψ 0, E 500 MPa, ν 0.3; settled under gravity and \
+             searched (tolerance 0.005). Reference: Bishop's simplified method searched over \
+             circles with each slice's base taking the envelope's instantaneous cᵢ, tan φᵢ at \
+             its normal stress (iterated with the slice's vertical equilibrium; \
+             `validation/src/slope.rs`, written apart from the engine's reduction): F = \
+             {bishop:.4}. `bishop`: |F − F_Bishop| / F_Bishop. Implicitly on 1 and 0.5 m zones: \
+             {}; explicitly on the 0.5 m zones ({EXPLICIT_CYCLES} cycles): {explicit:.4}. On \
+             0.25 m zones (44 271) the implicit path does not settle the gravity stage itself \
+             (its ratio stalls where the surface rock sits at the envelope's apex) and the search \
+             returns F < 1: left for the implicit path's apex handling. Bars: within {} % of \
+             Bishop's and explicit and implicit within {} % of each other, on the 0.5 m zones. **The Hoek–Brown tunnel** \
+             (`models/tunnel_hb.json`) with its last stage searched: F = {:.3} in {} trials.\n",
+            rock.mb,
+            rock.s,
+            rock.a,
+            implicit
+                .iter()
+                .map(|f| format!("{f:.4}"))
+                .collect::<Vec<_>>()
+                .join(", "),
+            100.0 * SLOPE_BAR,
+            100.0 * APART_BAR,
+            tunnel_fos.factor,
+            tunnel_fos.trials.len(),
+        );
+        let _ = writeln!(
+            md,
+            "Bars: {}.\n",
+            if missed.is_empty() {
+                "met".to_string()
+            } else {
+                format!("missed by {}", missed.join("; "))
+            }
+        );
+        table(&mut md, &rows);
+        Ok(Section {
+            markdown: md,
+            rows,
+            missed,
+            ..Default::default()
+        })
+    }
+}
