@@ -188,7 +188,7 @@ fn run(
         s.zones,
         s.nodes,
         s.min_zone_angle,
-        if s.min_zone_angle < scene.zoning.min_angle - 0.05 {
+        if adit::setup::sharper_than(s.min_zone_angle, scene.zoning.min_angle) {
             format!(
                 " (zoning.min_angle = {}° holds but where joints or walls meet at a sharper \
                  corner: `adit check` says where)",

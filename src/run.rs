@@ -281,14 +281,13 @@ fn stage_method(plan: &Plan, i: usize, model: &Model) -> anyhow::Result<Method> 
 /// What a run refuses once the model is built, before any solve (`adit check` and Python's
 /// `adit.check` refuse it too): a stage asking the implicit path of a model it cannot solve, a
 /// factor of safety asked of laws that have no strength reduction, a monitoring point with
-/// nothing to read.
-pub fn refuse_before_solving(scene: &Scene, plan: &Plan, model: &Model) -> anyhow::Result<()> {
+/// nothing to read. Returns the monitoring points found.
+pub fn refuse_before_solving(scene: &Scene, plan: &Plan, model: &Model) -> anyhow::Result<Probes> {
     for i in 0..plan.stages.len() {
         stage_method(plan, i, model)?;
         strength_reduction_refused(plan, i, model)?;
     }
-    Probes::of(&scene.histories, model, &plan.fill)?;
-    Ok(())
+    Probes::of(&scene.histories, model, &plan.fill)
 }
 
 /// The smallest critical step (real masses) over the stages solved or replayed, and its stage:
@@ -321,13 +320,18 @@ impl SmallestStep {
     /// contacts its solves form.
     pub fn replayed(built: &mut Setup) -> SmallestStep {
         let Setup { model, plan, .. } = built;
-        let mut staging = Staging::new(plan);
         let mut smallest = SmallestStep::default();
-        for (i, stage) in plan.stages.iter().enumerate() {
-            staging.apply(stage, model, plan);
-            smallest.tighten(derive_masses(model, &stage.solve).1, i);
-        }
+        smallest.replay(&mut Staging::new(plan), plan.stages.len(), model, plan);
         smallest
+    }
+
+    /// Apply the first `stages` stages of `plan` to `model` without solving, each one's step
+    /// limit tightening this.
+    fn replay(&mut self, staging: &mut Staging, stages: usize, model: &mut Model, plan: &Plan) {
+        for (i, stage) in plan.stages[..stages].iter().enumerate() {
+            staging.apply(stage, model, plan);
+            self.tighten(derive_masses(model, &stage.solve).1, i);
+        }
     }
 
     /// `4.870e-6 s (supports, stage 'bolts')`.
@@ -464,8 +468,7 @@ fn build_solve_write(
     let mut output_seconds = 0.0;
     let mut last: Option<(Solver, Solution, usize)> = None;
     let mut smallest = SmallestStep::default();
-    refuse_before_solving(scene, plan, model)?;
-    let probes = Probes::of(&scene.histories, model, &plan.fill)?;
+    let probes = refuse_before_solving(scene, plan, model)?;
     // Going on from a checkpoint: the stages before replayed (what the state does not hold),
     // then the state put in.
     let so_far = match resumed {
@@ -477,10 +480,7 @@ fn build_solve_write(
                 first + 1,
                 plan.stages.len()
             );
-            for (i, stage) in plan.stages[..first].iter().enumerate() {
-                staging.apply(stage, model, plan);
-                smallest.tighten(derive_masses(model, &stage.solve).1, i);
-            }
+            smallest.replay(&mut staging, first, model, plan);
             let run = checkpoint::decode(bytes, scene, model)
                 .map_err(|e| anyhow::anyhow!("--from-stage {}: {e}", first + 1))?;
             anyhow::ensure!(

@@ -384,10 +384,10 @@ struct Step {
     files: Vec<String>,
 }
 
-/// The kind of a grid file `<name>_<kind>_NNNN.vtu`: `zones`, `contacts`, `joints` or `supports`.
 /// The kinds of a step's files, in the order of their `part` in the collection.
 const PARTS: [&str; 4] = ["zones", "contacts", "joints", "supports"];
 
+/// The kind of a grid file `<name>_<kind>_NNNN.vtu`: `zones`, `contacts`, `joints` or `supports`.
 fn file_kind(file: &str) -> &str {
     let stem = file.strip_suffix(".vtu").unwrap_or(file);
     let stem = stem.rsplit_once('_').map_or(stem, |(s, _)| s);

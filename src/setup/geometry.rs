@@ -171,7 +171,7 @@ impl Meshed {
         let Some((angle, at, b)) = self.sharpest_zone() else {
             return String::new();
         };
-        if angle >= min_angle - 0.05 {
+        if !sharper_than(angle, min_angle) {
             return String::new();
         }
         let corner = self.blocking.blocks[b]
@@ -199,6 +199,11 @@ impl Meshed {
             ),
         }
     }
+}
+
+/// Whether a zone angle `angle` (degrees, as reported to 0.1°) falls short of `min_angle`.
+pub fn sharper_than(angle: f64, min_angle: f64) -> bool {
+    angle < min_angle - 0.05
 }
 
 /// The angle at `v` between the edges to `a` and `b`, degrees (0 to 180).

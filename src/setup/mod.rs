@@ -24,7 +24,7 @@ use adit_meshing::{BoundaryEdge, EdgeKind, MeshStats};
 
 use boundary::part_nodes;
 pub use boundary::{BoundaryEffect, add_tractions, boundary_effect, edge_in_part};
-pub use geometry::{Meshed, NOT_FILL, domain, joint_segments, mesh, zoning};
+pub use geometry::{Meshed, NOT_FILL, domain, joint_segments, mesh, sharper_than, zoning};
 pub use plan::{Boundary, InSituField, Plan, StagePlan};
 
 use catalogue::{JointCatalogue, ZoneCatalogue};

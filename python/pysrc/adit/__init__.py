@@ -84,7 +84,7 @@ def _plain(value: Any) -> Any:
 def _scene_json(scene: SceneLike) -> str:
     if isinstance(scene, (str, os.PathLike)):
         scene = load_scene(scene)
-    return json.dumps(scene, indent=1, default=_plain)
+    return json.dumps(scene, default=_plain)
 
 
 def check(scene: SceneLike) -> None:
