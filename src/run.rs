@@ -280,12 +280,10 @@ fn stage_method(plan: &Plan, i: usize, model: &Model) -> anyhow::Result<Method> 
 
 /// What a run refuses once the model is built, before any solve (`adit check` and Python's
 /// `adit.check` refuse it too): a stage asking the implicit path of a model it cannot solve, a
-/// factor of safety asked of laws that have no strength reduction, a monitoring point with
-/// nothing to read. Returns the monitoring points found.
+/// monitoring point with nothing to read. Returns the monitoring points found.
 pub fn refuse_before_solving(scene: &Scene, plan: &Plan, model: &Model) -> anyhow::Result<Probes> {
     for i in 0..plan.stages.len() {
         stage_method(plan, i, model)?;
-        strength_reduction_refused(plan, i, model)?;
     }
     Probes::of(&scene.histories, model, &plan.fill)
 }
@@ -352,18 +350,6 @@ pub fn check_scene(scene: &Scene) -> anyhow::Result<Setup> {
     let built = setup(scene)?;
     refuse_before_solving(scene, &built.plan, &built.model)?;
     Ok(built)
-}
-
-/// An error naming `stages[i].factor_of_safety` when stage `i` of `plan` asks a factor of safety
-/// of laws that have no strength reduction (the laws in force at that stage).
-fn strength_reduction_refused(plan: &Plan, i: usize, model: &Model) -> anyhow::Result<()> {
-    if plan.stages[i].factor_of_safety.is_none() {
-        return Ok(());
-    }
-    match strength_reduction::refusal_at(&model.materials, &plan.stages[..=i]) {
-        Some(why) => anyhow::bail!("stages[{i}].factor_of_safety: {why}"),
-        None => Ok(()),
-    }
 }
 
 /// What a stage's factor-of-safety search left: the factor, the mechanism's state, whether a

@@ -39,6 +39,7 @@ def test_a_cycle_limit_and_build_warnings_are_python_warnings(root, tmp_path):
     """Item 2: a run stopped at its cycle limit, and each build warning, is an ``AditWarning``."""
     scene = small_kirsch(root)
     scene["solve"]["max_cycles"] = 20
+    scene["solve"]["method"] = "explicit"
     # Compression positive, as RS2 users give it: tensile in-situ stress, warned by the build.
     scene["in_situ"]["sxx"] = 5e6
     with pytest.warns(adit.AditWarning) as caught:

@@ -89,8 +89,12 @@ def test_jointed_results_have_contacts_and_supports(root, tmp_path):
 
 
 def test_progress_is_called_and_its_exception_stops_the_run(root, tmp_path):
+    """Explicitly, every monitor step calls back (the default ``auto`` solves the elastic hole
+    implicitly in a few iterations)."""
+    kirsch = adit.load_scene(root / "models" / "kirsch.json")
+    kirsch["solve"]["method"] = "explicit"
     rows = []
-    adit.run(root / "models" / "kirsch.json", out=tmp_path / "a", progress=rows.append)
+    adit.run(kirsch, out=tmp_path / "a", progress=rows.append)
     assert len(rows) > 5 and rows[-1]["ratio"] < rows[0]["ratio"]
     assert set(rows[0]) == {"cycle", "time_s", "ratio", "kinetic_energy_j_per_m"}
 
@@ -99,13 +103,15 @@ def test_progress_is_called_and_its_exception_stops_the_run(root, tmp_path):
             raise RuntimeError("enough")
 
     with pytest.raises(RuntimeError, match="enough"):
-        adit.run(root / "models" / "kirsch.json", out=tmp_path / "b", progress=fail)
+        adit.run(kirsch, out=tmp_path / "b", progress=fail)
 
 
 def test_ctrl_c_stops_the_run_and_leaves_it_interrupted(root, tmp_path):
-    """A real SIGINT, as Ctrl-C sends it, half way through the tunnel model: sent once the run
-    has cycled 200 times (a timer could fire before the run starts or after it ends on a
-    loaded machine)."""
+    """A real SIGINT, as Ctrl-C sends it, half way through the tunnel model cycled explicitly:
+    sent once the run has cycled 200 times (a timer could fire before the run starts or after
+    it ends on a loaded machine)."""
+    tunnel = adit.load_scene(root / "models" / "tunnel.json")
+    tunnel["solve"]["method"] = "explicit"
     sent = []
 
     def ctrl_c(row):
@@ -114,7 +120,7 @@ def test_ctrl_c_stops_the_run_and_leaves_it_interrupted(root, tmp_path):
             os.kill(os.getpid(), signal.SIGINT)
 
     with pytest.raises(KeyboardInterrupt):
-        adit.run(root / "models" / "tunnel.json", out=tmp_path, progress=ctrl_c)
+        adit.run(tunnel, out=tmp_path, progress=ctrl_c)
     assert sent
     summary = (tmp_path / "summary.json").read_text()
     assert '"interrupted"' in summary

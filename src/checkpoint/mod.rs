@@ -8,7 +8,9 @@
 //! sets the state so far (`prefix.rs`: the scene as parsed, without its name, output folder,
 //! later stages and the supports only they install), the run's scene name, then the run so far
 //! (stages done, cycles, history, each stage's summary, the paths taken, the implicit solves'
-//! cost, the output steps) and the model's state (`state.rs`). A restart builds the model from
+//! cost but for its seconds, the output steps) and the model's state (`state.rs`). No wall-clock
+//! figure is kept, so a run's checkpoints are the same bytes on every run (a branch's too); a
+//! resumed run's seconds count the stages it ran. A restart builds the model from
 //! the scene, replays the stages before N (their excavations, materials, supports and loads,
 //! which set what the state does not hold: the laws), and puts the saved state in. A checkpoint
 //! whose part differs from the scene's is refused naming the first field that differs; one of
@@ -39,8 +41,8 @@ use crate::solve::HistoryRow;
 /// 6: the monitoring points' samples (`RunSoFar::samples`). 7: each stage's summary, its
 /// excavations' wall moves (`StageSummary::walls`). 8: with their liners' wall pressure. 9: the
 /// scene's part so far as text (`prefix.rs`) for its hash, the run's name, the supports' state
-/// per installed group.
-pub const VERSION: u32 = 9;
+/// per installed group. 10: no implicit seconds (`Cost`'s wall-clock figures are not state).
+pub const VERSION: u32 = 10;
 
 const MAGIC: &[u8; 8] = b"ADITCKPT";
 
@@ -345,7 +347,6 @@ impl Codec for Cost {
                 self.cuts,
             ],
         );
-        put(out, &[self.assemble_s, self.factorize_s, self.iterate_s]);
     }
     fn get(r: &mut Reader) -> anyhow::Result<Self> {
         let [
@@ -357,7 +358,6 @@ impl Codec for Cost {
             iterations,
             cuts,
         ] = <[u64; 7]>::get(r)?;
-        let [assemble_s, factorize_s, iterate_s] = <[f64; 3]>::get(r)?;
         Ok(Cost {
             unknowns: unknowns as usize,
             matrix_nonzeros: matrix_nonzeros as usize,
@@ -366,9 +366,7 @@ impl Codec for Cost {
             analyses,
             iterations,
             cuts,
-            assemble_s,
-            factorize_s,
-            iterate_s,
+            ..Cost::default()
         })
     }
 }

@@ -39,8 +39,15 @@
 //!   JRCn = JRC0 (Ln/L0)^(−0.02 JRC0),   JCSn = JCS0 (Ln/L0)^(−0.03 JRC0),
 //!
 //! and δp takes Ln.
+//!
+//! **Strength reduction** by F (the factor of safety's search): the mobilized strength at every
+//! shear path and compression divided by F, τ/F = σ′ tan φmob / F, i.e. tan φmob,F = tan φmob / F
+//! (`law::reduced_friction`, Dawson, Roth & Drescher 1999's tan φ/F), the mobilization along the
+//! path and the hyperbola unchanged, the dilation angle at most φmob,F (as a reduced Coulomb
+//! joint's).
 
 use super::{JointLaw, JointState, OPEN, SLIPPING};
+use crate::law::reduced_friction;
 
 /// Barton's mobilization model: (δ/δp, JRCmob/JRC) from 0.3 δp on (below it the mobilized angle
 /// rises linearly from 0 to φr).
@@ -78,6 +85,8 @@ pub struct BartonBandis {
     pub peak_displacement: f64,
     /// The divisor M of the mobilized dilation angle dmob = JRCmob log10(JCS/σ′)/M.
     pub dilation_divisor: f64,
+    /// The factor F its strength is divided by (1 but in the factor of safety's trials).
+    pub strength_factor: f64,
 }
 
 /// Roughness as measured: JRC0 and JCS0 (Pa) on a sample of length L0 (m), and the block size Ln
@@ -161,6 +170,7 @@ impl BartonBandis {
             jcs,
             peak_displacement: peak_displacement(jrc, length),
             dilation_divisor,
+            strength_factor: 1.0,
         }
     }
 
@@ -230,10 +240,20 @@ impl BartonBandis {
             (jrc, angle)
         };
         let roughness_deg = roughness_deg.min(MAX_ANGLE_DEG - phi_r);
+        let friction = (phi_r + roughness_deg).to_radians();
+        let dilation = (roughness_deg.max(0.0) / self.dilation_divisor).to_radians();
+        if self.strength_factor == 1.0 {
+            return Mobilized {
+                jrc,
+                friction,
+                dilation,
+            };
+        }
+        let friction = reduced_friction(friction, self.strength_factor);
         Mobilized {
             jrc,
-            friction: (phi_r + roughness_deg).to_radians(),
-            dilation: (roughness_deg.max(0.0) / self.dilation_divisor).to_radians(),
+            friction,
+            dilation: dilation.min(friction),
         }
     }
 
@@ -355,10 +375,13 @@ impl JointLaw for BartonBandis {
         )
     }
 
-    fn reduced(&self, _factor: f64) -> Result<Box<dyn JointLaw>, &'static str> {
-        Err(
-            "Barton–Bandis joints have no strength reduction yet (tan of the mobilized friction over F is to come)",
-        )
+    /// tan φmob / F at every shear path and compression, the dilation at most the reduced angle
+    /// (the module's doc).
+    fn reduced(&self, factor: f64) -> Box<dyn JointLaw> {
+        Box::new(BartonBandis {
+            strength_factor: self.strength_factor * factor,
+            ..*self
+        })
     }
 }
 
@@ -495,6 +518,52 @@ mod tests {
             );
             assert!(s.dilation > 0.0);
         }
+    }
+
+    /// Reduced by F, every state's strength is the unreduced one over F: sheared under constant
+    /// σn it peaks at τp/F at δp, its JRC mobilized as the unreduced joint's, its dilation angle
+    /// at most the reduced friction; F = 1 changes nothing.
+    #[test]
+    fn the_reduced_law_mobilizes_its_strength_over_the_factor() {
+        let l = law();
+        for (factor, sn) in [(1.25, 2e6), (2.0, 0.5e6), (3.0, 8e6)] {
+            let reduced = BartonBandis {
+                strength_factor: factor,
+                ..l
+            };
+            for r in [0.1, 0.3, 0.8, 1.0, 3.0, 50.0] {
+                let (a, b) = (
+                    l.mobilized(r * l.peak_displacement, sn),
+                    reduced.mobilized(r * l.peak_displacement, sn),
+                );
+                assert!((b.friction.tan() - a.friction.tan() / factor).abs() < 1e-14);
+                assert_eq!(a.jrc, b.jrc);
+                assert!(b.dilation <= b.friction && b.dilation <= a.dilation);
+            }
+            let boxed = l.reduced(factor);
+            let mut s = loaded(&l, sn);
+            let du = l.peak_displacement / 2000.0;
+            let (mut peak, mut peak_normal, mut opening) = (0.0f64, 0.0, 0.0);
+            for _ in 0..6000 {
+                let d = s.dilation;
+                boxed.update(&mut s, opening, du);
+                opening = s.dilation - d;
+                if s.shear > peak {
+                    (peak, peak_normal) = (s.shear, -s.normal);
+                }
+            }
+            let exact = l.peak_strength(peak_normal) / factor;
+            assert!(
+                (peak - exact).abs() < 3e-4 * exact,
+                "F {factor}: {peak} vs {exact}"
+            );
+        }
+        let (same, mut a, mut b) = (l.reduced(1.0), loaded(&l, 2e6), loaded(&l, 2e6));
+        for _ in 0..3000 {
+            l.update(&mut a, 1e-9, 1e-6);
+            same.update(&mut b, 1e-9, 1e-6);
+        }
+        assert_eq!(a, b);
     }
 
     /// A joint present from the start with an in-situ shear keeps it: it begins at the shear

@@ -68,16 +68,16 @@ impl JointLaw for CoulombSlip {
     }
 
     /// c/F, tan φ/F, tan ψ at most the reduced tan φ, T/F.
-    fn reduced(&self, factor: f64) -> Result<Box<dyn JointLaw>, &'static str> {
+    fn reduced(&self, factor: f64) -> Box<dyn JointLaw> {
         let tan_friction = self.tan_friction / factor;
-        Ok(Box::new(CoulombSlip {
+        Box::new(CoulombSlip {
             tan_friction,
             cohesion: self.cohesion / factor,
             residual_cohesion: self.residual_cohesion / factor,
             tensile_strength: self.tensile_strength / factor,
             tan_dilation: self.tan_dilation.min(tan_friction),
             ..*self
-        }))
+        })
     }
 }
 
@@ -175,7 +175,7 @@ mod tests {
             ..joint()
         };
         for factor in [0.8, 1.0, 1.5, 3.0] {
-            let reduced = law.reduced(factor).unwrap();
+            let reduced = law.reduced(factor);
             let mut s = JointState {
                 normal: -1e6,
                 initial_normal: -1e6,

@@ -35,8 +35,8 @@ impl JointLaw for Glued {
     }
 
     /// A glued joint has no strength to reduce.
-    fn reduced(&self, _factor: f64) -> Result<Box<dyn JointLaw>, &'static str> {
-        Ok(Box::new(*self))
+    fn reduced(&self, _factor: f64) -> Box<dyn JointLaw> {
+        Box::new(*self)
     }
 }
 

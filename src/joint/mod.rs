@@ -73,9 +73,10 @@ pub trait JointLaw: Send + Sync + CopyJointLaw {
     }
     /// The law with its shear strength divided by the factor F > 0 (the factor of safety's
     /// strength reduction, `strength_reduction`): a Coulomb joint's c/F, tan φ/F, its
-    /// dilation capped at the reduced friction and its tensile strength over F; a joint that
-    /// never slips is itself. `Err` says why a law has no reduction yet.
-    fn reduced(&self, factor: f64) -> Result<Box<dyn JointLaw>, &'static str>;
+    /// dilation capped at the reduced friction and its tensile strength over F; the continuously
+    /// yielding and Barton–Bandis joints' strength over F at every state; a joint that never
+    /// slips is itself.
+    fn reduced(&self, factor: f64) -> Box<dyn JointLaw>;
 }
 
 /// A boxed copy of a joint law: a stage plan keeps the law it gives a joint material and the

@@ -14,8 +14,15 @@
 //! R (m) being the joint's roughness length, and the joint dilates by tan(φm − φ) Δu^p (the
 //! asperity angle is φm − φ). The normal stress is σn = σn0 + kn (un − d) as in the Coulomb law; the
 //! joint carries no tension (it opens at σn > 0 and then carries nothing).
+//!
+//! **Strength reduction** by F (the factor of safety's search): the bound at every state is
+//! divided by F, τm/F = |σn| tan φm / F, the bounding friction φm still wearing from φm0 towards
+//! φ as above (a contact's state holds it unreduced), and the asperity angle that dilates the
+//! joint is the reduced one, φm,F − φF with tan φm,F = tan φm / F and tan φF = tan φ / F
+//! (`law::reduced_friction`: Dawson, Roth & Drescher 1999's tan φ/F at every state).
 
 use super::{JointLaw, JointState, OPEN, SLIPPING};
+use crate::law::reduced_friction;
 
 /// Bit flag of `JointState::flags`: the last shear increment was negative.
 pub const SHEAR_NEGATIVE: u8 = 8;
@@ -33,6 +40,8 @@ pub struct ContinuouslyYielding {
     pub initial_friction: f64,
     /// Roughness length R, m: the plastic shear displacement over which φm − φ falls by a factor e.
     pub roughness: f64,
+    /// The factor F its strength is divided by (1 but in the factor of safety's trials).
+    pub strength_factor: f64,
 }
 
 impl ContinuouslyYielding {
@@ -43,6 +52,16 @@ impl ContinuouslyYielding {
             self.initial_friction
         } else {
             s.bounding_friction
+        }
+    }
+
+    /// The friction angle `angle` (rad) reduced by the strength factor: atan(tan φ / F), φ itself
+    /// at F = 1.
+    fn reduced_angle(&self, angle: f64) -> f64 {
+        if self.strength_factor == 1.0 {
+            angle
+        } else {
+            reduced_friction(angle, self.strength_factor)
         }
     }
 }
@@ -65,7 +84,8 @@ impl JointLaw for ContinuouslyYielding {
         s.normal = normal;
         if ds != 0.0 {
             let negative = ds < 0.0;
-            let bound = -normal * phi_m.tan() * if negative { -1.0 } else { 1.0 };
+            let bound =
+                -normal * self.reduced_angle(phi_m).tan() * if negative { -1.0 } else { 1.0 };
             if negative != (s.flags & SHEAR_NEGATIVE != 0) {
                 // Reversal: restart from an elastic response.
                 s.reversal = if bound != 0.0 { s.shear / bound } else { 0.0 };
@@ -82,7 +102,8 @@ impl JointLaw for ContinuouslyYielding {
                 s.flags |= SLIPPING;
             }
             if phi_m > self.friction {
-                s.dilation += (phi_m - self.friction).tan() * plastic;
+                let asperity = self.reduced_angle(phi_m) - self.reduced_angle(self.friction);
+                s.dilation += asperity.tan() * plastic;
                 phi_m -= (phi_m - self.friction) * plastic / self.roughness;
                 s.normal =
                     s.initial_normal + self.normal_stiffness * (s.normal_displacement - s.dilation);
@@ -107,12 +128,12 @@ impl JointLaw for ContinuouslyYielding {
         )
     }
 
-    /// Each contact carries its bounding friction φm in its state, which a reduced law would
-    /// not reduce.
-    fn reduced(&self, _factor: f64) -> Result<Box<dyn JointLaw>, &'static str> {
-        Err(
-            "the continuously yielding joint has no strength reduction yet (each contact carries its bounding friction)",
-        )
+    /// The bound τm/F at every state, the asperity angle reduced alike (the module's doc).
+    fn reduced(&self, factor: f64) -> Box<dyn JointLaw> {
+        Box::new(ContinuouslyYielding {
+            strength_factor: self.strength_factor * factor,
+            ..*self
+        })
     }
 }
 
@@ -127,6 +148,7 @@ mod tests {
             friction: 30f64.to_radians(),
             initial_friction: initial_deg.to_radians(),
             roughness: 1e-3,
+            strength_factor: 1.0,
         }
     }
 
@@ -174,6 +196,58 @@ mod tests {
         assert!(s.shear < 1.05 * residual, "after 10 mm: {}", s.shear);
         assert!(s.dilation > 1e-4, "dilation {}", s.dilation);
         assert!((s.normal + 1e6).abs() < 0.01 * 1e6, "σn {}", s.normal);
+    }
+
+    /// Reduced by F, monotonic shear follows the closed form with the bound τm/F, and a rough
+    /// joint sheared without opening stays within its bound |σn| tan φm / F, φm wearing towards
+    /// φ, below the unreduced joint's shear.
+    #[test]
+    fn the_reduced_law_bounds_every_state_by_its_strength_over_the_factor() {
+        for factor in [1.3, 2.0] {
+            let reduced = law(30.0).reduced(factor);
+            let mut s = confined(-1e6);
+            let tau_m = 1e6 * 30f64.to_radians().tan() / factor;
+            let du = 1e-8;
+            let mut worst = 0.0f64;
+            for k in 1..=100_000 {
+                reduced.update(&mut s, 0.0, du);
+                let exact = tau_m * (1.0 - (-1e9 * k as f64 * du / tau_m).exp());
+                worst = worst.max((s.shear - exact).abs() / tau_m);
+            }
+            assert!(worst < 1e-4, "F {factor}: largest error {worst}");
+
+            let (whole, rough) = (law(45.0), law(45.0).reduced(factor));
+            let (mut a, mut b) = (confined(-1e6), confined(-1e6));
+            for _ in 0..30_000 {
+                whole.update(&mut a, 0.0, 1e-7);
+                rough.update(&mut b, 0.0, 1e-7);
+            }
+            let phi_m = whole.bounding_friction(&b);
+            assert!(
+                phi_m < 44f64.to_radians() && phi_m > 31f64.to_radians(),
+                "φm {phi_m}"
+            );
+            // Sheared without opening, the joint's dilation raises its compression.
+            let bound = -b.normal * phi_m.tan() / factor;
+            assert!(
+                b.shear <= bound * (1.0 + 1e-12),
+                "τ {} above {bound}",
+                b.shear
+            );
+            assert!(
+                b.shear < a.shear,
+                "τ {} above the unreduced {}",
+                b.shear,
+                a.shear
+            );
+        }
+        let same = law(45.0).reduced(1.0);
+        let (mut a, mut b) = (confined(-1e6), confined(-1e6));
+        for _ in 0..1000 {
+            law(45.0).update(&mut a, 1e-9, 1e-7);
+            same.update(&mut b, 1e-9, 1e-7);
+        }
+        assert_eq!(a, b);
     }
 
     /// Reversing the shear direction unloads elastically (F = 1 at the reversal).

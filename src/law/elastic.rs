@@ -34,8 +34,8 @@ pub fn plane_strain_moduli(bulk: f64, shear: f64) -> (f64, f64) {
 
 impl ZoneLaw for Elastic {
     /// Elastic rock has no strength to reduce.
-    fn reduced(&self, _factor: f64) -> Result<Box<dyn ZoneLaw>, &'static str> {
-        Ok(Box::new(*self))
+    fn reduced(&self, _factor: f64) -> Box<dyn ZoneLaw> {
+        Box::new(*self)
     }
 
     /// Hooke's law in plane strain (Δεzz = 0), with α1 = K + 4G/3 and α2 = K − 2G/3:

@@ -474,8 +474,8 @@ impl HoekBrown {
 }
 
 impl ZoneLaw for HoekBrown {
-    fn reduced(&self, factor: f64) -> Result<Box<dyn ZoneLaw>, &'static str> {
-        Ok(Box::new(self.reduced_by(factor)))
+    fn reduced(&self, factor: f64) -> Box<dyn ZoneLaw> {
+        Box::new(self.reduced_by(factor))
     }
 
     fn update(&self, s: &mut Stress, state: &mut u8, plastic: &mut f64, de: &StrainIncrement) {

@@ -45,8 +45,8 @@ pub trait ZoneLaw: Send + Sync + CopyZoneLaw {
     /// The law with its strength divided by the factor F > 0 (the factor of safety's strength
     /// reduction, `strength_reduction`): a Coulomb criterion's c/F and tan φ/F
     /// ([`reduced_friction`]), the dilation capped at the reduced friction, a tensile strength
-    /// over F; a law without strength is itself. `Err` says why a law has no reduction yet.
-    fn reduced(&self, factor: f64) -> Result<Box<dyn ZoneLaw>, &'static str>;
+    /// over F; a law without strength is itself.
+    fn reduced(&self, factor: f64) -> Box<dyn ZoneLaw>;
 }
 
 /// The friction angle φ_F (rad) of the strength reduction by F (Dawson, Roth & Drescher 1999,

@@ -241,8 +241,8 @@ fn single_plane_return(surface: &Surface, p: &mut [f64; 3]) -> (u8, f64) {
 impl ZoneLaw for MohrCoulomb {
     /// c/F, φ_F with tan φ_F = tan φ / F, ψ capped at φ_F, σt/F (capped at the reduced apex by
     /// `new`), every point of the softening table reduced alike (`MohrCoulomb::reduced_by`).
-    fn reduced(&self, factor: f64) -> Result<Box<dyn ZoneLaw>, &'static str> {
-        Ok(Box::new(self.reduced_by(factor)))
+    fn reduced(&self, factor: f64) -> Box<dyn ZoneLaw> {
+        Box::new(self.reduced_by(factor))
     }
 
     /// FLAC's update: the single-plane return (`advance`).

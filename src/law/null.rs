@@ -8,8 +8,8 @@ pub struct Null;
 
 impl ZoneLaw for Null {
     /// Excavated rock has no strength to reduce.
-    fn reduced(&self, _factor: f64) -> Result<Box<dyn ZoneLaw>, &'static str> {
-        Ok(Box::new(Null))
+    fn reduced(&self, _factor: f64) -> Box<dyn ZoneLaw> {
+        Box::new(Null)
     }
 
     fn update(&self, s: &mut Stress, state: &mut u8, _plastic: &mut f64, _de: &StrainIncrement) {

@@ -270,7 +270,7 @@ impl ZoneLaw for UbiquitousJoint {
 
     /// The matrix reduced as its own law is, the plane as a
     /// Mohr–Coulomb criterion: cj/F, tan φj/F, ψj capped at the reduced φj, σtj/F.
-    fn reduced(&self, factor: f64) -> Result<Box<dyn ZoneLaw>, &'static str> {
+    fn reduced(&self, factor: f64) -> Box<dyn ZoneLaw> {
         let matrix = match &self.matrix {
             Matrix::Elastic(e) => Matrix::Elastic(*e),
             Matrix::MohrCoulomb(m) => Matrix::MohrCoulomb(m.reduced_by(factor)),
@@ -278,13 +278,13 @@ impl ZoneLaw for UbiquitousJoint {
         };
         let p = &self.plane;
         let friction = reduced_friction(p.friction, factor);
-        Ok(Box::new(UbiquitousJoint::new(
+        Box::new(UbiquitousJoint::new(
             matrix,
             p.dip.to_degrees(),
             p.cohesion / factor,
             (friction.to_degrees(), p.dilation.min(friction).to_degrees()),
             p.tension / factor,
-        )))
+        ))
     }
 }
 

@@ -948,7 +948,7 @@ pub struct StressTensor {
 
 /// How to solve.
 #[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields, default)]
+#[serde(from = "SolveFields")]
 pub struct SolveSpec {
     /// `static` (mass-scaled dynamic relaxation to equilibrium) or `dynamic` (real masses, real time).
     pub mode: SolveMode,
@@ -973,10 +973,12 @@ pub struct SolveSpec {
     pub ramp: u64,
     /// Rayleigh damping of a dynamic solve (default none); local damping then defaults to 0.
     pub rayleigh: Option<Rayleigh>,
-    /// How a static solve reaches equilibrium: `explicit` (default: damped cycling, as above),
-    /// `implicit` (a sparse direct solve of the stiffness, iterated on the same unbalanced-force
-    /// ratio), or `auto` (implicit where the model's features allow it, else explicit; the summary
-    /// says which ran and why).
+    /// How a static solve reaches equilibrium: `explicit` (damped cycling, as above), `implicit`
+    /// (a sparse direct solve of the stiffness, iterated on the same unbalanced-force ratio), or
+    /// `auto` (implicit where the model's features allow it, else explicit; a stage the
+    /// iterations cannot settle is cycled on explicitly; the summary says which ran and why).
+    /// Default `auto`, but `explicit` for a solve that gives `ramp` (the slow release it asks
+    /// for is explicit cycling's: `SolveFields::method_or_default`).
     pub method: SolveMethod,
     /// Iterations of an implicit solve at the latest (default 500: the accelerated iterations of
     /// the report's cases take at most about 220).
@@ -987,13 +989,84 @@ pub struct SolveSpec {
     pub load_steps: u64,
 }
 
+/// A scene's `solve` as written (its fields are [`SolveSpec`]'s, documented there), with
+/// `method` absent told from `method` given.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields, default)]
+struct SolveFields {
+    mode: SolveMode,
+    ratio: f64,
+    max_cycles: u64,
+    damping: Option<f64>,
+    safety_factor: f64,
+    monitor_every: u64,
+    large_strain: bool,
+    ramp: u64,
+    rayleigh: Option<Rayleigh>,
+    method: Option<SolveMethod>,
+    max_iterations: u64,
+    load_steps: u64,
+}
+
+impl SolveFields {
+    /// The method a solve that names none takes: `auto`, or `explicit` when it gives `ramp` (so
+    /// a scene written when explicit was the default, releasing a stage slowly, is still
+    /// released slowly: the implicit path's slow release is `load_steps`).
+    fn method_or_default(&self) -> SolveMethod {
+        match self.method {
+            Some(m) => m,
+            None if self.ramp > 0 => SolveMethod::Explicit,
+            None => SolveMethod::Auto,
+        }
+    }
+}
+
+impl Default for SolveFields {
+    fn default() -> Self {
+        let d = SolveSpec::default();
+        SolveFields {
+            mode: d.mode,
+            ratio: d.ratio,
+            max_cycles: d.max_cycles,
+            damping: d.damping,
+            safety_factor: d.safety_factor,
+            monitor_every: d.monitor_every,
+            large_strain: d.large_strain,
+            ramp: d.ramp,
+            rayleigh: d.rayleigh,
+            method: None,
+            max_iterations: d.max_iterations,
+            load_steps: d.load_steps,
+        }
+    }
+}
+
+impl From<SolveFields> for SolveSpec {
+    fn from(f: SolveFields) -> Self {
+        SolveSpec {
+            method: f.method_or_default(),
+            mode: f.mode,
+            ratio: f.ratio,
+            max_cycles: f.max_cycles,
+            damping: f.damping,
+            safety_factor: f.safety_factor,
+            monitor_every: f.monitor_every,
+            large_strain: f.large_strain,
+            ramp: f.ramp,
+            rayleigh: f.rayleigh,
+            max_iterations: f.max_iterations,
+            load_steps: f.load_steps,
+        }
+    }
+}
+
 /// How a static solve reaches equilibrium.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum SolveMethod {
-    #[default]
     Explicit,
     Implicit,
+    #[default]
     Auto,
 }
 
@@ -1093,7 +1166,7 @@ impl Default for SolveSpec {
             large_strain: false,
             ramp: 0,
             rayleigh: None,
-            method: SolveMethod::Explicit,
+            method: SolveMethod::Auto,
             max_iterations: 500,
             load_steps: 1,
         }
@@ -1610,7 +1683,11 @@ mod tests {
         );
         for (solve, start) in [
             (
-                r#"{ "load_steps": 4 }"#,
+                r#"{ "method": "explicit", "load_steps": 4 }"#,
+                "solve.load_steps: acts in implicit solves",
+            ),
+            (
+                r#"{ "ramp": 100, "load_steps": 4 }"#,
                 "solve.load_steps: acts in implicit solves",
             ),
             (
@@ -1629,6 +1706,38 @@ mod tests {
             let e = with(solve).unwrap();
             assert!(e.starts_with(start), "{solve}: {e}");
         }
+    }
+
+    /// A solve that names no method is `auto`, or `explicit` when it gives a ramp (the slow
+    /// release explicit cycling was asked for when explicit was the default); one named is kept.
+    #[test]
+    fn the_default_method_is_auto_but_a_ramp_asks_for_explicit_cycling() {
+        let method = |solve: &str| {
+            let text = GOOD.replace(
+                "\"edge_far\": 2 }",
+                &format!("\"edge_far\": 2 }}, \"solve\": {solve}"),
+            );
+            Scene::from_json(&text, "m").unwrap().solve.method
+        };
+        assert_eq!(
+            Scene::from_json(GOOD, "m").unwrap().solve.method,
+            SolveMethod::Auto
+        );
+        assert_eq!(method(r#"{ "ratio": 1e-6 }"#), SolveMethod::Auto);
+        assert_eq!(method(r#"{ "ramp": 100 }"#), SolveMethod::Explicit);
+        assert_eq!(
+            method(r#"{ "ramp": 100, "method": "auto" }"#),
+            SolveMethod::Auto
+        );
+        assert_eq!(method(r#"{ "method": "explicit" }"#), SolveMethod::Explicit);
+        assert_eq!(method(r#"{ "method": "implicit" }"#), SolveMethod::Implicit);
+        assert_eq!(SolveSpec::default().method, SolveMethod::Auto);
+        let unknown = GOOD.replace(
+            "\"edge_far\": 2 }",
+            "\"edge_far\": 2 }, \"solve\": { \"ramps\": 1 }",
+        );
+        let e = Scene::from_json(&unknown, "m").unwrap_err().to_string();
+        assert!(e.contains("unknown field `ramps`"), "{e}");
     }
 
     /// Rayleigh damping is a dynamic solve's, replaces local damping, and gives ξ at its frequency.

@@ -107,6 +107,7 @@ pub fn joint_law(j: &JointMaterial, path: &str) -> Result<Box<dyn JointLaw>, Sce
             friction: j.friction.to_radians(),
             initial_friction: initial_friction.to_radians(),
             roughness,
+            strength_factor: 1.0,
         }),
         JointLawSpec::BartonBandis {
             jrc,

@@ -431,7 +431,8 @@ fn column_cut_by_an_inclined_joint_holds_without_slipping() {
 #[test]
 fn a_wedge_still_sliding_at_convergence_is_named() {
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
-    let deformable = Scene::load(&root.join("models/jointed_tunnel.json")).unwrap();
+    let mut deformable = Scene::load(&root.join("models/jointed_tunnel.json")).unwrap();
+    deformable.solve.method = adit::scene::SolveMethod::Explicit;
     let mut rigid = deformable.clone();
     rigid.blocks.mode = adit::scene::BlockMode::Rigid;
     let named = |sc: &Scene, name: &str| {
@@ -469,6 +470,7 @@ fn a_solve_at_its_cycle_limit_names_its_fastest_block() {
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
     let mut rigid = Scene::load(&root.join("models/jointed_tunnel.json")).unwrap();
     rigid.blocks.mode = adit::scene::BlockMode::Rigid;
+    rigid.solve.method = adit::scene::SolveMethod::Explicit;
     rigid.solve.max_cycles = 200;
     let mut implicit = Scene::load(&root.join("models/jointed_tunnel.json")).unwrap();
     implicit.solve.method = adit::scene::SolveMethod::Implicit;

@@ -54,6 +54,7 @@ fn a_run_at_its_cycle_limit_exits_with_3() {
     let mut v: serde_json::Value =
         serde_json::from_str(include_str!("../../models/kirsch.json")).unwrap();
     v["solve"]["max_cycles"] = 20.into();
+    v["solve"]["method"] = "explicit".into();
     let dir = std::env::temp_dir().join(format!("adit-cycle-limit-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let scene = dir.join("limit.json");

@@ -15,6 +15,7 @@ fn small_scene() -> Scene {
     s.zoning.edge_far = 8.0;
     s.zoning.grading = 0.5;
     s.excavations[0].circle.as_mut().unwrap().segments = 24;
+    s.solve.method = adit::scene::SolveMethod::Explicit;
     s.solve.max_cycles = 300;
     s.output.every = 100;
     s

@@ -69,6 +69,7 @@ fn main() -> anyhow::Result<()> {
             "models/jointed_tunnel_mixed.json",
             "models/jointed_tunnel_bem.json",
             "models/shallow_tunnel_bem.json",
+            "models/slope.json",
         ];
         let mut rows: Vec<readme::ModelRow> = sections
             .iter()

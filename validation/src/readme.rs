@@ -24,7 +24,7 @@ pub struct ModelRow {
 /// The generated block: a table of the bundled models with the threads they ran on.
 pub fn models_table(rows: &[ModelRow], threads: usize) -> String {
     let mut s = format!(
-        "{BEGIN}\n| model | zones | blocks | cycles | seconds ({threads} threads) | result |\n|---|---|---|---|---|---|\n"
+        "{BEGIN}\n| model | zones | blocks | cycles or iterations | seconds ({threads} threads) | result |\n|---|---|---|---|---|---|\n"
     );
     for r in rows {
         s.push_str(&format!(

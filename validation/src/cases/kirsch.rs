@@ -88,8 +88,8 @@ impl Case for Kirsch {
         let threads = cx.threads;
         let mut md = String::new();
         let model = run(
-            scene,
-            "kirsch (models/kirsch.json as shipped)",
+            &crate::as_adit_runs(scene)?,
+            "kirsch (models/kirsch.json as shipped, solved as adit run does)",
             OuterLoad::Scene,
         )?;
         print_row(&model.report());
