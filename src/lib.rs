@@ -10,6 +10,7 @@ pub mod checkpoint;
 pub mod contact;
 pub mod cycle;
 mod damping;
+pub mod dynamics;
 pub mod far_field;
 pub mod implicit;
 pub mod interrupt;

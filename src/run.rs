@@ -128,7 +128,7 @@ fn hand_over(asked: SolveMethod, solution: &Solution, sound: bool) -> Option<Str
             solution.cycles, solution.final_ratio
         )),
         Status::Failed(reason) => Some(reason.clone()),
-        Status::Converged | Status::Interrupted => None,
+        Status::Converged | Status::Completed | Status::Interrupted => None,
     }
 }
 

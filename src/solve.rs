@@ -17,6 +17,8 @@ pub use crate::cycle::monitor::{UNSTABLE_GROWTH, UNSTABLE_JUMP};
 pub enum Status {
     /// The unbalanced-force ratio fell below the target.
     Converged,
+    /// A dynamic solve ran its `duration`.
+    Completed,
     /// The cycle limit was reached first.
     CycleLimit,
     /// The run was stopped; the reason names the node or zone.
@@ -29,6 +31,7 @@ impl Status {
     pub fn label(&self) -> &'static str {
         match self {
             Status::Converged => "converged",
+            Status::Completed => "completed",
             Status::CycleLimit => "cycle_limit",
             Status::Failed(_) => "failed",
             Status::Interrupted => "interrupted",
@@ -148,6 +151,11 @@ impl Solver {
         };
         let every = self.spec.monitor_every;
         let ramp = Ramp::start(self.spec.ramp, model, &mut self.cycle, &self.params);
+        // A dynamic solve with a duration runs its cycles, the ratio notwithstanding.
+        let end = (self.spec.mode == SolveMode::Dynamic)
+            .then_some(self.spec.duration)
+            .flatten()
+            .map(|d| (d / self.params.dt).ceil().max(1.0) as u64);
         let mut cycle = 0u64;
         let status = loop {
             if let Some(ramp) = &ramp {
@@ -182,9 +190,12 @@ impl Solver {
                 history.push(row);
                 observer.monitored(&row);
                 observer.sampled(model);
-                if last.ratio <= self.spec.ratio && cycle > self.spec.ramp {
+                if end.is_none() && last.ratio <= self.spec.ratio && cycle > self.spec.ramp {
                     break Status::Converged;
                 }
+            }
+            if end.is_some_and(|e| cycle >= e) {
+                break Status::Completed;
             }
             if cycle >= self.spec.max_cycles {
                 break Status::CycleLimit;

@@ -6,6 +6,7 @@ use adit_meshing::BoundaryEdge;
 
 use std::collections::BTreeMap;
 
+use crate::cycle::{Cycle, CycleParams, ZoneScheme};
 use crate::model::{FIX_X, FIX_Y, MaterialId, Model, traction};
 use crate::output::WallMoves;
 use crate::setup::{
@@ -39,8 +40,18 @@ impl Staging {
     /// give the zone and joint materials it names their new properties and its regions their new
     /// material, change gravity and the boundary conditions, install the bolts and liners it
     /// names, set the support pressure of every excavation made so far to `support_fraction` × the
-    /// in-situ traction on its walls, and reset displacements if asked.
+    /// in-situ traction on its walls, and reset displacements if asked. A quiet boundary in force
+    /// in the stage holds, as constant loads, the forces the fixities it replaces exerted when the
+    /// stage began (`dynamics::held_reactions`).
     pub fn apply(&mut self, stage: &StagePlan, model: &mut Model, plan: &Plan) {
+        let held = stage.quiet.as_ref().map(|q| {
+            let before: Vec<u8> = q
+                .nodes
+                .iter()
+                .map(|&n| model.nodes.fixed[n as usize])
+                .collect();
+            (q.nodes.clone(), before, held_reactions(model, &q.nodes))
+        });
         for &j in &stage.excavate {
             // The rock's contacts go with it: the wall is unsupported until a pressure is set.
             remove_fill(model, &plan.fill, j);
@@ -65,6 +76,10 @@ impl Staging {
         }
         if let Some(effect) = &stage.boundary {
             self.change_boundary(effect, model);
+        }
+        model.quiet = stage.quiet.clone();
+        if let Some((nodes, before, reactions)) = held {
+            hold_reactions(model, &nodes, &before, &reactions);
         }
         for &id in &stage.install {
             model.supports.install(id, &model.nodes.disp);
@@ -273,6 +288,43 @@ impl WallPoints {
 
 /// Give block `b` zone material `m`, keeping its stress, yield state and plastic strain; removed
 /// rock keeps its null law.
+/// The force each fixity of `nodes` exerts on the model as it is: the negative of the node's
+/// out-of-balance force, measured by the cycle's force stages with a zero step, N/m. Taken before
+/// a stage whose boundary turns quiet changes anything (the static boundary's reactions, which
+/// UDEC and FLAC apply to a viscous boundary so that a model in equilibrium stays at rest).
+fn held_reactions(model: &mut Model, nodes: &[u32]) -> Vec<[f64; 2]> {
+    let params = CycleParams {
+        dt: 0.0,
+        damping: 0.0,
+        scheme: ZoneScheme::of(model, false),
+        mass_damping: 0.0,
+        stiffness_damping: 0.0,
+        trial: false,
+    };
+    let mut cycle = Cycle::new(model);
+    cycle.prime(model, &params);
+    (nodes.iter())
+        .map(|&n| {
+            let f = cycle.node_force(model, n as usize);
+            [-f[0], -f[1]]
+        })
+        .collect()
+}
+
+/// Add `reactions` (N/m, from [`held_reactions`]) to the loads of `nodes` in each component
+/// `before` fixed (their fixity flags then) and that is now free: a quiet boundary holds, as
+/// constant forces, what the fixities it replaces held.
+fn hold_reactions(model: &mut Model, nodes: &[u32], before: &[u8], reactions: &[[f64; 2]]) {
+    for ((&n, &was), r) in nodes.iter().zip(before).zip(reactions) {
+        let n = n as usize;
+        for (d, flag) in [(0, FIX_X), (1, FIX_Y)] {
+            if was & flag != 0 && model.nodes.fixed[n] & flag == 0 {
+                model.nodes.applied[n][d] += r[d];
+            }
+        }
+    }
+}
+
 fn set_block_material(model: &mut Model, b: usize, m: MaterialId) {
     if model.blocks.is_removed(b) {
         return;

@@ -34,8 +34,9 @@ pub fn first_difference(theirs: &str, ours: &str) -> Option<(String, String, Str
     // The lines before `at` are the same in both: the path is read from either.
     let path = path_of_line(&b[..at.min(b.len())], b.get(at).or(a.get(at)).copied());
     let side = |l: &[&str]| {
-        l.get(at)
-            .map_or("(nothing)".to_string(), |t| t.trim().to_string())
+        l.get(at).map_or("(nothing)".to_string(), |t| {
+            t.trim().trim_end_matches(',').to_string()
+        })
     };
     Some((path, side(&a), side(&b)))
 }
@@ -166,7 +167,7 @@ mod tests {
         assert_eq!(path, "stages[0].support_fraction");
         assert_eq!(
             (theirs.as_str(), ours.as_str()),
-            ("support_fraction: 0.3,", "support_fraction: 0.4,")
+            ("support_fraction: 0.3", "support_fraction: 0.4")
         );
         let other = scene(|v| v["materials"]["rock"]["young"] = 2e9.into());
         let (path, ..) = first_difference(&prefix(&base, 1), &prefix(&other, 1)).unwrap();

@@ -133,6 +133,16 @@ pub(crate) fn advance(
     }
 }
 
+/// The largest speed of the quiet boundary's nodes after their dashpots acted, m/s.
+fn quiet_speed(nodes: &Nodes, quiet: &[u32]) -> f64 {
+    (quiet.iter())
+        .map(|&n| {
+            let v = nodes.vel[n as usize];
+            v[0].hypot(v[1])
+        })
+        .fold(0.0, f64::max)
+}
+
 /// Seconds spent in each stage since the start of the run.
 #[derive(Debug, Clone, Copy, Default, PartialEq, serde::Serialize)]
 pub struct StageSeconds {
@@ -192,6 +202,9 @@ pub struct Cycle {
     seconds: StageSeconds,
     /// Contact detections so far (the solver re-derives static masses after each).
     detections: u64,
+    /// Time since the cycle was made (the solve began), s: the time the next step's forces
+    /// act at.
+    time: f64,
 }
 
 impl Cycle {
@@ -243,6 +256,7 @@ impl Cycle {
             far_field,
             far_gather,
             materials,
+            quiet,
             ..
         } = model;
         let (laws, joint_laws) = (&materials.zone, &materials.joint);
@@ -262,9 +276,28 @@ impl Cycle {
             supports: support_gather,
             far_field: far_gather,
         };
-        let speed = self
+        if let Some(q) = quiet.as_mut() {
+            q.remember(&nodes.vel);
+        }
+        let mut speed = self
             .motion(nodes, &gathers, p)
             .max(self.body_motion(nodes, bodies, laws, p));
+        if let Some(q) = quiet.as_mut() {
+            let fixed = &nodes.fixed;
+            let moving = crate::dynamics::Moving {
+                mass: &nodes.mass,
+                vel: &mut nodes.vel,
+                disp: &mut nodes.disp,
+                force: &mut nodes.force,
+                free: |n: u32| {
+                    let f = fixed[n as usize];
+                    [f & FIX_X == 0, f & FIX_Y == 0]
+                },
+            };
+            q.absorb(moving, p.dt, self.time);
+            speed = speed.max(quiet_speed(nodes, &q.nodes));
+        }
+        self.time += p.dt;
         self.moved += speed * p.dt;
         let t5 = Instant::now();
         self.seconds.detect += (t1 - t0).as_secs_f64();

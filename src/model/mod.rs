@@ -95,4 +95,6 @@ pub struct Model {
     pub(crate) far_gather: Gather,
     /// Zone and joint laws, and which joint material each joint feature and hole wall takes.
     pub materials: Materials,
+    /// The quiet boundary in force (`dynamics::QuietBoundary`: dynamic stages only), if any.
+    pub quiet: Option<crate::dynamics::QuietBoundary>,
 }

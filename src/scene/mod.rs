@@ -912,6 +912,61 @@ pub struct BoundaryCondition {
     /// Applied shear stress, Pa, along the tangent t = (−n_y, n_x).
     #[serde(default)]
     pub(crate) shear_stress: Option<f64>,
+    /// A quiet (viscous) boundary on the part, in dynamic stages: dashpots ρCp and ρCs per
+    /// unit length, normal to it and along it, from the rock beside it (`dynamics::quiet`);
+    /// fixities the part had in the stage before become the constant forces they exerted.
+    #[serde(default)]
+    pub quiet: bool,
+    /// A plane wave entering through the quiet part.
+    #[serde(default)]
+    pub incident: Option<IncidentSpec>,
+}
+
+/// A plane wave entering through a quiet boundary part, as its particle velocity history
+/// (`dynamics::History`): a pulse scaled by `velocity`, or a `table`.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct IncidentSpec {
+    /// `p`: particle velocity along the part's inward normal; `s`: along its tangent
+    /// t = (−n_y, n_x), n the outward normal.
+    pub wave: WaveKind,
+    /// Peak particle velocity of the pulse, m/s.
+    #[serde(default)]
+    pub velocity: Option<f64>,
+    /// `ricker`, `half_sine` or `sine`.
+    #[serde(default)]
+    pub pulse: Option<PulseKind>,
+    /// The pulse's frequency, Hz (a Ricker wavelet's peak frequency).
+    #[serde(default)]
+    pub frequency: Option<f64>,
+    /// When the pulse starts (the Ricker wavelet: peaks), s from the start of the stage
+    /// (default 1.2/f for a Ricker wavelet, 0 for the others).
+    #[serde(default)]
+    pub delay: Option<f64>,
+    /// Cycles of a `sine` (default: unending).
+    #[serde(default)]
+    pub cycles: Option<f64>,
+    /// The velocity history itself, [[t s, v m/s], ...], times increasing: linear between its
+    /// points, 0 outside them.
+    #[serde(default)]
+    pub table: Option<Vec<[f64; 2]>>,
+}
+
+/// The kind of an incident plane wave.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum WaveKind {
+    P,
+    S,
+}
+
+/// The shape of an incident pulse.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum PulseKind {
+    Ricker,
+    HalfSine,
+    Sine,
 }
 
 impl BoundaryCondition {
@@ -983,6 +1038,9 @@ pub struct SolveSpec {
     /// Iterations of an implicit solve at the latest (default 500: the accelerated iterations of
     /// the report's cases take at most about 220).
     pub max_iterations: u64,
+    /// Time a dynamic stage runs, s: it ends `completed` after it, without stopping on the
+    /// ratio (default none: a dynamic stage stops on the ratio or `max_cycles`).
+    pub duration: Option<f64>,
     /// Equal steps in which an implicit stage releases the out-of-balance force it starts with
     /// (default 1: at once), each solved and committed before the next; a step that does not
     /// converge within `max_iterations` is halved. The implicit path's `ramp`.
@@ -1005,6 +1063,7 @@ struct SolveFields {
     rayleigh: Option<Rayleigh>,
     method: Option<SolveMethod>,
     max_iterations: u64,
+    duration: Option<f64>,
     load_steps: u64,
 }
 
@@ -1036,6 +1095,7 @@ impl Default for SolveFields {
             rayleigh: d.rayleigh,
             method: None,
             max_iterations: d.max_iterations,
+            duration: d.duration,
             load_steps: d.load_steps,
         }
     }
@@ -1055,6 +1115,7 @@ impl From<SolveFields> for SolveSpec {
             ramp: f.ramp,
             rayleigh: f.rayleigh,
             max_iterations: f.max_iterations,
+            duration: f.duration,
             load_steps: f.load_steps,
         }
     }
@@ -1168,6 +1229,7 @@ impl Default for SolveSpec {
             rayleigh: None,
             method: SolveMethod::Auto,
             max_iterations: 500,
+            duration: None,
             load_steps: 1,
         }
     }

@@ -429,7 +429,7 @@ impl BoundaryCondition {
         let load = loads.pop();
         match (&self.part, self.at, self.fix) {
             (None, Some(at), Some(fix)) => Ok(Condition::Point { at, fix }),
-            (Some(name), None, fix) if fix.is_some() || load.is_some() => {
+            (Some(name), None, fix) if fix.is_some() || load.is_some() || self.quiet => {
                 Ok(Condition::Part { name, fix, load })
             }
             _ => Err(invalid(path, "neither a fixity nor a load is given")),

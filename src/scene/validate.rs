@@ -415,8 +415,88 @@ fn validate_joint_material(p: &str, j: &JointMaterial) -> Result<(), SceneError>
 }
 
 /// A solve specification at `p`.
+/// An incident wave: a pulse with its peak velocity (finite) and frequency (positive), or a
+/// table of increasing times, not both; delay and cycles in range.
+fn validate_incident(p: &str, w: &super::IncidentSpec) -> Result<(), SceneError> {
+    match (&w.pulse, &w.table) {
+        (Some(_), Some(_)) | (None, None) => {
+            return Err(invalid(
+                p,
+                "give one of `pulse` (with `velocity` and `frequency`) and `table`",
+            ));
+        }
+        (Some(_), None) => {
+            let velocity = w.velocity.ok_or_else(|| {
+                invalid(
+                    format!("{p}.velocity"),
+                    "the pulse's peak particle velocity (m/s) is required",
+                )
+            })?;
+            if !velocity.is_finite() {
+                return Err(invalid(format!("{p}.velocity"), "must be finite"));
+            }
+            let f = w.frequency.ok_or_else(|| {
+                invalid(
+                    format!("{p}.frequency"),
+                    "the pulse's frequency (Hz) is required",
+                )
+            })?;
+            positive(&format!("{p}.frequency"), f)?;
+        }
+        (None, Some(table)) => {
+            for (field, given) in [
+                ("velocity", w.velocity),
+                ("frequency", w.frequency),
+                ("delay", w.delay),
+            ] {
+                if given.is_some() {
+                    return Err(invalid(
+                        format!("{p}.{field}"),
+                        "belongs to a `pulse`; a table gives the velocity itself",
+                    ));
+                }
+            }
+            if table.is_empty() {
+                return Err(invalid(format!("{p}.table"), "needs at least one point"));
+            }
+            for (k, pt) in table.iter().enumerate() {
+                if !(pt[0].is_finite() && pt[1].is_finite()) {
+                    return Err(invalid(format!("{p}.table[{k}]"), "must be finite"));
+                }
+                if k > 0 && pt[0] <= table[k - 1][0] {
+                    return Err(invalid(format!("{p}.table[{k}]"), "times must increase"));
+                }
+            }
+        }
+    }
+    if let Some(d) = w.delay
+        && !(d >= 0.0 && d.is_finite())
+    {
+        return Err(invalid(
+            format!("{p}.delay"),
+            format!("must be at least 0 and finite, got {}", Num(d)),
+        ));
+    }
+    if let Some(c) = w.cycles {
+        if w.pulse != Some(super::PulseKind::Sine) {
+            return Err(invalid(format!("{p}.cycles"), "belongs to a `sine` pulse"));
+        }
+        positive(&format!("{p}.cycles"), c)?;
+    }
+    Ok(())
+}
+
 fn validate_solve(p: &str, v: &SolveSpec) -> Result<(), SceneError> {
     positive(&format!("{p}.ratio"), v.ratio)?;
+    if let Some(d) = v.duration {
+        positive(&format!("{p}.duration"), d)?;
+        if v.mode != SolveMode::Dynamic {
+            return Err(invalid(
+                format!("{p}.duration"),
+                "a static solve ends at equilibrium; `duration` is a dynamic solve's (`mode`: \"dynamic\")",
+            ));
+        }
+    }
     if v.max_cycles == 0 {
         return Err(invalid(format!("{p}.max_cycles"), "must be at least 1"));
     }
@@ -747,6 +827,7 @@ impl Scene {
             self.validate_boundary(&format!("boundary[{i}]"), bc)?;
         }
         validate_solve("solve", &self.solve)?;
+        self.validate_quiet_stages()?;
         let large = self.solve.large_strain
             || self
                 .stages
@@ -954,6 +1035,27 @@ impl Scene {
                 ),
             ));
         }
+        if bc.quiet && bc.part.is_none() {
+            return Err(invalid(
+                format!("{p}.quiet"),
+                "a quiet boundary is a part's (`part`), not a point's",
+            ));
+        }
+        if bc.quiet && bc.fix.is_some() {
+            return Err(invalid(
+                format!("{p}.fix"),
+                "a quiet part moves, its dashpots resisting: it cannot be fixed too",
+            ));
+        }
+        if let Some(incident) = &bc.incident {
+            if !bc.quiet {
+                return Err(invalid(
+                    format!("{p}.incident"),
+                    "a wave enters through a quiet part: give `quiet`: true",
+                ));
+            }
+            validate_incident(&format!("{p}.incident"), incident)?;
+        }
         bc.condition(p)?;
         for (f, v) in [
             ("normal_stress", bc.normal_stress),
@@ -961,6 +1063,39 @@ impl Scene {
         ] {
             if v.is_some_and(|v| !v.is_finite()) {
                 return Err(invalid(format!("{p}.{f}"), "must be finite"));
+            }
+        }
+        Ok(())
+    }
+
+    /// A list of boundary conditions with a quiet part is in force only during dynamic stages:
+    /// its dashpots would damp a static solve's path, and its incident wave has no time there.
+    fn validate_quiet_stages(&self) -> Result<(), SceneError> {
+        let quiet = |list: &[BoundaryCondition]| list.iter().position(|c| c.quiet);
+        let mode = |i: usize| {
+            let st = self.stages.get(i);
+            st.and_then(|s| s.solve.as_ref())
+                .unwrap_or(&self.solve)
+                .mode
+        };
+        let mut in_force = quiet(&self.boundary).map(|k| format!("boundary[{k}].quiet"));
+        for i in 0..self.stages.len().max(1) {
+            if let Some(list) = self.stages.get(i).and_then(|s| s.boundary.as_deref()) {
+                in_force = quiet(list).map(|k| format!("stages[{i}].boundary[{k}].quiet"));
+            }
+            if let Some(path) = &in_force
+                && mode(i) == super::SolveMode::Static
+            {
+                let stage = match self.stages.get(i) {
+                    Some(s) => format!("stages[{i}] ('{}') is static", s.name),
+                    None => "the solve is static".to_string(),
+                };
+                return Err(invalid(
+                    path.as_str(),
+                    format!(
+                        "acts in dynamic solves only, and {stage} while it is in force: give                          that stage `solve.mode` \"dynamic\", or a boundary list of its own"
+                    ),
+                ));
             }
         }
         Ok(())

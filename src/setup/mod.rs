@@ -174,6 +174,90 @@ pub fn add_zone_weight(nodes: &mut Nodes, zones: &Zones, laws: &[Box<dyn ZoneLaw
     }
 }
 
+/// The quiet boundary of the quiet parts of `conditions` (the scene's `path`), `None` when none
+/// is: each edge of such a part with the impedances ρCp, ρCs of the zone beside it; an error
+/// naming the condition when an edge has no zone beside it (a rigid or simple block's).
+fn quiet(
+    conditions: &[BoundaryCondition],
+    path: &str,
+    boundary: &Boundary,
+    model: &Model,
+) -> anyhow::Result<Option<crate::dynamics::QuietBoundary>> {
+    let quiet: Vec<(usize, &BoundaryCondition)> = (conditions.iter().enumerate())
+        .filter(|(_, c)| c.quiet)
+        .collect();
+    if quiet.is_empty() {
+        return Ok(None);
+    }
+    let (zones, laws, pos) = (&model.zones, &model.materials.zone, &model.nodes.pos);
+    let mut beside = std::collections::HashMap::with_capacity(3 * zones.nodes.len());
+    for (z, tri) in zones.nodes.iter().enumerate() {
+        for k in 0..3 {
+            let (a, b) = (tri[k], tri[(k + 1) % 3]);
+            beside.insert((a.min(b), a.max(b)), z);
+        }
+    }
+    let mut edges = Vec::new();
+    for &(k, c) in &quiet {
+        let name = c.part.as_deref().unwrap_or_default();
+        let part = (boundary.edges.iter()).filter(|e| edge_in_part(&boundary.domain, e.kind, name));
+        for e in part {
+            let [a, b] = e.nodes;
+            let [pa, pb] = e.nodes.map(|n| pos[n as usize]);
+            let Some(&z) = beside.get(&(a.min(b), a.max(b))) else {
+                anyhow::bail!(
+                    "{path}[{k}].quiet: part '{name}' has an edge of a rigid or simple block \
+                     (from ({:.3}, {:.3}) m); a quiet boundary takes its impedance from the \
+                     zones of a deformable block",
+                    pa[0],
+                    pa[1]
+                );
+            };
+            let law = &laws[zones.material[z].0 as usize];
+            let ((bulk, shear), rho) = (law.moduli(), law.density());
+            let (dx, dy) = (pb[0] - pa[0], pb[1] - pa[1]);
+            let length = dx.hypot(dy);
+            edges.push(crate::dynamics::QuietEdge {
+                nodes: e.nodes,
+                length,
+                normal: [dy / length, -dx / length],
+                impedance: [
+                    ((bulk + 4.0 * shear / 3.0) * rho).sqrt(),
+                    (shear * rho).sqrt(),
+                ],
+                condition: k,
+            });
+        }
+    }
+    let incident: Vec<_> = (quiet.iter())
+        .filter_map(|&(k, c)| c.incident.as_ref().map(|w| (k, w)))
+        .collect();
+    Ok(Some(crate::dynamics::QuietBoundary::new(&edges, &incident)))
+}
+
+/// The quiet boundary in force during each stage (the one stage of a scene without stages): that
+/// of the last list of conditions given at or before it (`stages[i].boundary`, else the
+/// top-level `boundary`).
+fn stage_quiet(
+    scene: &Scene,
+    boundary: &Boundary,
+    model: &Model,
+) -> anyhow::Result<Vec<Option<crate::dynamics::QuietBoundary>>> {
+    let quiet_of = |list: &[BoundaryCondition], path: &str| quiet(list, path, boundary, model);
+    let mut now = quiet_of(&scene.boundary, "boundary")?;
+    if scene.stages.is_empty() {
+        return Ok(vec![now]);
+    }
+    let mut out = Vec::with_capacity(scene.stages.len());
+    for (i, stage) in scene.stages.iter().enumerate() {
+        if let Some(list) = &stage.boundary {
+            now = quiet_of(list, &format!("stages[{i}].boundary"))?;
+        }
+        out.push(now.clone());
+    }
+    Ok(out)
+}
+
 /// Build the model of a validated scene.
 pub fn setup(scene: &Scene) -> anyhow::Result<Setup> {
     setup_meshed(scene, mesh(scene)?)
@@ -309,6 +393,7 @@ pub fn setup_meshed(scene: &Scene, meshed: Meshed) -> anyhow::Result<Setup> {
         support_gather: Gather::default(),
         far_field: None,
         far_gather: Gather::default(),
+        quiet: None,
         mixed,
         materials: Materials {
             zone: zone_laws.laws,
@@ -332,6 +417,7 @@ pub fn setup_meshed(scene: &Scene, meshed: Meshed) -> anyhow::Result<Setup> {
         Some(f) => Gather::from_slots(model.nodes.len(), &f.nodes),
         None => Gather::from_slots(model.nodes.len(), &[]),
     };
+    let stage_quiet = stage_quiet(scene, &boundary, &model)?;
     let m = &model.materials;
     let plan = Plan::of(
         scene,
@@ -356,6 +442,7 @@ pub fn setup_meshed(scene: &Scene, meshed: Meshed) -> anyhow::Result<Setup> {
             stage_regions,
             initial_boundary: initial,
             stage_boundary,
+            stage_quiet,
         },
     )?;
     install_from_start(&mut model.supports, &plan, &model.nodes.disp);

@@ -56,6 +56,8 @@ pub struct StagePlan {
     pub joint_materials: Vec<(u32, Box<dyn JointLaw>)>,
     /// The fixities and loads of the boundary conditions from this stage on (`None`: unchanged).
     pub boundary: Option<BoundaryEffect>,
+    /// The quiet boundary of the conditions in force during this stage, if they have one.
+    pub quiet: Option<crate::dynamics::QuietBoundary>,
     /// Bolt groups and liners installed, after the excavations.
     pub install: Vec<SupportId>,
     /// Fraction of the in-situ traction left on the walls of every excavation made so far.
@@ -101,6 +103,8 @@ pub(super) struct Resolved<'a> {
     pub(crate) initial_boundary: BoundaryEffect,
     /// Those of each stage's `boundary`, if it has one.
     pub(crate) stage_boundary: Vec<Option<BoundaryEffect>>,
+    /// The quiet boundary in force during each stage, if any.
+    pub(crate) stage_quiet: Vec<Option<crate::dynamics::QuietBoundary>>,
 }
 
 impl Plan {
@@ -125,6 +129,7 @@ impl Plan {
         let stages = if staged { &scene.stages[..] } else { &single };
         let mut plans = Vec::with_capacity(stages.len());
         let mut stage_boundary = r.stage_boundary.into_iter();
+        let mut stage_quiet = r.stage_quiet.into_iter();
         for (i, st) in stages.iter().enumerate() {
             let p = format!("stages[{i}]");
             plans.push(StagePlan {
@@ -153,6 +158,7 @@ impl Plan {
                     })
                     .collect::<anyhow::Result<_>>()?,
                 boundary: stage_boundary.next().flatten(),
+                quiet: stage_quiet.next().flatten(),
                 install: st
                     .install
                     .iter()

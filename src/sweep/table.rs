@@ -58,7 +58,7 @@ pub fn write_table(out: &Path, rows: &[Row]) -> anyhow::Result<Vec<String>> {
     })?;
     let ok: Vec<&Row> = rows
         .iter()
-        .filter(|r| r.status == "converged" || r.status == "cycle_limit")
+        .filter(|r| matches!(r.status.as_str(), "converged" | "completed" | "cycle_limit"))
         .collect();
     let mut figures: Vec<(String, Vec<f64>)> = excavations
         .iter()

@@ -486,3 +486,97 @@ fn a_flipped_in_situ_sign_and_a_friction_in_radians_are_warned() {
     let supports = "warning: stages: none, so the 2 bolt group(s) and liner(s) act from the start";
     assert!(warned.contains(supports), "{warned}");
 }
+
+/// A quiet part in force during a static stage, fixed too, or a point's; an incident wave
+/// without a quiet part, or without its velocity, or with a table and a pulse; a duration of a
+/// static solve or not positive: refused naming the field, before any solve.
+#[test]
+fn quiet_boundaries_and_waves_out_of_place_are_refused() {
+    let column = |base: Value, solve: Value| {
+        json!({
+            "name": "column",
+            "materials": { "rock": { "density": 2500, "young": 1e10, "poisson": 0.25 } },
+            "region": { "polygon": [[0, 0], [2, 0], [2, 10], [0, 10]],
+                        "edge_names": ["base", "right", "top", "left"], "material": "rock" },
+            "zoning": { "edge_at_excavation": 1, "edge_far": 1 },
+            "boundary": [base, { "part": "left", "fix": "x" }, { "part": "right", "fix": "x" }],
+            "solve": solve
+        })
+    };
+    let dynamic = json!({ "mode": "dynamic", "duration": 0.1, "damping": 0 });
+    let wave = json!({ "wave": "p", "velocity": 1, "pulse": "ricker", "frequency": 20 });
+    let err = refused(
+        &column(json!({ "part": "base", "quiet": true }), json!({})),
+        "boundary[0].quiet",
+    );
+    assert!(err.contains("dynamic"), "{err}");
+    let mut staged = column(json!({ "part": "base", "fix": "xy" }), json!({}));
+    staged["stages"] = json!([
+        { "name": "settle" },
+        { "name": "shake", "boundary": [{ "part": "base", "quiet": true }], "solve": dynamic.clone() },
+        { "name": "static again", "solve": { "mode": "static" } }
+    ]);
+    let err = refused(&staged, "stages[1].boundary[0].quiet");
+    assert!(
+        err.contains("stages[2] ('static again') is static"),
+        "{err}"
+    );
+    refused(
+        &column(
+            json!({ "part": "base", "quiet": true, "fix": "y" }),
+            dynamic.clone(),
+        ),
+        "boundary[0].fix",
+    );
+    refused(
+        &column(json!({ "at": [1, 0], "quiet": true }), dynamic.clone()),
+        "boundary[0].quiet",
+    );
+    refused(
+        &column(
+            json!({ "part": "base", "fix": "xy", "incident": wave }),
+            dynamic.clone(),
+        ),
+        "boundary[0].incident",
+    );
+    let mut slow = wave.clone();
+    slow.as_object_mut().unwrap().remove("velocity");
+    refused(
+        &column(
+            json!({ "part": "base", "quiet": true, "incident": slow }),
+            dynamic.clone(),
+        ),
+        "boundary[0].incident.velocity",
+    );
+    let mut both = wave.clone();
+    both["table"] = json!([[0, 0], [0.01, 1]]);
+    refused(
+        &column(
+            json!({ "part": "base", "quiet": true, "incident": both }),
+            dynamic.clone(),
+        ),
+        "boundary[0].incident",
+    );
+    let backwards = json!({ "wave": "s", "table": [[0, 0], [0.02, 1], [0.01, 0]] });
+    refused(
+        &column(
+            json!({ "part": "base", "quiet": true, "incident": backwards }),
+            dynamic.clone(),
+        ),
+        "boundary[0].incident.table[2]",
+    );
+    refused(
+        &column(
+            json!({ "part": "base", "fix": "xy" }),
+            json!({ "duration": 1 }),
+        ),
+        "solve.duration",
+    );
+    refused(
+        &column(
+            json!({ "part": "base", "fix": "xy" }),
+            json!({ "mode": "dynamic", "duration": 0 }),
+        ),
+        "solve.duration",
+    );
+}

@@ -328,7 +328,8 @@ fn the_tunnel_branched_after_its_excavation_writes_the_files_of_its_whole_run() 
     let e = format!("{e:#}");
     assert!(
         e.contains(
-            "first at stages[1].support_fraction (the checkpoint's `support_fraction: 0.25,`"
+            "first at stages[1].support_fraction (the checkpoint's `support_fraction: 0.25`, \
+             the scene's `support_fraction: 0.3`)"
         ),
         "{e}"
     );

@@ -28,6 +28,7 @@ pub mod patch;
 pub mod peer;
 pub mod plot;
 pub mod pullout;
+pub mod quiet;
 pub mod random_scenes;
 pub mod rayleigh;
 pub mod readme;

@@ -24,6 +24,7 @@ mod modes;
 mod patch;
 mod plastic_zoning;
 mod pullout;
+mod quiet;
 mod random_scenes;
 mod recovery;
 mod rotation;
@@ -85,5 +86,6 @@ pub fn all() -> Vec<Box<dyn Case>> {
         Box::new(strength_reduction::StrengthReduction),
         Box::new(slope::Slope),
         Box::new(slope_hb::SlopeHoekBrown),
+        Box::new(quiet::Quiet),
     ]
 }

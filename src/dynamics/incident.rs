@@ -1,0 +1,170 @@
+//! The particle-velocity history v(t) (m/s, t in s from the start of the dynamic stage) of a
+//! plane wave entering through a quiet boundary (`boundary[i].incident`):
+//!
+//! - Ricker wavelet: v = A (1 − 2π²f²τ²) exp(−π²f²τ²), τ = t − t₀ (its peak A at t₀; default
+//!   t₀ = 1.2/f, where the wavelet has risen from 2e-5 A);
+//! - half sine: v = A sin(2πf τ) for 0 ≤ τ ≤ 1/(2f), τ = t − t₀ (a pulse of duration 1/(2f));
+//! - sine: v = A sin(2πf τ) for 0 ≤ τ ≤ n/f (n cycles; unending without `cycles`);
+//! - a table of (t, v), linear between its points and 0 outside them.
+
+use crate::scene::{IncidentSpec, PulseKind};
+
+/// Default delay of a Ricker wavelet's peak, in periods 1/f.
+pub const RICKER_DELAY_PERIODS: f64 = 1.2;
+
+/// A velocity history.
+#[derive(Debug, Clone, PartialEq)]
+pub enum History {
+    Ricker {
+        peak: f64,
+        frequency: f64,
+        delay: f64,
+    },
+    HalfSine {
+        peak: f64,
+        frequency: f64,
+        delay: f64,
+    },
+    Sine {
+        peak: f64,
+        frequency: f64,
+        delay: f64,
+        cycles: f64,
+    },
+    Table(Vec<[f64; 2]>),
+}
+
+impl History {
+    /// The history a scene's `incident` gives (validated: a pulse with its velocity and
+    /// frequency, or a table).
+    pub fn of(spec: &IncidentSpec) -> History {
+        if let Some(table) = &spec.table {
+            return History::Table(table.clone());
+        }
+        let (peak, frequency) = (spec.velocity.unwrap_or(0.0), spec.frequency.unwrap_or(1.0));
+        match spec.pulse.unwrap_or(PulseKind::Ricker) {
+            PulseKind::Ricker => History::Ricker {
+                peak,
+                frequency,
+                delay: spec.delay.unwrap_or(RICKER_DELAY_PERIODS / frequency),
+            },
+            PulseKind::HalfSine => History::HalfSine {
+                peak,
+                frequency,
+                delay: spec.delay.unwrap_or(0.0),
+            },
+            PulseKind::Sine => History::Sine {
+                peak,
+                frequency,
+                delay: spec.delay.unwrap_or(0.0),
+                cycles: spec.cycles.unwrap_or(f64::INFINITY),
+            },
+        }
+    }
+
+    /// v(t), m/s.
+    pub fn at(&self, t: f64) -> f64 {
+        use std::f64::consts::{PI, TAU};
+        match *self {
+            History::Ricker {
+                peak,
+                frequency,
+                delay,
+            } => {
+                let a = (PI * frequency * (t - delay)).powi(2);
+                peak * (1.0 - 2.0 * a) * (-a).exp()
+            }
+            History::HalfSine {
+                peak,
+                frequency,
+                delay,
+            } => {
+                let tau = t - delay;
+                if (0.0..=0.5 / frequency).contains(&tau) {
+                    peak * (TAU * frequency * tau).sin()
+                } else {
+                    0.0
+                }
+            }
+            History::Sine {
+                peak,
+                frequency,
+                delay,
+                cycles,
+            } => {
+                let tau = t - delay;
+                if tau >= 0.0 && tau * frequency <= cycles {
+                    peak * (TAU * frequency * tau).sin()
+                } else {
+                    0.0
+                }
+            }
+            History::Table(ref points) => table_at(points, t),
+        }
+    }
+}
+
+/// A table's value at `t`: linear between its points (times increasing), 0 outside them.
+fn table_at(points: &[[f64; 2]], t: f64) -> f64 {
+    let k = points.partition_point(|p| p[0] <= t);
+    if k == 0 || k == points.len() {
+        return if k == points.len() && points.last().is_some_and(|p| p[0] == t) {
+            points[k - 1][1]
+        } else {
+            0.0
+        };
+    }
+    let ([t0, v0], [t1, v1]) = (points[k - 1], points[k]);
+    v0 + (v1 - v0) * (t - t0) / (t1 - t0)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The Ricker wavelet peaks at its delay with its amplitude, crosses zero at τ = ±1/(π f √2)
+    /// and has risen from 2e-5 of it at t = 0 by default.
+    #[test]
+    fn a_ricker_wavelet_peaks_at_its_delay() {
+        let r = History::Ricker {
+            peak: 0.5,
+            frequency: 20.0,
+            delay: 1.2 / 20.0,
+        };
+        assert_eq!(r.at(0.06), 0.5);
+        let zero = 1.0 / (std::f64::consts::PI * 20.0 * 2f64.sqrt());
+        assert!(r.at(0.06 + zero).abs() < 1e-15 && r.at(0.06 - zero).abs() < 1e-15);
+        assert!(r.at(0.0).abs() < 2e-5 * 0.5, "{}", r.at(0.0));
+    }
+
+    /// The half sine lasts half a period; the sine its cycles; a table interpolates and is 0
+    /// beyond its ends.
+    #[test]
+    fn pulses_and_tables_start_and_stop() {
+        let h = History::HalfSine {
+            peak: 2.0,
+            frequency: 10.0,
+            delay: 0.01,
+        };
+        assert_eq!(h.at(0.005), 0.0);
+        assert!((h.at(0.035) - 2.0).abs() < 1e-12);
+        assert_eq!(h.at(0.0601), 0.0);
+        let s = History::Sine {
+            peak: 1.0,
+            frequency: 5.0,
+            delay: 0.0,
+            cycles: 2.0,
+        };
+        assert!((s.at(0.05) - 1.0).abs() < 1e-12 && s.at(0.41) == 0.0);
+        let t = History::Table(vec![[0.1, 0.0], [0.2, 1.0], [0.4, -1.0]]);
+        for (at, v) in [
+            (0.05, 0.0),
+            (0.15, 0.5),
+            (0.3, 0.0),
+            (0.4, -1.0),
+            (0.5, 0.0),
+        ] {
+            assert!((t.at(at) - v).abs() < 1e-15, "{at}: {}", t.at(at));
+        }
+    }
+}

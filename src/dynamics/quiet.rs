@@ -1,0 +1,214 @@
+//! Quiet (viscous) boundary (Lysmer & Kuhlemeyer 1969, "Finite dynamic model for infinite
+//! media", J. Eng. Mech. Div. ASCE 95(EM4); UDEC's and FLAC's viscous boundary). Each edge of a
+//! quiet part, of length L and outward normal n, carries dashpots of ρCp per unit length normal
+//! to it and ρCs along it, Cp = √((K + 4G/3)/ρ) and Cs = √(G/ρ) of the zone beside it (plane
+//! strain), half to each of its nodes, so that a node's dashpots sum to the matrix
+//!
+//!   C = Σ_edges (L/2) (ρCp n nᵀ + ρCs t tᵀ),   N·s/m per metre of tunnel.
+//!
+//! The force on the node is C (2 vᵢ(t) d − v): the dashpots' −C v, and an incident plane wave of
+//! particle velocity vᵢ(t) along d (the inward normal −n for a P wave, the tangent
+//! t = (−n_y, n_x) for an S wave) brought in as the stress 2ρC vᵢ, which the dashpot turns into
+//! the wave vᵢ going in while it absorbs what comes out. A plane wave meeting the boundary
+//! normally leaves it whole; at other angles a fraction is reflected (Lysmer & Kuhlemeyer's
+//! plane-wave analysis).
+//!
+//! Integrated centred in time with the motion stage's central difference,
+//! m (v⁺ − v⁻)/Δt = F + C (2vᵢ d − (v⁺ + v⁻)/2), that is
+//!
+//!   (m/Δt I + C/2) v⁺ = (m/Δt) v* − (C/2) v⁻ + 2C vᵢ d,   v* = v⁻ + F Δt/m,
+//!
+//! v* being the motion stage's update without the dashpots (`QuietBoundary::absorb` corrects it
+//! and the displacement by (v⁺ − v*) Δt): stable for any C, where the dashpot taken at v⁻ alone
+//! is stable only for C Δt/m < 2. A fixed component keeps its velocity.
+
+use crate::scene::{IncidentSpec, WaveKind};
+
+use super::History;
+
+/// The dashpots and incident waves of the quiet parts of one list of boundary conditions.
+#[derive(Debug, Clone)]
+pub struct QuietBoundary {
+    /// Nodes of the quiet parts, each once, ascending.
+    pub nodes: Vec<u32>,
+    /// Each node's dashpot matrix C as [Cxx, Cxy, Cyy], N·s/m per m.
+    dashpot: Vec<[f64; 3]>,
+    /// The incident waves.
+    incident: Vec<Wave>,
+    /// Each node's velocity before the motion stage, m/s (scratch).
+    before: Vec<[f64; 2]>,
+    /// Each node's incident-wave force this step, N/m (scratch).
+    driving: Vec<[f64; 2]>,
+}
+
+/// An incident wave: its history, with the force per unit velocity it puts on each node it
+/// reaches, 2 Σ (L/2) ρC d (index into `QuietBoundary::nodes`; N·s/m per m).
+#[derive(Debug, Clone)]
+struct Wave {
+    history: History,
+    gains: Vec<(u32, [f64; 2])>,
+}
+
+/// One edge of a quiet part, as the model's set-up finds it.
+#[derive(Debug, Clone, Copy)]
+pub struct QuietEdge {
+    /// Its nodes.
+    pub nodes: [u32; 2],
+    /// Its length, m, and unit outward normal.
+    pub length: f64,
+    pub normal: [f64; 2],
+    /// The impedances ρCp and ρCs of the zone beside it, Pa·s/m.
+    pub impedance: [f64; 2],
+    /// The quiet condition it belongs to (its index in its list).
+    pub condition: usize,
+}
+
+impl QuietEdge {
+    /// Its share at each node: the matrix (L/2)(ρCp n nᵀ + ρCs t tᵀ) as [Cxx, Cxy, Cyy].
+    fn matrix(&self) -> [f64; 3] {
+        let ([nx, ny], half) = (self.normal, 0.5 * self.length);
+        let (a, b) = (half * self.impedance[0], half * self.impedance[1]);
+        [
+            a * nx * nx + b * ny * ny,
+            (a - b) * nx * ny,
+            a * ny * ny + b * nx * nx,
+        ]
+    }
+
+    /// The incident wave's force on each of its nodes per unit particle velocity, twice its
+    /// dashpot there along d: 2 (L/2) ρC d, N·s/m per m.
+    fn incident(&self, wave: WaveKind) -> [f64; 2] {
+        let ([nx, ny], l) = (self.normal, self.length);
+        let (p, s) = (l * self.impedance[0], l * self.impedance[1]);
+        match wave {
+            WaveKind::P => [-p * nx, -p * ny],
+            WaveKind::S => [-s * ny, s * nx],
+        }
+    }
+}
+
+impl QuietBoundary {
+    /// The dashpots of `edges`, and the waves `incident` brings in through the edges of the
+    /// quiet condition each names (its index in its list).
+    pub fn new(edges: &[QuietEdge], incident: &[(usize, &IncidentSpec)]) -> QuietBoundary {
+        let mut nodes: Vec<u32> = edges.iter().flat_map(|e| e.nodes).collect();
+        nodes.sort_unstable();
+        nodes.dedup();
+        let index = |n: u32| nodes.binary_search(&n).expect("a quiet node") as u32;
+        let mut dashpot = vec![[0.0; 3]; nodes.len()];
+        for e in edges {
+            let m = e.matrix();
+            for n in e.nodes {
+                let c = &mut dashpot[index(n) as usize];
+                (0..3).for_each(|i| c[i] += m[i]);
+            }
+        }
+        let incident = (incident.iter())
+            .map(|&(k, spec)| {
+                let mut gains: Vec<(u32, [f64; 2])> = Vec::new();
+                for e in edges.iter().filter(|e| e.condition == k) {
+                    let f = e.incident(spec.wave);
+                    for n in e.nodes {
+                        let i = index(n);
+                        match gains.iter_mut().find(|g| g.0 == i) {
+                            Some(g) => (0..2).for_each(|d| g.1[d] += f[d]),
+                            None => gains.push((i, f)),
+                        }
+                    }
+                }
+                Wave {
+                    history: History::of(spec),
+                    gains,
+                }
+            })
+            .collect();
+        let before = vec![[0.0; 2]; nodes.len()];
+        let driving = before.clone();
+        QuietBoundary {
+            nodes,
+            dashpot,
+            incident,
+            before,
+            driving,
+        }
+    }
+
+    /// Before the motion stage: keep each quiet node's velocity v⁻.
+    pub(crate) fn remember(&mut self, vel: &[[f64; 2]]) {
+        for (b, &n) in self.before.iter_mut().zip(&self.nodes) {
+            *b = vel[n as usize];
+        }
+    }
+
+    /// After the motion stage: each quiet node's velocity v⁺ from the centred update (module
+    /// doc) at time `time` (s since the stage began, the time the step's forces act at), its
+    /// displacement corrected alike, and the dashpot and incident forces added to its recorded
+    /// force. Nothing at a zero step.
+    pub(crate) fn absorb<F: Fn(u32) -> [bool; 2]>(&mut self, nodes: Moving<F>, dt: f64, time: f64) {
+        let Moving {
+            mass,
+            vel,
+            disp,
+            force,
+            free,
+        } = nodes;
+        if dt <= 0.0 {
+            return;
+        }
+        let driving = &mut self.driving;
+        driving.fill([0.0; 2]);
+        for wave in &self.incident {
+            let v = wave.history.at(time);
+            for &(i, g) in &wave.gains {
+                driving[i as usize][0] += v * g[0];
+                driving[i as usize][1] += v * g[1];
+            }
+        }
+        for (i, &n) in self.nodes.iter().enumerate() {
+            let free = free(n);
+            let n = n as usize;
+            let (m, c, before) = (mass[n] / dt, self.dashpot[i], self.before[i]);
+            let star = vel[n];
+            // Right-hand side (m/Δt) v* − (C/2) v⁻ + 2C vᵢ d, and the matrix m/Δt I + C/2.
+            let cv = [
+                c[0] * before[0] + c[1] * before[1],
+                c[1] * before[0] + c[2] * before[1],
+            ];
+            let rhs = [
+                m * star[0] - 0.5 * cv[0] + driving[i][0],
+                m * star[1] - 0.5 * cv[1] + driving[i][1],
+            ];
+            let (a, b, d) = (m + 0.5 * c[0], 0.5 * c[1], m + 0.5 * c[2]);
+            let after = match free {
+                [true, true] => {
+                    let det = a * d - b * b;
+                    [
+                        (d * rhs[0] - b * rhs[1]) / det,
+                        (a * rhs[1] - b * rhs[0]) / det,
+                    ]
+                }
+                [true, false] => [(rhs[0] - b * star[1]) / a, star[1]],
+                [false, true] => [star[0], (rhs[1] - b * star[0]) / d],
+                [false, false] => star,
+            };
+            for k in 0..2 {
+                disp[n][k] += (after[k] - star[k]) * dt;
+                if free[k] {
+                    force[n][k] += m * (after[k] - star[k]);
+                }
+            }
+            vel[n] = after;
+        }
+    }
+}
+
+/// The nodes' state the quiet boundary reads and corrects after the motion stage: masses (kg/m),
+/// velocities (m/s), displacements (m), recorded forces (N/m), and which components of a node are
+/// free (not fixed).
+pub(crate) struct Moving<'a, F: Fn(u32) -> [bool; 2]> {
+    pub mass: &'a [f64],
+    pub vel: &'a mut [[f64; 2]],
+    pub disp: &'a mut [[f64; 2]],
+    pub force: &'a mut [[f64; 2]],
+    pub free: F,
+}
