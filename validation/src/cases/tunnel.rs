@@ -292,6 +292,11 @@ impl Case for Tunnel {
         bare_scene.stages.iter_mut().for_each(|s| s.install.clear());
         bare_scene.bolts.clear();
         bare_scene.liners.clear();
+        // Its monitoring points of supports have nothing to read (a run refuses them).
+        bare_scene.histories.retain(|h| {
+            use adit::scene::HistoryQuantity::{BoltForce, LinerMoment, LinerThrust};
+            !matches!(h.quantity, BoltForce | LinerThrust | LinerMoment)
+        });
         let bare = adit::run_scene(
             &bare_scene,
             &root.join("target/validation/tunnel_unsupported"),
