@@ -107,23 +107,8 @@ impl Column {
     /// Run it and measure the top's velocity.
     pub fn run(&self) -> anyhow::Result<Measured> {
         let start = Instant::now();
-        let scene = self.scene();
-        let out = std::env::temp_dir().join(format!(
-            "adit-validation-{}-{}",
-            scene.name,
-            std::process::id()
-        ));
-        let r = adit::run_scene(&scene, &out, &mut adit::solve::Quiet);
-        let history = std::fs::read_to_string(out.join("histories.csv"));
-        let _ = std::fs::remove_dir_all(&out);
-        let r = r?;
-        anyhow::ensure!(
-            r.summary.status == "completed",
-            "{}: {}",
-            self.name(),
-            r.summary.status
-        );
-        let samples = top_velocity(&history?)?;
+        let (r, history) = run_to_completion(&self.scene())?;
+        let samples = top_velocity(&history)?;
         let transit = self.height / self.speed();
         let peak_in = |centre: f64| {
             (samples.iter())
@@ -147,6 +132,27 @@ impl Column {
             echo,
         })
     }
+}
+
+/// Run `scene` in a scratch folder: its result and its `histories.csv`; an error unless its
+/// last stage ran its duration (`completed`).
+fn run_to_completion(scene: &adit::Scene) -> anyhow::Result<(adit::RunResult, String)> {
+    let out = std::env::temp_dir().join(format!(
+        "adit-validation-{}-{}",
+        scene.name,
+        std::process::id()
+    ));
+    let r = adit::run_scene(scene, &out, &mut adit::solve::Quiet);
+    let history = std::fs::read_to_string(out.join("histories.csv"));
+    let _ = std::fs::remove_dir_all(&out);
+    let r = r?;
+    anyhow::ensure!(
+        r.summary.status == "completed",
+        "{}: {}",
+        scene.name,
+        r.summary.status
+    );
+    Ok((r, history?))
 }
 
 /// (time s, velocity m/s) of the `top` history of a `histories.csv`.
@@ -202,19 +208,9 @@ pub fn at_rest(zone: f64, duration: f64) -> anyhow::Result<(CaseReport, f64)> {
         "output": { "checkpoints": false, "every": 0 }
     });
     let scene = adit::Scene::from_json(&text.to_string(), "at rest").expect("a valid column");
-    let out =
-        std::env::temp_dir().join(format!("adit-validation-quiet-rest-{}", std::process::id()));
-    let r = adit::run_scene(&scene, &out, &mut adit::solve::Quiet);
-    let history = std::fs::read_to_string(out.join("histories.csv"));
-    let _ = std::fs::remove_dir_all(&out);
-    let r = r?;
-    anyhow::ensure!(
-        r.summary.status == "completed",
-        "at rest: {}",
-        r.summary.status
-    );
+    let (r, history) = run_to_completion(&scene)?;
     let gravity_cycles = r.summary.stages[0].cycles;
-    let largest = (history?.lines().skip(1))
+    let largest = (history.lines().skip(1))
         .filter(|l| l.split(',').next().and_then(|c| c.parse::<u64>().ok()) > Some(gravity_cycles))
         .flat_map(|l| {
             l.split(',')
