@@ -253,6 +253,13 @@ fn implicit_contacts_and_what_it_refuses() {
         );
         Scene::from_json(&t, "two_blocks").unwrap()
     };
+    // A folder of its own: a child process that another test forks while the run above holds
+    // its folder's lock shares that lock until it execs, so a second run in the same folder at
+    // once can find it held.
+    let out = std::env::temp_dir().join(format!(
+        "adit-test-implicit-refused-cy-{}",
+        std::process::id()
+    ));
     let msg = adit::run_scene(&yielding("implicit"), &out, &mut Quiet)
         .err()
         .unwrap()
