@@ -24,6 +24,7 @@ pub mod kirsch;
 pub mod kirsch_case;
 pub mod lined;
 pub mod modes;
+pub mod oblique;
 pub mod patch;
 pub mod peer;
 pub mod plot;
