@@ -20,6 +20,7 @@ pub mod impact;
 pub mod incline;
 pub mod inclusion;
 pub mod incompressible;
+pub mod joint_waves;
 pub mod kirsch;
 pub mod kirsch_case;
 pub mod lined;

@@ -14,7 +14,7 @@ use adit::scene::WaveKind;
 use crate::report::CaseReport;
 
 /// The rock: E 10 GPa, ν 0.25, ρ 2 500 kg/m³ (Cp = 2 190.9 m/s, Cs = 1 264.9 m/s).
-const ROCK: (f64, f64, f64) = (10e9, 0.25, 2500.0);
+pub(crate) const ROCK: (f64, f64, f64) = (10e9, 0.25, 2500.0);
 /// Peak particle velocity of the incident wavelet, m/s.
 pub const PEAK: f64 = 1.0;
 /// The Ricker wavelet's peak frequency, Hz.
@@ -45,13 +45,7 @@ pub struct Measured {
 impl Column {
     /// The wave speed C, m/s.
     pub fn speed(&self) -> f64 {
-        let (e, nu, rho) = ROCK;
-        let g = e / (2.0 * (1.0 + nu));
-        let k = e / (3.0 * (1.0 - 2.0 * nu));
-        match self.wave {
-            WaveKind::P => ((k + 4.0 * g / 3.0) / rho).sqrt(),
-            WaveKind::S => (g / rho).sqrt(),
-        }
+        wave_speed(self.wave)
     }
 
     fn name(&self) -> String {
@@ -107,8 +101,8 @@ impl Column {
     /// Run it and measure the top's velocity.
     pub fn run(&self) -> anyhow::Result<Measured> {
         let start = Instant::now();
-        let (r, history) = run_to_completion(&self.scene())?;
-        let samples = top_velocity(&history)?;
+        let (r, csv) = run_to_completion(&self.scene())?;
+        let samples = history(&csv, "top")?;
         let transit = self.height / self.speed();
         let peak_in = |centre: f64| {
             (samples.iter())
@@ -134,9 +128,20 @@ impl Column {
     }
 }
 
+/// The speed of a `wave` in `ROCK`, m/s: Cp = √((K + 4G/3)/ρ), Cs = √(G/ρ).
+pub(crate) fn wave_speed(wave: WaveKind) -> f64 {
+    let (e, nu, rho) = ROCK;
+    let g = e / (2.0 * (1.0 + nu));
+    let k = e / (3.0 * (1.0 - 2.0 * nu));
+    match wave {
+        WaveKind::P => ((k + 4.0 * g / 3.0) / rho).sqrt(),
+        WaveKind::S => (g / rho).sqrt(),
+    }
+}
+
 /// Run `scene` in a scratch folder: its result and its `histories.csv`; an error unless its
 /// last stage ran its duration (`completed`).
-fn run_to_completion(scene: &adit::Scene) -> anyhow::Result<(adit::RunResult, String)> {
+pub(crate) fn run_to_completion(scene: &adit::Scene) -> anyhow::Result<(adit::RunResult, String)> {
     let out = std::env::temp_dir().join(format!(
         "adit-validation-{}-{}",
         scene.name,
@@ -155,13 +160,13 @@ fn run_to_completion(scene: &adit::Scene) -> anyhow::Result<(adit::RunResult, St
     Ok((r, history?))
 }
 
-/// (time s, velocity m/s) of the `top` history of a `histories.csv`.
-fn top_velocity(csv: &str) -> anyhow::Result<Vec<(f64, f64)>> {
+/// (time s, value) of the history `name` of a `histories.csv`.
+pub(crate) fn history(csv: &str, name: &str) -> anyhow::Result<Vec<(f64, f64)>> {
     let mut lines = csv.lines();
     let header: Vec<&str> = lines.next().unwrap_or_default().split(',').collect();
     let column = (header.iter())
-        .position(|h| h.starts_with("top:"))
-        .ok_or_else(|| anyhow::anyhow!("histories.csv has no top column"))?;
+        .position(|h| h.starts_with(&format!("{name}:")))
+        .ok_or_else(|| anyhow::anyhow!("histories.csv has no {name} column"))?;
     lines
         .map(|l| {
             let f: Vec<&str> = l.split(',').collect();

@@ -18,6 +18,7 @@ mod implicit;
 mod incline;
 mod inclusion;
 mod incompressible;
+mod joint_waves;
 mod kirsch;
 mod lined;
 mod modes;
@@ -87,5 +88,6 @@ pub fn all() -> Vec<Box<dyn Case>> {
         Box::new(slope::Slope),
         Box::new(slope_hb::SlopeHoekBrown),
         Box::new(quiet::Quiet),
+        Box::new(joint_waves::JointWaves),
     ]
 }

@@ -1,0 +1,94 @@
+//! Waves across elastic joints (issue 50): a broadband P or S pulse across one joint against
+//! Schoenberg's transmission, and a P pulse across stacks of 2, 3 and 5 joints against the
+//! transfer-matrix answer.
+
+use std::fmt::Write as _;
+
+use adit::scene::WaveKind;
+
+use crate::case::{Case, Context, Section, print_row, table};
+use crate::joint_waves::Stack;
+
+/// Bars (issue 50): |T| within 3 % over the pulse's band, the group delay within 5 %.
+const AMPLITUDE_BAR: f64 = 0.03;
+const DELAY_BAR: f64 = 0.05;
+/// The joints' spacing in a stack, m.
+const SPACING: f64 = 10.0;
+
+pub struct JointWaves;
+
+impl Case for JointWaves {
+    fn name(&self) -> &'static str {
+        "joint_waves"
+    }
+
+    fn run(&self, _cx: &Context) -> anyhow::Result<Section> {
+        let (mut rows, mut missed) = (Vec::new(), Vec::new());
+        let cases = [
+            (WaveKind::P, 1),
+            (WaveKind::S, 1),
+            (WaveKind::P, 2),
+            (WaveKind::P, 3),
+            (WaveKind::P, 5),
+        ];
+        for zone in [1.0, 0.5] {
+            for (wave, joints) in cases {
+                let stack = Stack {
+                    wave,
+                    joints,
+                    spacing: SPACING,
+                    stiffness: Stack::matched(wave, if joints == 1 { 1.0 } else { 0.5 }),
+                    zone,
+                };
+                let m = stack.run()?;
+                print_row(&m.report);
+                if zone < 1.0 && (m.amplitude > AMPLITUDE_BAR || m.delay > DELAY_BAR) {
+                    missed.push(format!("{}: {:?}", m.report.case, m.report.errors));
+                }
+                rows.push(m.report);
+            }
+        }
+        let mut md = String::new();
+        let _ = writeln!(md, "\n## Waves across elastic joints (issue 50)\n");
+        let _ = writeln!(
+            md,
+            "A column 2 m wide of elastic rock (E 10 GPa, ν 0.25, ρ 2 500 kg/m³), its sides on \
+             rollers, its base and top quiet, cut across by glued joints (elastic springs kn = ks \
+             = κ per unit area that neither slip nor open) {SPACING} m apart; a Ricker pulse \
+             (peak particle velocity 0.1 m/s at 50 Hz) enters through the base. One joint has \
+             κ = πfZ (Z = ρC: ωZ/2κ = 1 at the peak frequency; 8.60e8 Pa/m for P, 4.97e8 Pa/m \
+             for S), a stack twice that (at πfZ five joints pass under 1 % of the wave at the \
+             band's top, below what the records resolve). The velocity at a gauge 20 m above \
+             the last joint, over the same gauge's in the same column with joints 50 times \
+             stiffer (the same mesh: the ratio holds only what the joints change), is the \
+             measured transmission, its Fourier transforms taken on each record's own samples \
+             over the pulse and its ringing (then a half-cosine fall over one period). Against \
+             the displacement-discontinuity model (Schoenberg 1980; Pyrak-Nolte et al. 1990): \
+             one joint T = 1/(1 − iωZ/2κ), a stack by the transfer matrices of its joints and \
+             the rock between (`validation/src/joint_waves.rs`), both as the ratio T(κ)/T(50κ). \
+             `amplitude` is the largest relative error of |T| over the pulse's band (where its \
+             spectrum is above half its peak: 24–82 Hz), `delay` that of the group delay \
+             d arg T/dω (relative to the exact delay, or to a tenth of the band's largest where \
+             the exact one is smaller: a stack's delay passes through zero at the edges of its \
+             stop bands). The column is tall enough that nothing its quiet base and top send \
+             back reaches the gauge within the record. The group delay is the touchier measure: \
+             a spurious arrival of 1e-3 of the peak 30–50 ms behind the pulse (not yet traced) \
+             moves it by several per cent at the band's edges, where |T| does not notice. Bars \
+             (issue 50), on the 0.5 m zones: `amplitude` within {} %, `delay` within {} %: {}.\n",
+            100.0 * AMPLITUDE_BAR,
+            100.0 * DELAY_BAR,
+            if missed.is_empty() {
+                "met".to_string()
+            } else {
+                format!("missed by {}", missed.join("; "))
+            }
+        );
+        table(&mut md, &rows);
+        Ok(Section {
+            markdown: md,
+            rows,
+            missed,
+            ..Default::default()
+        })
+    }
+}
