@@ -104,6 +104,35 @@ impl History {
     }
 }
 
+impl History {
+    /// The highest frequency the history carries appreciably, Hz: a Ricker wavelet's amplitude
+    /// spectrum, ∝ (f/f₀)² exp(1 − (f/f₀)²), stays below 5 % of its peak above 2.4 f₀; a half
+    /// sine's main lobe ends at 3f (its first zero, the pulse lasting 1/(2f)); a sine is f; a
+    /// table resolves up to the Nyquist frequency of its closest points, 1/(2 Δt).
+    pub fn highest_frequency(&self) -> f64 {
+        match *self {
+            History::Ricker { frequency, .. } => RICKER_HIGHEST * frequency,
+            History::HalfSine { frequency, .. } => 3.0 * frequency,
+            History::Sine { frequency, .. } => frequency,
+            History::Table(ref points) => {
+                let closest = (points.windows(2))
+                    .map(|w| w[1][0] - w[0][0])
+                    .filter(|&d| d > 0.0)
+                    .fold(f64::INFINITY, f64::min);
+                if closest.is_finite() {
+                    0.5 / closest
+                } else {
+                    0.0
+                }
+            }
+        }
+    }
+}
+
+/// A Ricker wavelet's highest appreciable frequency over its peak frequency: its amplitude
+/// spectrum x e^(1 − x), x = (f/f₀)², is 5 % of its peak at x = 5.75.
+const RICKER_HIGHEST: f64 = 2.4;
+
 /// A table's value at `t`: linear between its points (times increasing), 0 outside them.
 fn table_at(points: &[[f64; 2]], t: f64) -> f64 {
     let k = points.partition_point(|p| p[0] <= t);

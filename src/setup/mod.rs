@@ -418,6 +418,13 @@ pub fn setup_meshed(scene: &Scene, meshed: Meshed) -> anyhow::Result<Setup> {
         None => Gather::from_slots(model.nodes.len(), &[]),
     };
     let stage_quiet = stage_quiet(scene, &boundary, &model)?;
+    let (zones, laws) = (&model.zones, &model.materials.zone);
+    warnings.extend(warnings::coarse_for_waves(
+        scene,
+        zones,
+        laws,
+        &model.nodes.pos,
+    ));
     let m = &model.materials;
     let plan = Plan::of(
         scene,

@@ -4,6 +4,9 @@
 //! than the scene accepts.
 
 use super::geometry::Meshed;
+use crate::dynamics::History;
+use crate::law::ZoneLaw;
+use crate::model::Zones;
 use crate::scene::{BlockMode, Scene};
 
 /// Most thin blocks named one by one in the warnings; the rest are counted.
@@ -221,6 +224,65 @@ pub(super) fn unbalanced_in_situ(scene: &Scene, rho: f64) -> Option<String> {
             "in_situ.gradient.syy = {gradient} Pa/m does not balance the region rock's weight \
              under gravity: equilibrium needs −ρ g_y = {balancing:.1} Pa/m (ρ = {rho} kg/m³, \
              g_y = {g} m/s²); the first solve moves the model under the difference"
+        )
+    })
+}
+
+/// Zones per shortest wavelength below which a wave is distorted (Kuhlemeyer & Lysmer 1973,
+/// "Finite element method accuracy for wave propagation problems", J. Soil Mech. Found. Div. ASCE
+/// 99(SM5): Δl ≤ λ/10 to λ/8, λ the wavelength of the highest frequency the wave carries).
+const ZONES_PER_WAVELENGTH: f64 = 8.0;
+
+/// A warning when the scene's incident waves carry frequencies whose shear wavelength, in the
+/// rock each zone is of, spans fewer than `ZONES_PER_WAVELENGTH` of that zone's longest edge
+/// (shear: the slowest wave, which a wave turns partly into wherever it meets a boundary or a
+/// joint), saying how many zones and by how much.
+pub(super) fn coarse_for_waves(
+    scene: &Scene,
+    zones: &Zones,
+    laws: &[Box<dyn ZoneLaw>],
+    pos: &[[f64; 2]],
+) -> Option<String> {
+    let lists = std::iter::once(&scene.boundary)
+        .chain(scene.stages.iter().filter_map(|s| s.boundary.as_ref()));
+    let highest = (lists.flatten())
+        .filter_map(|c| c.incident.as_ref())
+        .map(|w| History::of(w).highest_frequency())
+        .fold(0.0, f64::max);
+    if highest <= 0.0 {
+        return None;
+    }
+    let (mut coarse, mut worst) = (0usize, (0.0f64, 0.0f64));
+    for (z, tri) in zones.nodes.iter().enumerate() {
+        let law = &laws[zones.material[z].0 as usize];
+        let (shear, rho) = (law.moduli().1, law.density());
+        if shear <= 0.0 || rho <= 0.0 {
+            continue;
+        }
+        let wavelength = (shear / rho).sqrt() / highest;
+        let edge = (0..3)
+            .map(|k| {
+                let (a, b) = (pos[tri[k] as usize], pos[tri[(k + 1) % 3] as usize]);
+                (b[0] - a[0]).hypot(b[1] - a[1])
+            })
+            .fold(0.0, f64::max);
+        if edge * ZONES_PER_WAVELENGTH > wavelength {
+            coarse += 1;
+            if edge / wavelength > worst.0 / worst.1.max(f64::MIN_POSITIVE) {
+                worst = (edge, wavelength);
+            }
+        }
+    }
+    (coarse > 0).then(|| {
+        format!(
+            "the incident waves carry frequencies up to {highest:.1} Hz, whose shear wavelength \
+             spans fewer than {ZONES_PER_WAVELENGTH} zone edges in {coarse} of {} zones (at \
+             worst an edge of {:.3} m against a wavelength of {:.3} m): waves through them are \
+             distorted (Kuhlemeyer & Lysmer 1973: an edge at most a tenth to an eighth of the \
+             shortest wavelength); zone finer (zoning) or lower the frequency",
+            zones.len(),
+            worst.0,
+            worst.1
         )
     })
 }

@@ -78,3 +78,34 @@ fn a_step_three_times_past_the_limit_stops_with_the_node_named() {
         "{reason}"
     );
 }
+
+/// Kuhlemeyer & Lysmer's rule: a scene whose incident wave is too short for its zones is warned,
+/// naming the frequency; the same wave through zones ten times finer than its shortest shear
+/// wavelength is not.
+#[test]
+fn zones_too_coarse_for_the_incident_wave_are_warned() {
+    let scene = |frequency: f64| {
+        let text = serde_json::json!({
+            "name": "waves",
+            "materials": { "rock": { "density": 2500, "young": 10e9, "poisson": 0.25 } },
+            "region": { "polygon": [[0, 0], [4, 0], [4, 40], [0, 40]],
+                        "edge_names": ["base", "right", "top", "left"], "material": "rock" },
+            "zoning": { "edge_at_excavation": 1.0, "edge_far": 1.0 },
+            "boundary": [
+                { "part": "base", "quiet": true,
+                  "incident": { "wave": "s", "velocity": 0.1, "pulse": "ricker", "frequency": frequency } },
+                { "part": "left", "fix": "y" }, { "part": "right", "fix": "y" }
+            ],
+            "solve": { "mode": "dynamic", "duration": 0.01 }
+        });
+        Scene::from_json(&text.to_string(), "waves").unwrap()
+    };
+    let warned = |frequency: f64| {
+        (setup(&scene(frequency)).unwrap().warnings.iter())
+            .any(|w| w.contains("incident waves carry frequencies up to"))
+    };
+    // Cs = 1 265 m/s: at 40 Hz the Ricker's highest frequency is 96 Hz, its shear wavelength
+    // 13 m (13 zone edges of about 1 m); at 100 Hz, 5.3 m.
+    assert!(!warned(40.0));
+    assert!(warned(100.0));
+}
