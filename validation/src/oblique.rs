@@ -25,10 +25,9 @@ use adit::setup::setup;
 use adit::solve::{Quiet, Solver, Status};
 use adit::stage::Staging;
 
+use crate::quiet::{ROCK, wave_speed};
 use crate::report::CaseReport;
 
-/// The rock: E 10 GPa, ν 0.25, ρ 2 500 kg/m³.
-const ROCK: (f64, f64, f64) = (10e9, 0.25, 2500.0);
 /// Peak particle velocity of the pulse, m/s.
 const PEAK: f64 = 1.0;
 /// Half the Ricker pulse's duration that holds it (its amplitude below 1e-3 of the peak beyond,
@@ -39,15 +38,13 @@ const MARGIN: f64 = 0.1;
 /// The span of the base measured, in the pulse's peak S wavelengths.
 const SPAN: f64 = 4.0;
 
-/// The Lamé constants (λ, G), Pa, and the wave speeds (Cp, Cs), m/s, of `ROCK` (plane strain).
+/// The Lamé constants (λ, G) of `ROCK`, Pa, and its wave speeds (Cp, Cs), m/s (plane strain).
 fn rock() -> ((f64, f64), (f64, f64)) {
-    let (e, nu, rho) = ROCK;
+    let (e, nu, _) = ROCK;
     let g = e / (2.0 * (1.0 + nu));
     let lambda = e * nu / ((1.0 + nu) * (1.0 - 2.0 * nu));
-    (
-        (lambda, g),
-        (((lambda + 2.0 * g) / rho).sqrt(), (g / rho).sqrt()),
-    )
+    let speeds = (wave_speed(WaveKind::P), wave_speed(WaveKind::S));
+    ((lambda, g), speeds)
 }
 
 /// A plane wave's direction of travel d and polarization a (unit vectors) and its speed, m/s.
