@@ -42,7 +42,7 @@ impl Staging {
     /// names, set the support pressure of every excavation made so far to `support_fraction` × the
     /// in-situ traction on its walls, and reset displacements if asked. A quiet boundary in force
     /// in the stage holds, as constant loads, the forces the fixities it replaces exerted when the
-    /// stage began (`dynamics::held_reactions`).
+    /// stage began (`held_reactions`).
     pub fn apply(&mut self, stage: &StagePlan, model: &mut Model, plan: &Plan) {
         let held = stage.quiet.as_ref().map(|q| {
             let before: Vec<u8> = q
@@ -286,8 +286,6 @@ impl WallPoints {
     }
 }
 
-/// Give block `b` zone material `m`, keeping its stress, yield state and plastic strain; removed
-/// rock keeps its null law.
 /// The force each fixity of `nodes` exerts on the model as it is: the negative of the node's
 /// out-of-balance force, measured by the cycle's force stages with a zero step, N/m. Taken before
 /// a stage whose boundary turns quiet changes anything (the static boundary's reactions, which
@@ -325,6 +323,8 @@ fn hold_reactions(model: &mut Model, nodes: &[u32], before: &[u8], reactions: &[
     }
 }
 
+/// Give block `b` zone material `m`, keeping its stress, yield state and plastic strain; removed
+/// rock keeps its null law.
 fn set_block_material(model: &mut Model, b: usize, m: MaterialId) {
     if model.blocks.is_removed(b) {
         return;

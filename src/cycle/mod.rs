@@ -133,16 +133,6 @@ pub(crate) fn advance(
     }
 }
 
-/// The largest speed of the quiet boundary's nodes after their dashpots acted, m/s.
-fn quiet_speed(nodes: &Nodes, quiet: &[u32]) -> f64 {
-    (quiet.iter())
-        .map(|&n| {
-            let v = nodes.vel[n as usize];
-            v[0].hypot(v[1])
-        })
-        .fold(0.0, f64::max)
-}
-
 /// Seconds spent in each stage since the start of the run.
 #[derive(Debug, Clone, Copy, Default, PartialEq, serde::Serialize)]
 pub struct StageSeconds {
@@ -294,8 +284,7 @@ impl Cycle {
                     [f & FIX_X == 0, f & FIX_Y == 0]
                 },
             };
-            q.absorb(moving, p.dt, self.time);
-            speed = speed.max(quiet_speed(nodes, &q.nodes));
+            speed = speed.max(q.absorb(moving, p.dt, self.time));
         }
         self.time += p.dt;
         self.moved += speed * p.dt;

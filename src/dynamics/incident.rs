@@ -102,9 +102,7 @@ impl History {
             History::Table(ref points) => table_at(points, t),
         }
     }
-}
 
-impl History {
     /// The highest frequency the history carries appreciably, Hz: a Ricker wavelet's amplitude
     /// spectrum, ∝ (f/f₀)² exp(1 − (f/f₀)²), stays below 5 % of its peak above 2.4 f₀; a half
     /// sine's main lobe ends at 3f (its first zero, the pulse lasting 1/(2f)); a sine is f; a

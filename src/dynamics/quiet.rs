@@ -108,17 +108,17 @@ impl QuietBoundary {
         }
         let incident = (incident.iter())
             .map(|&(k, spec)| {
-                let mut gains: Vec<(u32, [f64; 2])> = Vec::new();
+                let mut gain = vec![None::<[f64; 2]>; nodes.len()];
                 for e in edges.iter().filter(|e| e.condition == k) {
                     let f = e.incident(spec.wave);
                     for n in e.nodes {
-                        let i = index(n);
-                        match gains.iter_mut().find(|g| g.0 == i) {
-                            Some(g) => (0..2).for_each(|d| g.1[d] += f[d]),
-                            None => gains.push((i, f)),
-                        }
+                        let g = gain[index(n) as usize].get_or_insert([0.0; 2]);
+                        (0..2).for_each(|d| g[d] += f[d]);
                     }
                 }
+                let gains = (gain.into_iter().enumerate())
+                    .filter_map(|(i, g)| g.map(|g| (i as u32, g)))
+                    .collect();
                 Wave {
                     history: History::of(spec),
                     gains,
@@ -147,8 +147,13 @@ impl QuietBoundary {
     /// After the motion stage: each quiet node's velocity v⁺ from the centred update (module
     /// doc) at time `time` (s since the stage began, the time the step's forces act at), its
     /// displacement corrected alike, and the dashpot and incident forces added to its recorded
-    /// force. Nothing at a zero step.
-    pub(crate) fn absorb<F: Fn(u32) -> [bool; 2]>(&mut self, nodes: Moving<F>, dt: f64, time: f64) {
+    /// force. Returns the largest speed of the quiet nodes after it, m/s. Nothing at a zero step.
+    pub(crate) fn absorb<F: Fn(u32) -> [bool; 2]>(
+        &mut self,
+        nodes: Moving<F>,
+        dt: f64,
+        time: f64,
+    ) -> f64 {
         let Moving {
             mass,
             vel,
@@ -157,8 +162,9 @@ impl QuietBoundary {
             free,
         } = nodes;
         if dt <= 0.0 {
-            return;
+            return 0.0;
         }
+        let mut fastest = 0.0f64;
         let driving = &mut self.driving;
         driving.fill([0.0; 2]);
         for wave in &self.incident {
@@ -202,12 +208,14 @@ impl QuietBoundary {
                 }
             }
             vel[n] = after;
+            fastest = fastest.max(after[0].hypot(after[1]));
             let mean = [0.5 * (before[0] + after[0]), 0.5 * (before[1] + after[1])];
             self.absorbed[i] += dt
                 * (c[0] * mean[0] * mean[0]
                     + 2.0 * c[1] * mean[0] * mean[1]
                     + c[2] * mean[1] * mean[1]);
         }
+        fastest
     }
 }
 

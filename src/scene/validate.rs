@@ -414,7 +414,6 @@ fn validate_joint_material(p: &str, j: &JointMaterial) -> Result<(), SceneError>
     Ok(())
 }
 
-/// A solve specification at `p`.
 /// An incident wave: a pulse with its peak velocity (finite) and frequency (positive), or a
 /// table of increasing times, not both; delay and cycles in range.
 fn validate_incident(p: &str, w: &super::IncidentSpec) -> Result<(), SceneError> {
@@ -486,6 +485,7 @@ fn validate_incident(p: &str, w: &super::IncidentSpec) -> Result<(), SceneError>
     Ok(())
 }
 
+/// A solve specification at `p`.
 fn validate_solve(p: &str, v: &SolveSpec) -> Result<(), SceneError> {
     positive(&format!("{p}.ratio"), v.ratio)?;
     if let Some(d) = v.duration {
@@ -1093,7 +1093,7 @@ impl Scene {
                 return Err(invalid(
                     path.as_str(),
                     format!(
-                        "acts in dynamic solves only, and {stage} while it is in force: give                          that stage `solve.mode` \"dynamic\", or a boundary list of its own"
+                        "acts in dynamic solves only, and {stage} while it is in force: give that stage `solve.mode` \"dynamic\", or a boundary list of its own"
                     ),
                 ));
             }

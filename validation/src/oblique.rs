@@ -19,6 +19,7 @@
 use std::time::Instant;
 
 use adit::Scene;
+use adit::law::{Elastic, ZoneLaw, plane_strain_moduli};
 use adit::model::Model;
 use adit::scene::WaveKind;
 use adit::setup::setup;
@@ -38,13 +39,11 @@ const MARGIN: f64 = 0.1;
 /// The span of the base measured, in the pulse's peak S wavelengths.
 const SPAN: f64 = 4.0;
 
-/// The Lamé constants (λ, G) of `ROCK`, Pa, and its wave speeds (Cp, Cs), m/s (plane strain).
-fn rock() -> ((f64, f64), (f64, f64)) {
-    let (e, nu, _) = ROCK;
-    let g = e / (2.0 * (1.0 + nu));
-    let lambda = e * nu / ((1.0 + nu) * (1.0 - 2.0 * nu));
-    let speeds = (wave_speed(WaveKind::P), wave_speed(WaveKind::S));
-    ((lambda, g), speeds)
+/// The Lamé constants (λ, G) of `ROCK`, Pa (plane strain: λ = α2 = K − 2G/3).
+fn lame() -> (f64, f64) {
+    let (e, nu, rho) = ROCK;
+    let (bulk, shear) = Elastic::from_young(e, nu, rho).moduli();
+    (plane_strain_moduli(bulk, shear).1, shear)
 }
 
 /// A plane wave's direction of travel d and polarization a (unit vectors) and its speed, m/s.
@@ -59,16 +58,16 @@ impl Plane {
     /// A P or S wave at `angle` (rad) from the vertical, travelling down (`up` false) or up, to
     /// the right. An S wave's polarization is d turned clockwise.
     fn new(wave: WaveKind, angle: f64, up: bool) -> Plane {
-        let (_, (cp, cs)) = rock();
         let (s, c) = angle.sin_cos();
         let d = [s, if up { c } else { -c }];
-        match wave {
-            WaveKind::P => Plane { d, a: d, c: cp },
-            WaveKind::S => Plane {
-                d,
-                a: [d[1], -d[0]],
-                c: cs,
-            },
+        let a = match wave {
+            WaveKind::P => d,
+            WaveKind::S => [d[1], -d[0]],
+        };
+        Plane {
+            d,
+            a,
+            c: wave_speed(wave),
         }
     }
 
@@ -77,8 +76,8 @@ impl Plane {
     /// k = (ω/c) d, σyy/(iω) = A (λ d·a + 2G d_y a_y)/c, σxy/(iω) = A G (d_x a_y + d_y a_x)/c and
     /// v/(iω) = −A a.
     fn base_rows(&self) -> [f64; 2] {
-        let ((lambda, g), (cp, cs)) = rock();
-        let rho = ROCK.2;
+        let ((lambda, g), rho) = (lame(), ROCK.2);
+        let (cp, cs) = (wave_speed(WaveKind::P), wave_speed(WaveKind::S));
         let (d, a) = (self.d, self.a);
         [
             (lambda * (d[0] * a[0] + d[1] * a[1]) + 2.0 * g * d[1] * a[1]) / self.c
@@ -92,12 +91,7 @@ impl Plane {
 /// `angle` turns into at a horizontal boundary (Snell: sin α / C alike), `None` past the
 /// critical angle.
 fn snell(from: WaveKind, to: WaveKind, angle: f64) -> Option<f64> {
-    let (_, (cp, cs)) = rock();
-    let speed = |w| match w {
-        WaveKind::P => cp,
-        WaveKind::S => cs,
-    };
-    let s = angle.sin() * speed(to) / speed(from);
+    let s = angle.sin() * wave_speed(to) / wave_speed(from);
     (s < 1.0).then(|| s.asin())
 }
 
@@ -153,16 +147,12 @@ struct Layout {
 impl Oblique {
     /// The incident wave's speed, m/s.
     fn speed(&self) -> f64 {
-        let (_, (cp, cs)) = rock();
-        match self.wave {
-            WaveKind::P => cp,
-            WaveKind::S => cs,
-        }
+        wave_speed(self.wave)
     }
 
     /// The pulse's peak frequency, Hz.
     fn frequency(&self) -> f64 {
-        rock().1.1 / (self.per_wavelength * self.zone)
+        wave_speed(WaveKind::S) / (self.per_wavelength * self.zone)
     }
 
     /// The span starts where the pulse, reaching a point s m down the base at s sin α / C after
@@ -171,7 +161,7 @@ impl Oblique {
     /// lower corner sends (from when the pulse reaches it) would come back after the pulse has
     /// passed the span.
     fn layout(&self) -> anyhow::Result<Layout> {
-        let ((_, _), (cp, _)) = rock();
+        let cp = wave_speed(WaveKind::P);
         let (c, (sin, cos)) = (self.speed(), self.angle.to_radians().sin_cos());
         let half = HALF / self.frequency() * (1.0 + MARGIN);
         let outrun = 1.0 / cp - sin / c;
@@ -276,7 +266,7 @@ impl Oblique {
 
     /// Give the model the pulse's exact field at time 0, travelling down with its peak at
     /// height `peak` m (particle motion down for a P wave, along x for an S wave):
-    /// displacements, the zones' stress from them (plane-strain Hooke's law), the velocities at
+    /// displacements, the zones' stress from them (by the zones' own law), the velocities at
     /// −Δt/2 (the central difference's). Returns the field's energy, kinetic and strain, J/m.
     fn launch(&self, model: &mut Model, peak: f64, dt: f64) -> f64 {
         let (c, f) = (self.speed(), self.frequency());
@@ -284,8 +274,7 @@ impl Oblique {
             WaveKind::P => [0.0, -1.0],
             WaveKind::S => [1.0, 0.0],
         };
-        let ((lambda, g), _) = rock();
-        let nodes = &mut model.nodes;
+        let (nodes, laws) = (&mut model.nodes, &model.materials.zone);
         let mut energy = 0.0;
         for n in 0..nodes.len() {
             // Travelling down: the peak passes height y at (peak − y)/C.
@@ -303,13 +292,9 @@ impl Oblique {
             let exx: f64 = (0..3).map(|i| gr[i] * u[i][0]).sum();
             let eyy: f64 = (0..3).map(|i| gr[3 + i] * u[i][1]).sum();
             let gxy: f64 = (0..3).map(|i| gr[3 + i] * u[i][0] + gr[i] * u[i][1]).sum();
-            let volumetric = lambda * (exx + eyy);
-            let s = [
-                volumetric + 2.0 * g * exx,
-                volumetric + 2.0 * g * eyy,
-                volumetric,
-                g * gxy,
-            ];
+            let mut s = [0.0; 4];
+            let law = &laws[zones.material[z].0 as usize];
+            law.update(&mut s, &mut 0, &mut 0.0, &[exx, eyy, gxy]);
             energy += 0.5 * zones.area[z] * (s[0] * exx + s[1] * eyy + s[3] * gxy);
             zones.stress[z] = s;
         }

@@ -131,11 +131,9 @@ impl Column {
 /// The speed of a `wave` in `ROCK`, m/s: Cp = √((K + 4G/3)/ρ), Cs = √(G/ρ).
 pub(crate) fn wave_speed(wave: WaveKind) -> f64 {
     let (e, nu, rho) = ROCK;
-    let g = e / (2.0 * (1.0 + nu));
-    let k = e / (3.0 * (1.0 - 2.0 * nu));
     match wave {
-        WaveKind::P => ((k + 4.0 * g / 3.0) / rho).sqrt(),
-        WaveKind::S => (g / rho).sqrt(),
+        WaveKind::P => (crate::constrained_modulus(e, nu) / rho).sqrt(),
+        WaveKind::S => (e / (2.0 * (1.0 + nu)) / rho).sqrt(),
     }
 }
 
