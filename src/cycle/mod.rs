@@ -247,6 +247,7 @@ impl Cycle {
             far_gather,
             materials,
             quiet,
+            motions,
             ..
         } = model;
         let (laws, joint_laws) = (&materials.zone, &materials.joint);
@@ -268,6 +269,9 @@ impl Cycle {
         };
         if let Some(q) = quiet.as_mut() {
             q.remember(&nodes.vel);
+        }
+        if let Some(m) = motions.as_ref() {
+            m.impose(&mut nodes.vel, self.time, p.dt);
         }
         let mut speed = self
             .motion(nodes, &gathers, p)

@@ -1,13 +1,17 @@
 //! Dynamics beyond real masses and Rayleigh damping (the seed's §9.6): boundaries that let a
-//! wave leave the model and bring a wave into it. A quiet (viscous) boundary part carries
-//! dashpots on its nodes (`quiet.rs`, Lysmer & Kuhlemeyer 1969), and an incident plane wave given
-//! as a particle-velocity history (`incident.rs`) enters through it as the force of the stress
-//! 2ρC v. The mechanical cycle knows this physics only through its stage around the motion
-//! update (`Cycle::run`); a scene without quiet parts pays nothing for it.
+//! wave leave the model and bring a wave or a motion into it. A quiet (viscous) boundary part
+//! carries dashpots on its nodes (`quiet.rs`, Lysmer & Kuhlemeyer 1969), and an incident plane
+//! wave given as a particle-velocity history (`history.rs`) enters through it as the force of the
+//! stress 2ρC v; a part with a prescribed motion has one velocity component follow a velocity or
+//! an integrated acceleration history (`motion.rs`). The mechanical cycle knows this physics only
+//! through its stages around the motion update (`Cycle::run`); a scene without them pays nothing
+//! for it.
 
-mod incident;
+mod history;
+mod motion;
 mod quiet;
 
-pub use incident::History;
+pub use history::History;
+pub use motion::{Integrated, Motions};
 pub(crate) use quiet::Moving;
 pub use quiet::{QuietBoundary, QuietEdge};

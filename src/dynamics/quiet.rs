@@ -120,7 +120,7 @@ impl QuietBoundary {
                     .filter_map(|(i, g)| g.map(|g| (i as u32, g)))
                     .collect();
                 Wave {
-                    history: History::of(spec),
+                    history: History::of(&spec.history()),
                     gains,
                 }
             })

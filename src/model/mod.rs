@@ -97,4 +97,6 @@ pub struct Model {
     pub materials: Materials,
     /// The quiet boundary in force (`dynamics::QuietBoundary`: dynamic stages only), if any.
     pub quiet: Option<crate::dynamics::QuietBoundary>,
+    /// The prescribed motions in force (`dynamics::Motions`: dynamic stages only), if any.
+    pub motions: Option<crate::dynamics::Motions>,
 }

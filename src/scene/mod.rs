@@ -920,6 +920,91 @@ pub struct BoundaryCondition {
     /// A plane wave entering through the quiet part.
     #[serde(default)]
     pub incident: Option<IncidentSpec>,
+    /// A prescribed motion of the part's nodes along x or y, in dynamic stages
+    /// (`dynamics::motion`): the component is held and follows a velocity history, or the
+    /// velocity integrated from an acceleration history.
+    #[serde(default)]
+    pub motion: Option<MotionSpec>,
+}
+
+/// A prescribed motion of a boundary part: one of `velocity` (m/s) and `acceleration` (m/s²)
+/// along `direction`; an acceleration is integrated to the velocity the nodes follow, with its
+/// baseline corrected when asked (`dynamics::Integrated`).
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct MotionSpec {
+    /// `x` or `y`.
+    pub direction: Axis,
+    /// The velocity history, m/s.
+    #[serde(default)]
+    pub velocity: Option<SignalSpec>,
+    /// The acceleration history, m/s².
+    #[serde(default)]
+    pub acceleration: Option<SignalSpec>,
+    /// Subtract from the acceleration the straight line a₀ + a₁ t that brings the motion to rest
+    /// where it started at the record's end (zero final velocity and displacement; default false).
+    #[serde(default)]
+    pub baseline: bool,
+}
+
+/// A coordinate axis.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Axis {
+    X,
+    Y,
+}
+
+impl Axis {
+    /// 0 for x, 1 for y.
+    pub fn index(self) -> usize {
+        match self {
+            Axis::X => 0,
+            Axis::Y => 1,
+        }
+    }
+}
+
+/// A history of time, t in s from the start of the stage (`dynamics::History`): a pulse scaled
+/// by `amplitude`, or a `table`; the unit is the quantity's (m/s for a velocity, m/s² for an
+/// acceleration).
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SignalSpec {
+    /// Peak value of the pulse.
+    #[serde(default)]
+    pub amplitude: Option<f64>,
+    /// `ricker`, `half_sine` or `sine`.
+    #[serde(default)]
+    pub pulse: Option<PulseKind>,
+    /// The pulse's frequency, Hz (a Ricker wavelet's peak frequency).
+    #[serde(default)]
+    pub frequency: Option<f64>,
+    /// When the pulse starts (the Ricker wavelet: peaks), s (default 1.2/f for a Ricker
+    /// wavelet, 0 for the others).
+    #[serde(default)]
+    pub delay: Option<f64>,
+    /// Cycles of a `sine` (default: unending).
+    #[serde(default)]
+    pub cycles: Option<f64>,
+    /// The history itself, [[t s, value], ...], times increasing: linear between its points, 0
+    /// outside them.
+    #[serde(default)]
+    pub table: Option<Vec<[f64; 2]>>,
+}
+
+impl IncidentSpec {
+    /// Its particle-velocity history as a history (`velocity` is its amplitude).
+    pub fn history(&self) -> SignalSpec {
+        SignalSpec {
+            amplitude: self.velocity,
+            pulse: self.pulse,
+            frequency: self.frequency,
+            delay: self.delay,
+            cycles: self.cycles,
+            table: self.table.clone(),
+        }
+    }
 }
 
 /// A plane wave entering through a quiet boundary part, as its particle velocity history

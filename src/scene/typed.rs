@@ -394,6 +394,19 @@ pub enum Load {
 }
 
 impl BoundaryCondition {
+    /// The components it holds: its `fix`, and its `motion`'s direction (which the motion
+    /// drives).
+    pub fn held(&self) -> Option<Fix> {
+        let motion = self.motion.as_ref().map(|m| match m.direction {
+            super::Axis::X => Fix::X,
+            super::Axis::Y => Fix::Y,
+        });
+        match (self.fix, motion) {
+            (Some(a), Some(b)) if a != b => Some(Fix::XY),
+            (a, b) => a.or(b),
+        }
+    }
+
     /// Its typed form: exactly one of `part` and `at`; at most one kind of load; a point condition
     /// only fixes; something is fixed or loaded.
     pub fn condition(&self, path: &str) -> Result<Condition<'_>, SceneError> {
@@ -427,7 +440,7 @@ impl BoundaryCondition {
             ));
         }
         let load = loads.pop();
-        match (&self.part, self.at, self.fix) {
+        match (&self.part, self.at, self.held()) {
             (None, Some(at), Some(fix)) => Ok(Condition::Point { at, fix }),
             (Some(name), None, fix) if fix.is_some() || load.is_some() || self.quiet => {
                 Ok(Condition::Part { name, fix, load })

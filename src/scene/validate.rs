@@ -3,8 +3,8 @@
 use thiserror::Error;
 
 use super::{
-    BoundaryCondition, HoekBrownConstants, JointLawSpec, JointMaterial, Material, PlasticDepth,
-    Rayleigh, Scene, Shape, SolveMethod, SolveMode, SolveSpec, ZoneLawSpec,
+    BoundaryCondition, Fix, HoekBrownConstants, JointLawSpec, JointMaterial, Material,
+    PlasticDepth, Rayleigh, Scene, Shape, SolveMethod, SolveMode, SolveSpec, ZoneLawSpec,
 };
 
 /// Why a scene cannot be used.
@@ -414,25 +414,31 @@ fn validate_joint_material(p: &str, j: &JointMaterial) -> Result<(), SceneError>
     Ok(())
 }
 
-/// An incident wave: a pulse with its peak velocity (finite) and frequency (positive), or a
-/// table of increasing times, not both; delay and cycles in range.
-fn validate_incident(p: &str, w: &super::IncidentSpec) -> Result<(), SceneError> {
+/// A history: a pulse with its amplitude (finite; the field `amplitude` names, e.g. an incident
+/// wave's `velocity`, in `unit`) and frequency (positive), or a table of increasing times, not
+/// both; delay and cycles in range.
+fn validate_history(
+    p: &str,
+    w: &super::SignalSpec,
+    amplitude: &str,
+    unit: &str,
+) -> Result<(), SceneError> {
     match (&w.pulse, &w.table) {
         (Some(_), Some(_)) | (None, None) => {
             return Err(invalid(
                 p,
-                "give one of `pulse` (with `velocity` and `frequency`) and `table`",
+                format!("give one of `pulse` (with `{amplitude}` and `frequency`) and `table`"),
             ));
         }
         (Some(_), None) => {
-            let velocity = w.velocity.ok_or_else(|| {
+            let peak = w.amplitude.ok_or_else(|| {
                 invalid(
-                    format!("{p}.velocity"),
-                    "the pulse's peak particle velocity (m/s) is required",
+                    format!("{p}.{amplitude}"),
+                    format!("the pulse's peak value ({unit}) is required"),
                 )
             })?;
-            if !velocity.is_finite() {
-                return Err(invalid(format!("{p}.velocity"), "must be finite"));
+            if !peak.is_finite() {
+                return Err(invalid(format!("{p}.{amplitude}"), "must be finite"));
             }
             let f = w.frequency.ok_or_else(|| {
                 invalid(
@@ -444,14 +450,14 @@ fn validate_incident(p: &str, w: &super::IncidentSpec) -> Result<(), SceneError>
         }
         (None, Some(table)) => {
             for (field, given) in [
-                ("velocity", w.velocity),
+                (amplitude, w.amplitude),
                 ("frequency", w.frequency),
                 ("delay", w.delay),
             ] {
                 if given.is_some() {
                     return Err(invalid(
                         format!("{p}.{field}"),
-                        "belongs to a `pulse`; a table gives the velocity itself",
+                        "belongs to a `pulse`; a table gives the history itself",
                     ));
                 }
             }
@@ -481,6 +487,61 @@ fn validate_incident(p: &str, w: &super::IncidentSpec) -> Result<(), SceneError>
             return Err(invalid(format!("{p}.cycles"), "belongs to a `sine` pulse"));
         }
         positive(&format!("{p}.cycles"), c)?;
+    }
+    Ok(())
+}
+
+/// A prescribed motion at `p` of the condition `bc`: a part's, not quiet, its direction not also
+/// fixed; one of a velocity and an acceleration history; a baseline correction only of an
+/// acceleration, and an acceleration integrated over a record that ends (not an unending sine).
+fn validate_motion(
+    p: &str,
+    bc: &BoundaryCondition,
+    m: &super::MotionSpec,
+) -> Result<(), SceneError> {
+    if bc.part.is_none() {
+        return Err(invalid(
+            p,
+            "a prescribed motion is a part's (`part`), not a point's",
+        ));
+    }
+    if bc.quiet {
+        return Err(invalid(
+            p,
+            "a quiet part moves under its dashpots; bring a wave in through it with `incident`",
+        ));
+    }
+    let axis = match m.direction {
+        super::Axis::X => Fix::X,
+        super::Axis::Y => Fix::Y,
+    };
+    if bc.fix.is_some_and(|f| f == axis || f == Fix::XY) {
+        return Err(invalid(
+            format!("{p}.direction"),
+            "the part's `fix` holds that component still: the motion holds it already",
+        ));
+    }
+    match (&m.velocity, &m.acceleration) {
+        (Some(v), None) => {
+            validate_history(&format!("{p}.velocity"), v, "amplitude", "m/s")?;
+            if m.baseline {
+                return Err(invalid(
+                    format!("{p}.baseline"),
+                    "corrects an integrated acceleration; a velocity is followed as given",
+                ));
+            }
+        }
+        (None, Some(a)) => {
+            let q = format!("{p}.acceleration");
+            validate_history(&q, a, "amplitude", "m/s²")?;
+            if a.pulse == Some(super::PulseKind::Sine) && a.cycles.is_none() {
+                return Err(invalid(
+                    format!("{q}.cycles"),
+                    "an acceleration is integrated over its record: give the sine its cycles",
+                ));
+            }
+        }
+        _ => return Err(invalid(p, "give one of `velocity` and `acceleration`")),
     }
     Ok(())
 }
@@ -1054,7 +1115,15 @@ impl Scene {
                     "a wave enters through a quiet part: give `quiet`: true",
                 ));
             }
-            validate_incident(&format!("{p}.incident"), incident)?;
+            validate_history(
+                &format!("{p}.incident"),
+                &incident.history(),
+                "velocity",
+                "m/s",
+            )?;
+        }
+        if let Some(motion) = &bc.motion {
+            validate_motion(&format!("{p}.motion"), bc, motion)?;
         }
         bc.condition(p)?;
         for (f, v) in [
@@ -1068,20 +1137,29 @@ impl Scene {
         Ok(())
     }
 
-    /// A list of boundary conditions with a quiet part is in force only during dynamic stages:
-    /// its dashpots would damp a static solve's path, and its incident wave has no time there.
+    /// A list of boundary conditions with a quiet part or a prescribed motion is in force only
+    /// during dynamic stages: dashpots would damp a static solve's path, and a wave or a motion
+    /// has no time there.
     fn validate_quiet_stages(&self) -> Result<(), SceneError> {
-        let quiet = |list: &[BoundaryCondition]| list.iter().position(|c| c.quiet);
+        let quiet = |list: &[BoundaryCondition]| {
+            (list.iter().enumerate()).find_map(|(k, c)| {
+                if c.quiet {
+                    Some(format!("[{k}].quiet"))
+                } else {
+                    c.motion.as_ref().map(|_| format!("[{k}].motion"))
+                }
+            })
+        };
         let mode = |i: usize| {
             let st = self.stages.get(i);
             st.and_then(|s| s.solve.as_ref())
                 .unwrap_or(&self.solve)
                 .mode
         };
-        let mut in_force = quiet(&self.boundary).map(|k| format!("boundary[{k}].quiet"));
+        let mut in_force = quiet(&self.boundary).map(|k| format!("boundary{k}"));
         for i in 0..self.stages.len().max(1) {
             if let Some(list) = self.stages.get(i).and_then(|s| s.boundary.as_deref()) {
-                in_force = quiet(list).map(|k| format!("stages[{i}].boundary[{k}].quiet"));
+                in_force = quiet(list).map(|k| format!("stages[{i}].boundary{k}"));
             }
             if let Some(path) = &in_force
                 && mode(i) == super::SolveMode::Static

@@ -235,23 +235,55 @@ fn quiet(
     Ok(Some(crate::dynamics::QuietBoundary::new(&edges, &incident)))
 }
 
-/// The quiet boundary in force during each stage (the one stage of a scene without stages): that
-/// of the last list of conditions given at or before it (`stages[i].boundary`, else the
-/// top-level `boundary`).
-fn stage_quiet(
-    scene: &Scene,
+/// The prescribed motions of `conditions` (the scene's `path`), `None` when none has one: each
+/// with the nodes of its part; an error naming the condition when a node is a rigid or simple
+/// block's (its velocity is the block's).
+fn motions(
+    conditions: &[BoundaryCondition],
+    path: &str,
     boundary: &Boundary,
     model: &Model,
-) -> anyhow::Result<Vec<Option<crate::dynamics::QuietBoundary>>> {
-    let quiet_of = |list: &[BoundaryCondition], path: &str| quiet(list, path, boundary, model);
-    let mut now = quiet_of(&scene.boundary, "boundary")?;
+) -> anyhow::Result<Option<crate::dynamics::Motions>> {
+    let mut parts = Vec::new();
+    for (k, c) in conditions.iter().enumerate() {
+        let (Some(spec), Some(name)) = (&c.motion, &c.part) else {
+            continue;
+        };
+        let nodes = boundary.part_nodes.get(name).cloned().unwrap_or_default();
+        let body = |&n: &u32| {
+            (model.bodies.of_node.get(n as usize))
+                .is_some_and(|&b| b != crate::model::bodies::NO_BODY)
+        };
+        if let Some(&n) = nodes.iter().find(|n| body(n)) {
+            let p = model.nodes.pos[n as usize];
+            anyhow::bail!(
+                "{path}[{k}].motion: part '{name}' has a node of a rigid or simple block (at \
+                 ({:.3}, {:.3}) m), whose velocity is the block's; give that block `mode` \
+                 \"deformable\"",
+                p[0],
+                p[1]
+            );
+        }
+        parts.push((spec, nodes));
+    }
+    Ok((!parts.is_empty()).then(|| crate::dynamics::Motions::new(&parts)))
+}
+
+/// What `of` makes of the list of boundary conditions in force during each stage (the one stage
+/// of a scene without stages): the last list given at or before it (`stages[i].boundary`, else
+/// the top-level `boundary`), with its path in the scene.
+fn per_stage<T: Clone>(
+    scene: &Scene,
+    of: impl Fn(&[BoundaryCondition], &str) -> anyhow::Result<T>,
+) -> anyhow::Result<Vec<T>> {
+    let mut now = of(&scene.boundary, "boundary")?;
     if scene.stages.is_empty() {
         return Ok(vec![now]);
     }
     let mut out = Vec::with_capacity(scene.stages.len());
     for (i, stage) in scene.stages.iter().enumerate() {
         if let Some(list) = &stage.boundary {
-            now = quiet_of(list, &format!("stages[{i}].boundary"))?;
+            now = of(list, &format!("stages[{i}].boundary"))?;
         }
         out.push(now.clone());
     }
@@ -394,6 +426,7 @@ pub fn setup_meshed(scene: &Scene, meshed: Meshed) -> anyhow::Result<Setup> {
         far_field: None,
         far_gather: Gather::default(),
         quiet: None,
+        motions: None,
         mixed,
         materials: Materials {
             zone: zone_laws.laws,
@@ -417,7 +450,8 @@ pub fn setup_meshed(scene: &Scene, meshed: Meshed) -> anyhow::Result<Setup> {
         Some(f) => Gather::from_slots(model.nodes.len(), &f.nodes),
         None => Gather::from_slots(model.nodes.len(), &[]),
     };
-    let stage_quiet = stage_quiet(scene, &boundary, &model)?;
+    let stage_quiet = per_stage(scene, |l, p| quiet(l, p, &boundary, &model))?;
+    let stage_motions = per_stage(scene, |l, p| motions(l, p, &boundary, &model))?;
     let (zones, laws) = (&model.zones, &model.materials.zone);
     warnings.extend(warnings::coarse_for_waves(
         scene,
@@ -450,6 +484,7 @@ pub fn setup_meshed(scene: &Scene, meshed: Meshed) -> anyhow::Result<Setup> {
             initial_boundary: initial,
             stage_boundary,
             stage_quiet,
+            stage_motions,
         },
     )?;
     install_from_start(&mut model.supports, &plan, &model.nodes.disp);

@@ -58,6 +58,8 @@ pub struct StagePlan {
     pub boundary: Option<BoundaryEffect>,
     /// The quiet boundary of the conditions in force during this stage, if they have one.
     pub quiet: Option<crate::dynamics::QuietBoundary>,
+    /// The prescribed motions of the conditions in force during this stage, if they have any.
+    pub motions: Option<crate::dynamics::Motions>,
     /// Bolt groups and liners installed, after the excavations.
     pub install: Vec<SupportId>,
     /// Fraction of the in-situ traction left on the walls of every excavation made so far.
@@ -105,6 +107,8 @@ pub(super) struct Resolved<'a> {
     pub(crate) stage_boundary: Vec<Option<BoundaryEffect>>,
     /// The quiet boundary in force during each stage, if any.
     pub(crate) stage_quiet: Vec<Option<crate::dynamics::QuietBoundary>>,
+    /// The prescribed motions in force during each stage, if any.
+    pub(crate) stage_motions: Vec<Option<crate::dynamics::Motions>>,
 }
 
 impl Plan {
@@ -130,6 +134,7 @@ impl Plan {
         let mut plans = Vec::with_capacity(stages.len());
         let mut stage_boundary = r.stage_boundary.into_iter();
         let mut stage_quiet = r.stage_quiet.into_iter();
+        let mut stage_motions = r.stage_motions.into_iter();
         for (i, st) in stages.iter().enumerate() {
             let p = format!("stages[{i}]");
             plans.push(StagePlan {
@@ -159,6 +164,7 @@ impl Plan {
                     .collect::<anyhow::Result<_>>()?,
                 boundary: stage_boundary.next().flatten(),
                 quiet: stage_quiet.next().flatten(),
+                motions: stage_motions.next().flatten(),
                 install: st
                     .install
                     .iter()

@@ -580,3 +580,81 @@ fn quiet_boundaries_and_waves_out_of_place_are_refused() {
         "solve.duration",
     );
 }
+
+/// A prescribed motion in force during a static solve, on a quiet part, on a component the part
+/// also fixes, a point's, with both a velocity and an acceleration or neither, a baseline on a
+/// velocity, an unending sine acceleration, or on a rigid block's nodes: refused naming the
+/// field, before any solve.
+#[test]
+fn prescribed_motions_out_of_place_are_refused() {
+    let column = |base: Value, solve: Value| {
+        json!({
+            "name": "column",
+            "materials": { "rock": { "density": 2500, "young": 1e10, "poisson": 0.25 } },
+            "region": { "polygon": [[0, 0], [2, 0], [2, 10], [0, 10]],
+                        "edge_names": ["base", "right", "top", "left"], "material": "rock" },
+            "zoning": { "edge_at_excavation": 1, "edge_far": 1 },
+            "boundary": [base, { "part": "left", "fix": "x" }, { "part": "right", "fix": "x" }],
+            "solve": solve
+        })
+    };
+    let dynamic = json!({ "mode": "dynamic", "duration": 0.1, "damping": 0 });
+    let shake = json!({ "direction": "x", "velocity": { "pulse": "sine", "amplitude": 0.1, "frequency": 5 } });
+    let base = |motion: &Value, extra: Value| {
+        let mut b = json!({ "part": "base", "fix": "y", "motion": motion });
+        for (k, v) in extra.as_object().unwrap() {
+            b[k] = v.clone();
+        }
+        b
+    };
+    let err = refused(
+        &column(base(&shake, json!({})), json!({})),
+        "boundary[0].motion",
+    );
+    assert!(err.contains("dynamic"), "{err}");
+    refused(
+        &column(
+            base(&shake, json!({ "quiet": true, "fix": null })),
+            dynamic.clone(),
+        ),
+        "boundary[0].motion",
+    );
+    refused(
+        &column(base(&shake, json!({ "fix": "xy" })), dynamic.clone()),
+        "boundary[0].motion.direction",
+    );
+    refused(
+        &column(
+            json!({ "at": [1, 0], "fix": "y", "motion": shake }),
+            dynamic.clone(),
+        ),
+        "boundary[0].motion",
+    );
+    let mut both = shake.clone();
+    both["acceleration"] = json!({ "table": [[0, 0], [0.1, 1]] });
+    refused(
+        &column(base(&both, json!({})), dynamic.clone()),
+        "boundary[0].motion",
+    );
+    let neither = json!({ "direction": "x" });
+    refused(
+        &column(base(&neither, json!({})), dynamic.clone()),
+        "boundary[0].motion",
+    );
+    let mut corrected = shake.clone();
+    corrected["baseline"] = json!(true);
+    refused(
+        &column(base(&corrected, json!({})), dynamic.clone()),
+        "boundary[0].motion.baseline",
+    );
+    let unending = json!({ "direction": "x",
+        "acceleration": { "pulse": "sine", "amplitude": 1, "frequency": 5 } });
+    refused(
+        &column(base(&unending, json!({})), dynamic.clone()),
+        "boundary[0].motion.acceleration.cycles",
+    );
+    let mut rigid = column(base(&shake, json!({})), dynamic.clone());
+    rigid["blocks"] = json!({ "mode": "rigid" });
+    let err = refused(&rigid, "boundary[0].motion");
+    assert!(err.contains("rigid or simple block"), "{err}");
+}

@@ -25,6 +25,7 @@ pub mod kirsch;
 pub mod kirsch_case;
 pub mod lined;
 pub mod modes;
+pub mod newmark;
 pub mod oblique;
 pub mod patch;
 pub mod peer;

@@ -160,17 +160,25 @@ pub(crate) fn run_to_completion(scene: &adit::Scene) -> anyhow::Result<(adit::Ru
 
 /// (time s, value) of the history `name` of a `histories.csv`.
 pub(crate) fn history(csv: &str, name: &str) -> anyhow::Result<Vec<(f64, f64)>> {
+    history_after(csv, name, 0)
+}
+
+/// `history` over the rows of cycles after `cycle` (a later stage's, when `cycle` is the
+/// earlier stages' count).
+pub(crate) fn history_after(csv: &str, name: &str, cycle: u64) -> anyhow::Result<Vec<(f64, f64)>> {
     let mut lines = csv.lines();
     let header: Vec<&str> = lines.next().unwrap_or_default().split(',').collect();
     let column = (header.iter())
         .position(|h| h.starts_with(&format!("{name}:")))
         .ok_or_else(|| anyhow::anyhow!("histories.csv has no {name} column"))?;
-    lines
-        .map(|l| {
-            let f: Vec<&str> = l.split(',').collect();
-            Ok((f[1].parse()?, f[column].parse()?))
-        })
-        .collect()
+    let mut rows = Vec::new();
+    for l in lines {
+        let f: Vec<&str> = l.split(',').collect();
+        if f[0].parse::<u64>()? > cycle {
+            rows.push((f[1].parse()?, f[column].parse()?));
+        }
+    }
+    Ok(rows)
 }
 
 /// The column settled under gravity on a fixed base (implicitly, to a ratio of 1e-8), then a

@@ -22,6 +22,7 @@ mod joint_waves;
 mod kirsch;
 mod lined;
 mod modes;
+mod newmark;
 mod patch;
 mod plastic_zoning;
 mod pullout;
@@ -89,5 +90,6 @@ pub fn all() -> Vec<Box<dyn Case>> {
         Box::new(slope_hb::SlopeHoekBrown),
         Box::new(quiet::Quiet),
         Box::new(joint_waves::JointWaves),
+        Box::new(newmark::NewmarkBlock),
     ]
 }

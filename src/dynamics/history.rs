@@ -1,18 +1,19 @@
-//! The particle-velocity history v(t) (m/s, t in s from the start of the dynamic stage) of a
-//! plane wave entering through a quiet boundary (`boundary[i].incident`):
+//! A history of time, t in s from the start of the dynamic stage: an incident wave's particle
+//! velocity (`boundary[i].incident`, m/s), a prescribed velocity or acceleration
+//! (`boundary[i].motion`, m/s or m/s²):
 //!
-//! - Ricker wavelet: v = A (1 − 2π²f²τ²) exp(−π²f²τ²), τ = t − t₀ (its peak A at t₀; default
+//! - Ricker wavelet: h = A (1 − 2π²f²τ²) exp(−π²f²τ²), τ = t − t₀ (its peak A at t₀; default
 //!   t₀ = 1.2/f, where the wavelet has risen from 2e-5 A);
-//! - half sine: v = A sin(2πf τ) for 0 ≤ τ ≤ 1/(2f), τ = t − t₀ (a pulse of duration 1/(2f));
-//! - sine: v = A sin(2πf τ) for 0 ≤ τ ≤ n/f (n cycles; unending without `cycles`);
-//! - a table of (t, v), linear between its points and 0 outside them.
+//! - half sine: h = A sin(2πf τ) for 0 ≤ τ ≤ 1/(2f), τ = t − t₀ (a pulse of duration 1/(2f));
+//! - sine: h = A sin(2πf τ) for 0 ≤ τ ≤ n/f (n cycles; unending without `cycles`);
+//! - a table of (t, h), linear between its points and 0 outside them.
 
-use crate::scene::{IncidentSpec, PulseKind};
+use crate::scene::{PulseKind, SignalSpec};
 
 /// Default delay of a Ricker wavelet's peak, in periods 1/f.
 pub const RICKER_DELAY_PERIODS: f64 = 1.2;
 
-/// A velocity history.
+/// A history (its unit the quantity's).
 #[derive(Debug, Clone, PartialEq)]
 pub enum History {
     Ricker {
@@ -35,13 +36,13 @@ pub enum History {
 }
 
 impl History {
-    /// The history a scene's `incident` gives (validated: a pulse with its velocity and
-    /// frequency, or a table).
-    pub fn of(spec: &IncidentSpec) -> History {
+    /// The history a scene gives (validated: a pulse with its amplitude and frequency, or a
+    /// table).
+    pub fn of(spec: &SignalSpec) -> History {
         if let Some(table) = &spec.table {
             return History::Table(table.clone());
         }
-        let (peak, frequency) = (spec.velocity.unwrap_or(0.0), spec.frequency.unwrap_or(1.0));
+        let (peak, frequency) = (spec.amplitude.unwrap_or(0.0), spec.frequency.unwrap_or(1.0));
         match spec.pulse.unwrap_or(PulseKind::Ricker) {
             PulseKind::Ricker => History::Ricker {
                 peak,
@@ -62,7 +63,7 @@ impl History {
         }
     }
 
-    /// v(t), m/s.
+    /// h(t).
     pub fn at(&self, t: f64) -> f64 {
         use std::f64::consts::{PI, TAU};
         match *self {
@@ -100,6 +101,29 @@ impl History {
                 }
             }
             History::Table(ref points) => table_at(points, t),
+        }
+    }
+
+    /// The interval (s) outside which the history is nil or negligible: a Ricker wavelet's
+    /// t₀ ± 1.5/f (where it is below 1e-8 of its peak; from 0 when it starts earlier), a half
+    /// sine's or a sine's cycles, a table's first to last time; `None` for an unending sine.
+    pub fn support(&self) -> Option<(f64, f64)> {
+        match *self {
+            History::Ricker {
+                frequency, delay, ..
+            } => Some(((delay - 1.5 / frequency).max(0.0), delay + 1.5 / frequency)),
+            History::HalfSine {
+                frequency, delay, ..
+            } => Some((delay, delay + 0.5 / frequency)),
+            History::Sine {
+                frequency,
+                delay,
+                cycles,
+                ..
+            } => cycles
+                .is_finite()
+                .then(|| (delay, delay + cycles / frequency)),
+            History::Table(ref points) => Some((points.first()?[0], points.last()?[0])),
         }
     }
 
