@@ -78,8 +78,10 @@ impl Staging {
             self.change_boundary(effect, model);
         }
         model.quiet = stage.quiet.clone();
-        stop_motions(model);
-        model.motions = stage.motions.clone();
+        if let Some(mut inputs) = model.inputs.take() {
+            inputs.stop(&mut model.nodes.vel, &mut model.nodes.applied);
+        }
+        model.inputs = stage.inputs.clone();
         if let Some((nodes, before, reactions)) = held {
             hold_reactions(model, &nodes, &before, &reactions);
         }
@@ -285,20 +287,6 @@ impl WallPoints {
             left: pick(0, lo[0])?,
             right: pick(0, hi[0])?,
         })
-    }
-}
-
-/// The components the prescribed motions in force held come to rest: a held component keeps
-/// its velocity, so one a motion left moving would go on moving in the next stage, which holds
-/// it still or frees it.
-fn stop_motions(model: &mut Model) {
-    let Some(motions) = model.motions.take() else {
-        return;
-    };
-    for (nodes, axis) in motions.held() {
-        for &n in nodes {
-            model.nodes.vel[n as usize][axis] = 0.0;
-        }
     }
 }
 

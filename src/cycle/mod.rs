@@ -247,7 +247,7 @@ impl Cycle {
             far_gather,
             materials,
             quiet,
-            motions,
+            inputs,
             ..
         } = model;
         let (laws, joint_laws) = (&materials.zone, &materials.joint);
@@ -270,8 +270,8 @@ impl Cycle {
         if let Some(q) = quiet.as_mut() {
             q.remember(&nodes.vel);
         }
-        if let Some(m) = motions.as_ref() {
-            m.impose(&mut nodes.vel, self.time, p.dt);
+        if let Some(i) = inputs.as_mut() {
+            i.impose(&mut nodes.vel, &mut nodes.applied, self.time, p.dt);
         }
         let mut speed = self
             .motion(nodes, &gathers, p)

@@ -3,15 +3,21 @@
 //! carries dashpots on its nodes (`quiet.rs`, Lysmer & Kuhlemeyer 1969), and an incident plane
 //! wave given as a particle-velocity history (`history.rs`) enters through it as the force of the
 //! stress 2ρC v; a part with a prescribed motion has one velocity component follow a velocity or
-//! an integrated acceleration history (`motion.rs`). The mechanical cycle knows this physics only
+//! an integrated acceleration history (`motion.rs`), a part with a load history its traction
+//! scaled by it (`load.rs`), both the list's `Inputs`. The mechanical cycle knows this physics only
 //! through its stages around the motion update (`Cycle::run`); a scene without them pays nothing
 //! for it.
 
 mod history;
+mod inputs;
+mod load;
 mod motion;
 mod quiet;
 
 pub use history::History;
-pub use motion::{Integrated, Motions};
+pub use inputs::Inputs;
+pub(crate) use load::TimedLoad;
+pub use motion::Integrated;
+pub(crate) use motion::Motion;
 pub(crate) use quiet::Moving;
 pub use quiet::{QuietBoundary, QuietEdge};

@@ -1,4 +1,4 @@
-//! Prescribed motions of boundary parts (`boundary[i].motion`; UDEC's and FLAC's velocity
+//! A prescribed motion of a boundary part (`boundary[i].motion`; UDEC's and FLAC's velocity
 //! boundary with a history): each node of the part has one component held (x or y) whose velocity
 //! follows a history, m/s, given as a velocity or integrated from an acceleration (`Integrated`).
 //! The motion stage keeps a held component's velocity and moves the node by it, so the stage
@@ -10,17 +10,11 @@ use crate::scene::MotionSpec;
 
 use super::History;
 
-/// The prescribed motions of one list of boundary conditions.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Motions {
-    list: Vec<Motion>,
-}
-
 /// One part's motion: its nodes, the component held (0 x, 1 y) and its velocity.
 #[derive(Debug, Clone, PartialEq)]
-struct Motion {
-    nodes: Vec<u32>,
-    axis: usize,
+pub(crate) struct Motion {
+    pub nodes: Vec<u32>,
+    pub axis: usize,
     velocity: Velocity,
 }
 
@@ -31,52 +25,34 @@ enum Velocity {
     Integrated(Integrated),
 }
 
-impl Velocity {
-    fn at(&self, t: f64) -> f64 {
-        match self {
-            Velocity::Given(h) => h.at(t),
-            Velocity::Integrated(i) => i.velocity(t),
+impl Motion {
+    /// The motion `spec` gives the nodes `nodes` (validated: one of a velocity and an
+    /// acceleration, an acceleration's record ending).
+    pub fn new(spec: &MotionSpec, nodes: Vec<u32>) -> Motion {
+        let velocity = match (&spec.velocity, &spec.acceleration) {
+            (Some(v), _) => Velocity::Given(History::of(v)),
+            (None, Some(a)) => {
+                Velocity::Integrated(Integrated::new(&History::of(a), spec.baseline))
+            }
+            (None, None) => Velocity::Given(History::Table(Vec::new())),
+        };
+        Motion {
+            nodes,
+            axis: spec.direction.index(),
+            velocity,
         }
-    }
-}
-
-impl Motions {
-    /// The motions `parts` give, each with the nodes of its part (validated: one of a velocity and
-    /// an acceleration, an acceleration's record ending).
-    pub fn new(parts: &[(&MotionSpec, Vec<u32>)]) -> Motions {
-        let list = (parts.iter())
-            .map(|(spec, nodes)| {
-                let velocity = match (&spec.velocity, &spec.acceleration) {
-                    (Some(v), _) => Velocity::Given(History::of(v)),
-                    (None, Some(a)) => {
-                        Velocity::Integrated(Integrated::new(&History::of(a), spec.baseline))
-                    }
-                    (None, None) => Velocity::Given(History::Table(Vec::new())),
-                };
-                Motion {
-                    nodes: nodes.clone(),
-                    axis: spec.direction.index(),
-                    velocity,
-                }
-            })
-            .collect();
-        Motions { list }
     }
 
     /// Before the motion stage of the step from `time` to `time + dt` (s since the stage
-    /// began): each held component's velocity to its history's at `time + dt/2`, m/s.
-    pub(crate) fn impose(&self, vel: &mut [[f64; 2]], time: f64, dt: f64) {
-        for m in &self.list {
-            let v = m.velocity.at(time + 0.5 * dt);
-            for &n in &m.nodes {
-                vel[n as usize][m.axis] = v;
-            }
+    /// began): each held component's velocity to the history's at `time + dt/2`, m/s.
+    pub fn impose(&self, vel: &mut [[f64; 2]], time: f64, dt: f64) {
+        let v = match &self.velocity {
+            Velocity::Given(h) => h.at(time + 0.5 * dt),
+            Velocity::Integrated(i) => i.velocity(time + 0.5 * dt),
+        };
+        for &n in &self.nodes {
+            vel[n as usize][self.axis] = v;
         }
-    }
-
-    /// Each motion's nodes and the component it holds.
-    pub fn held(&self) -> impl Iterator<Item = (&[u32], usize)> {
-        self.list.iter().map(|m| (m.nodes.as_slice(), m.axis))
     }
 }
 
@@ -252,9 +228,9 @@ mod tests {
             r#"{ "direction": "y", "velocity": { "table": [[0, 0], [1, 2]] } }"#,
         )
         .unwrap();
-        let motions = Motions::new(&[(&spec, vec![1, 2])]);
+        let motion = Motion::new(&spec, vec![1, 2]);
         let mut vel = [[5.0, 5.0]; 3];
-        motions.impose(&mut vel, 0.25, 0.5);
+        motion.impose(&mut vel, 0.25, 0.5);
         assert_eq!(vel, [[5.0, 5.0], [5.0, 1.0], [5.0, 1.0]]);
     }
 }

@@ -97,6 +97,7 @@ pub struct Model {
     pub materials: Materials,
     /// The quiet boundary in force (`dynamics::QuietBoundary`: dynamic stages only), if any.
     pub quiet: Option<crate::dynamics::QuietBoundary>,
-    /// The prescribed motions in force (`dynamics::Motions`: dynamic stages only), if any.
-    pub motions: Option<crate::dynamics::Motions>,
+    /// The prescribed motions and load histories in force (`dynamics::Inputs`: dynamic stages
+    /// only), if any.
+    pub inputs: Option<crate::dynamics::Inputs>,
 }

@@ -925,6 +925,11 @@ pub struct BoundaryCondition {
     /// velocity integrated from an acceleration history.
     #[serde(default)]
     pub motion: Option<MotionSpec>,
+    /// A load history, in dynamic stages: the condition's load (`stress`, `in_situ_traction`,
+    /// `normal_stress`/`shear_stress`) times this dimensionless history h(t) (`dynamics::load`);
+    /// without it the load is constant.
+    #[serde(default)]
+    pub history: Option<SignalSpec>,
 }
 
 /// A prescribed motion of a boundary part: one of `velocity` (m/s) and `acceleration` (m/s²)

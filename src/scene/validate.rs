@@ -1125,6 +1125,16 @@ impl Scene {
         if let Some(motion) = &bc.motion {
             validate_motion(&format!("{p}.motion"), bc, motion)?;
         }
+        if let Some(history) = &bc.history {
+            if bc.load_kinds() == 0 {
+                return Err(invalid(
+                    format!("{p}.history"),
+                    "scales the condition's load: give `stress`, `in_situ_traction` or \
+                     `normal_stress`/`shear_stress`",
+                ));
+            }
+            validate_history(&format!("{p}.history"), history, "amplitude", "–")?;
+        }
         bc.condition(p)?;
         for (f, v) in [
             ("normal_stress", bc.normal_stress),
@@ -1137,16 +1147,18 @@ impl Scene {
         Ok(())
     }
 
-    /// A list of boundary conditions with a quiet part or a prescribed motion is in force only
-    /// during dynamic stages: dashpots would damp a static solve's path, and a wave or a motion
-    /// has no time there.
+    /// A list of boundary conditions with a quiet part, a prescribed motion or a load history is
+    /// in force only during dynamic stages: dashpots would damp a static solve's path, and a wave,
+    /// a motion or a history has no time there.
     fn validate_quiet_stages(&self) -> Result<(), SceneError> {
         let quiet = |list: &[BoundaryCondition]| {
             (list.iter().enumerate()).find_map(|(k, c)| {
                 if c.quiet {
                     Some(format!("[{k}].quiet"))
+                } else if c.motion.is_some() {
+                    Some(format!("[{k}].motion"))
                 } else {
-                    c.motion.as_ref().map(|_| format!("[{k}].motion"))
+                    c.history.as_ref().map(|_| format!("[{k}].history"))
                 }
             })
         };

@@ -70,9 +70,58 @@ pub fn boundary_effect(
     let mut scratch = Nodes::at(pos.to_vec());
     for (k, bc) in conditions.iter().enumerate() {
         let path = format!("{path}[{k}]");
-        apply_condition(bc.condition(&path)?, &path, boundary, in_situ, &mut scratch)?;
+        let mut condition = bc.condition(&path)?;
+        // A load with a history is the dynamic inputs' (`history_loads`), not a constant one.
+        if let (Condition::Part { load, .. }, Some(_)) = (&mut condition, &bc.history) {
+            *load = None;
+        }
+        apply_condition(condition, &path, boundary, in_situ, &mut scratch)?;
     }
     Ok((scratch.fixed, scratch.applied))
+}
+
+/// The consistent nodal loads (N/m at h = 1) of each condition of `conditions` with a load
+/// history, with its history, as `(k, loads)`: the nodes its traction loads, ascending.
+pub fn history_loads(
+    conditions: &[BoundaryCondition],
+    boundary: &Boundary,
+    in_situ: &InSituField,
+    pos: &[[f64; 2]],
+) -> Vec<(usize, Vec<(u32, [f64; 2])>)> {
+    let mut out = Vec::new();
+    let mut loads = vec![[0.0; 2]; pos.len()];
+    for (k, bc) in conditions.iter().enumerate() {
+        let (
+            Some(_),
+            Some(name),
+            Ok(Condition::Part {
+                load: Some(load), ..
+            }),
+        ) = (&bc.history, &bc.part, bc.condition(""))
+        else {
+            continue;
+        };
+        let edges =
+            (boundary.edges.iter()).filter(|e| edge_in_part(&boundary.domain, e.kind, name));
+        traction_loads(pos, &mut loads, edges, traction_of(load, in_situ));
+        let nodes = (loads.iter_mut().enumerate())
+            .filter(|(_, f)| **f != [0.0; 2])
+            .map(|(n, f)| (n as u32, std::mem::take(f)))
+            .collect();
+        out.push((k, nodes));
+    }
+    out
+}
+
+/// The traction t(p, n) (Pa at point p, m, with outward unit normal n) of a load.
+fn traction_of(load: Load, in_situ: &InSituField) -> impl Fn([f64; 2], [f64; 2]) -> [f64; 2] + '_ {
+    move |p, n| match load {
+        Load::Stress(s) => traction(&[s.sxx, s.syy, 0.0, s.sxy], n),
+        Load::InSitu => traction(&in_situ.at(p[1]), n),
+        Load::NormalShear { normal, shear } => {
+            [normal * n[0] - shear * n[1], normal * n[1] + shear * n[0]]
+        }
+    }
 }
 
 fn fix_flags(f: Fix) -> u8 {
@@ -119,16 +168,9 @@ fn apply_condition(
     let Some(load) = load else {
         return Ok(());
     };
-    let traction = |p: [f64; 2], n: [f64; 2]| match load {
-        Load::Stress(s) => traction(&[s.sxx, s.syy, 0.0, s.sxy], n),
-        Load::InSitu => traction(&in_situ.at(p[1]), n),
-        Load::NormalShear { normal, shear } => {
-            [normal * n[0] - shear * n[1], normal * n[1] + shear * n[0]]
-        }
-    };
     let domain = &boundary.domain;
     let edges = (boundary.edges.iter()).filter(|e| edge_in_part(domain, e.kind, name));
-    add_tractions(nodes, edges, traction);
+    add_tractions(nodes, edges, traction_of(load, in_situ));
     Ok(())
 }
 

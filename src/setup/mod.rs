@@ -235,16 +235,19 @@ fn quiet(
     Ok(Some(crate::dynamics::QuietBoundary::new(&edges, &incident)))
 }
 
-/// The prescribed motions of `conditions` (the scene's `path`), `None` when none has one: each
-/// with the nodes of its part; an error naming the condition when a node is a rigid or simple
-/// block's (its velocity is the block's).
-fn motions(
+/// The dynamic inputs of `conditions` (the scene's `path`), `None` when none has any: each
+/// prescribed motion with the nodes of its part, each load history with its consistent nodal
+/// loads; an error naming the condition when a moving node is a rigid or simple block's (its
+/// velocity is the block's).
+fn inputs(
     conditions: &[BoundaryCondition],
     path: &str,
     boundary: &Boundary,
+    in_situ: &InSituField,
     model: &Model,
-) -> anyhow::Result<Option<crate::dynamics::Motions>> {
-    let mut parts = Vec::new();
+) -> anyhow::Result<Option<crate::dynamics::Inputs>> {
+    use crate::dynamics::{History, Motion, TimedLoad};
+    let mut inputs = crate::dynamics::Inputs::default();
     for (k, c) in conditions.iter().enumerate() {
         let (Some(spec), Some(name)) = (&c.motion, &c.part) else {
             continue;
@@ -264,9 +267,15 @@ fn motions(
                 p[1]
             );
         }
-        parts.push((spec, nodes));
+        inputs.motions.push(Motion::new(spec, nodes));
     }
-    Ok((!parts.is_empty()).then(|| crate::dynamics::Motions::new(&parts)))
+    for (k, forces) in boundary::history_loads(conditions, boundary, in_situ, &model.nodes.pos) {
+        let history = conditions[k].history.as_ref().expect("a load history");
+        inputs
+            .loads
+            .push(TimedLoad::new(History::of(history), forces));
+    }
+    Ok((!inputs.is_empty()).then_some(inputs))
 }
 
 /// What `of` makes of the list of boundary conditions in force during each stage (the one stage
@@ -426,7 +435,7 @@ pub fn setup_meshed(scene: &Scene, meshed: Meshed) -> anyhow::Result<Setup> {
         far_field: None,
         far_gather: Gather::default(),
         quiet: None,
-        motions: None,
+        inputs: None,
         mixed,
         materials: Materials {
             zone: zone_laws.laws,
@@ -451,7 +460,7 @@ pub fn setup_meshed(scene: &Scene, meshed: Meshed) -> anyhow::Result<Setup> {
         None => Gather::from_slots(model.nodes.len(), &[]),
     };
     let stage_quiet = per_stage(scene, |l, p| quiet(l, p, &boundary, &model))?;
-    let stage_motions = per_stage(scene, |l, p| motions(l, p, &boundary, &model))?;
+    let stage_inputs = per_stage(scene, |l, p| inputs(l, p, &boundary, &in_situ, &model))?;
     let (zones, laws) = (&model.zones, &model.materials.zone);
     warnings.extend(warnings::coarse_for_waves(
         scene,
@@ -484,7 +493,7 @@ pub fn setup_meshed(scene: &Scene, meshed: Meshed) -> anyhow::Result<Setup> {
             initial_boundary: initial,
             stage_boundary,
             stage_quiet,
-            stage_motions,
+            stage_inputs,
         },
     )?;
     install_from_start(&mut model.supports, &plan, &model.nodes.disp);

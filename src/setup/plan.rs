@@ -58,8 +58,9 @@ pub struct StagePlan {
     pub boundary: Option<BoundaryEffect>,
     /// The quiet boundary of the conditions in force during this stage, if they have one.
     pub quiet: Option<crate::dynamics::QuietBoundary>,
-    /// The prescribed motions of the conditions in force during this stage, if they have any.
-    pub motions: Option<crate::dynamics::Motions>,
+    /// The prescribed motions and load histories of the conditions in force during this stage,
+    /// if they have any.
+    pub inputs: Option<crate::dynamics::Inputs>,
     /// Bolt groups and liners installed, after the excavations.
     pub install: Vec<SupportId>,
     /// Fraction of the in-situ traction left on the walls of every excavation made so far.
@@ -107,8 +108,8 @@ pub(super) struct Resolved<'a> {
     pub(crate) stage_boundary: Vec<Option<BoundaryEffect>>,
     /// The quiet boundary in force during each stage, if any.
     pub(crate) stage_quiet: Vec<Option<crate::dynamics::QuietBoundary>>,
-    /// The prescribed motions in force during each stage, if any.
-    pub(crate) stage_motions: Vec<Option<crate::dynamics::Motions>>,
+    /// The prescribed motions and load histories in force during each stage, if any.
+    pub(crate) stage_inputs: Vec<Option<crate::dynamics::Inputs>>,
 }
 
 impl Plan {
@@ -134,7 +135,7 @@ impl Plan {
         let mut plans = Vec::with_capacity(stages.len());
         let mut stage_boundary = r.stage_boundary.into_iter();
         let mut stage_quiet = r.stage_quiet.into_iter();
-        let mut stage_motions = r.stage_motions.into_iter();
+        let mut stage_inputs = r.stage_inputs.into_iter();
         for (i, st) in stages.iter().enumerate() {
             let p = format!("stages[{i}]");
             plans.push(StagePlan {
@@ -164,7 +165,7 @@ impl Plan {
                     .collect::<anyhow::Result<_>>()?,
                 boundary: stage_boundary.next().flatten(),
                 quiet: stage_quiet.next().flatten(),
-                motions: stage_motions.next().flatten(),
+                inputs: stage_inputs.next().flatten(),
                 install: st
                     .install
                     .iter()

@@ -233,7 +233,7 @@ pub(super) fn unbalanced_in_situ(scene: &Scene, rho: f64) -> Option<String> {
 /// 99(SM5): Δl ≤ λ/10 to λ/8, λ the wavelength of the highest frequency the wave carries).
 const ZONES_PER_WAVELENGTH: f64 = 8.0;
 
-/// A warning when the scene's incident waves and prescribed motions carry frequencies whose shear wavelength, in the
+/// A warning when the scene's incident waves, prescribed motions and load histories carry frequencies whose shear wavelength, in the
 /// rock each zone is of, spans fewer than `ZONES_PER_WAVELENGTH` of that zone's longest edge
 /// (shear: the slowest wave, which a wave turns partly into wherever it meets a boundary or a
 /// joint), saying how many zones and by how much.
@@ -251,6 +251,7 @@ pub(super) fn coarse_for_waves(
             c.incident.as_ref().map(|w| w.history()),
             motion.and_then(|m| m.velocity.clone()),
             motion.and_then(|m| m.acceleration.clone()),
+            c.history.clone(),
         ]
         .into_iter()
         .flatten()
@@ -284,7 +285,7 @@ pub(super) fn coarse_for_waves(
     }
     (coarse > 0).then(|| {
         format!(
-            "the incident waves and prescribed motions carry frequencies up to {highest:.1} Hz, whose shear wavelength \
+            "the incident waves, prescribed motions and load histories carry frequencies up to {highest:.1} Hz, whose shear wavelength \
              spans fewer than {ZONES_PER_WAVELENGTH} zone edges in {coarse} of {} zones (at \
              worst an edge of {:.3} m against a wavelength of {:.3} m): waves through them are \
              distorted (Kuhlemeyer & Lysmer 1973: an edge at most a tenth to an eighth of the \

@@ -583,8 +583,9 @@ fn quiet_boundaries_and_waves_out_of_place_are_refused() {
 
 /// A prescribed motion in force during a static solve, on a quiet part, on a component the part
 /// also fixes, a point's, with both a velocity and an acceleration or neither, a baseline on a
-/// velocity, an unending sine acceleration, or on a rigid block's nodes: refused naming the
-/// field, before any solve.
+/// velocity, an unending sine acceleration, or on a rigid block's nodes; a load history in a
+/// static solve, without a load or without its amplitude: refused naming the field, before any
+/// solve.
 #[test]
 fn prescribed_motions_out_of_place_are_refused() {
     let column = |base: Value, solve: Value| {
@@ -652,6 +653,23 @@ fn prescribed_motions_out_of_place_are_refused() {
     refused(
         &column(base(&unending, json!({})), dynamic.clone()),
         "boundary[0].motion.acceleration.cycles",
+    );
+    let pulse = json!({ "pulse": "ricker", "amplitude": 1, "frequency": 20 });
+    let loaded = json!({ "part": "base", "normal_stress": -1e6, "history": pulse });
+    let err = refused(&column(loaded.clone(), json!({})), "boundary[0].history");
+    assert!(err.contains("dynamic"), "{err}");
+    refused(
+        &column(
+            json!({ "part": "base", "fix": "y", "history": pulse }),
+            dynamic.clone(),
+        ),
+        "boundary[0].history",
+    );
+    let mut silent = loaded;
+    silent["history"] = json!({ "pulse": "ricker", "frequency": 20 });
+    refused(
+        &column(silent, dynamic.clone()),
+        "boundary[0].history.amplitude",
     );
     let mut rigid = column(base(&shake, json!({})), dynamic.clone());
     rigid["blocks"] = json!({ "mode": "rigid" });

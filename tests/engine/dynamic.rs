@@ -102,7 +102,7 @@ fn zones_too_coarse_for_the_incident_wave_are_warned() {
     };
     let warned = |frequency: f64| {
         (setup(&scene(frequency)).unwrap().warnings.iter())
-            .any(|w| w.contains("prescribed motions carry frequencies up to"))
+            .any(|w| w.contains("load histories carry frequencies up to"))
     };
     // Cs = 1 265 m/s: at 40 Hz the Ricker's highest frequency is 96 Hz, its shear wavelength
     // 13 m (13 zone edges of about 1 m); at 100 Hz, 5.3 m.
