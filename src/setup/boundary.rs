@@ -80,14 +80,17 @@ pub fn boundary_effect(
     Ok((scratch.fixed, scratch.applied))
 }
 
+/// Nodes and the load on each, N/m.
+pub type NodalLoads = Vec<(u32, [f64; 2])>;
+
 /// The consistent nodal loads (N/m at h = 1) of each condition of `conditions` with a load
-/// history, with its history, as `(k, loads)`: the nodes its traction loads, ascending.
+/// history, as `(k, loads)`: the nodes its traction loads, ascending.
 pub fn history_loads(
     conditions: &[BoundaryCondition],
     boundary: &Boundary,
     in_situ: &InSituField,
     pos: &[[f64; 2]],
-) -> Vec<(usize, Vec<(u32, [f64; 2])>)> {
+) -> Vec<(usize, NodalLoads)> {
     let mut out = Vec::new();
     let mut loads = vec![[0.0; 2]; pos.len()];
     for (k, bc) in conditions.iter().enumerate() {
