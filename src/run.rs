@@ -735,6 +735,7 @@ fn build_solve_write(
         reactions,
         bolts: built.model.supports.cables.bolt_loads(),
         liners,
+        peak_particle_velocity: crate::output::PeakVelocity::of(&built.model),
         far_field: built.model.far_field.as_ref().map(FarFieldSummary::of),
     };
     writer.write_summary(&summary)?;

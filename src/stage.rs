@@ -82,6 +82,9 @@ impl Staging {
             inputs.stop(&mut model.nodes.vel, &mut model.nodes.applied);
         }
         model.inputs = stage.inputs.clone();
+        if stage.solve.mode == crate::scene::SolveMode::Dynamic && model.peaks.is_none() {
+            model.peaks = Some(crate::dynamics::Peaks::new(model.nodes.len()));
+        }
         if let Some((nodes, before, reactions)) = held {
             hold_reactions(model, &nodes, &before, &reactions);
         }

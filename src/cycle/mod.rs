@@ -248,6 +248,7 @@ impl Cycle {
             materials,
             quiet,
             inputs,
+            peaks,
             ..
         } = model;
         let (laws, joint_laws) = (&materials.zone, &materials.joint);
@@ -289,6 +290,9 @@ impl Cycle {
                 },
             };
             speed = speed.max(q.absorb(moving, p.dt, self.time));
+        }
+        if let Some(peaks) = peaks.as_mut() {
+            peaks.record(&nodes.vel);
         }
         self.time += p.dt;
         self.moved += speed * p.dt;

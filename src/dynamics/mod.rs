@@ -4,7 +4,8 @@
 //! wave given as a particle-velocity history (`history.rs`) enters through it as the force of the
 //! stress 2ρC v; a part with a prescribed motion has one velocity component follow a velocity or
 //! an integrated acceleration history (`motion.rs`), a part with a load history its traction
-//! scaled by it (`load.rs`), both the list's `Inputs`. The mechanical cycle knows this physics only
+//! scaled by it (`load.rs`), both the list's `Inputs`; every node's peak particle velocity is
+//! kept over the dynamic stages (`peaks.rs`). The mechanical cycle knows this physics only
 //! through its stages around the motion update (`Cycle::run`); a scene without them pays nothing
 //! for it.
 
@@ -12,6 +13,7 @@ mod history;
 mod inputs;
 mod load;
 mod motion;
+mod peaks;
 mod quiet;
 
 pub use history::History;
@@ -19,5 +21,6 @@ pub use inputs::Inputs;
 pub(crate) use load::TimedLoad;
 pub use motion::Integrated;
 pub(crate) use motion::Motion;
+pub use peaks::Peaks;
 pub(crate) use quiet::Moving;
 pub use quiet::{QuietBoundary, QuietEdge};

@@ -100,4 +100,7 @@ pub struct Model {
     /// The prescribed motions and load histories in force (`dynamics::Inputs`: dynamic stages
     /// only), if any.
     pub inputs: Option<crate::dynamics::Inputs>,
+    /// Each node's peak particle velocity over the dynamic stages so far (`None` before the
+    /// first).
+    pub peaks: Option<crate::dynamics::Peaks>,
 }

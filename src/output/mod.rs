@@ -583,9 +583,35 @@ pub struct Summary {
     /// safety (absent without liners).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub liners: Vec<crate::support::LinerLoad>,
+    /// The largest peak particle velocity over the dynamic stages and where (absent without a
+    /// dynamic stage).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub peak_particle_velocity: Option<PeakVelocity>,
     /// The far field's interface and what condensing it cost (absent without one).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub far_field: Option<FarFieldSummary>,
+}
+
+/// `summary.json`'s `peak_particle_velocity`: the largest of the nodes' peak speeds (the `ppv`
+/// point field).
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct PeakVelocity {
+    /// m/s.
+    pub largest_m_per_s: f64,
+    /// Where: the node's current position, m.
+    pub at_m: [f64; 2],
+}
+
+impl PeakVelocity {
+    /// The largest peak of `model`'s, if it keeps them.
+    pub fn of(model: &crate::model::Model) -> Option<PeakVelocity> {
+        let (n, largest) = model.peaks.as_ref()?.largest()?;
+        let (p, u) = (model.nodes.pos[n as usize], model.nodes.disp[n as usize]);
+        Some(PeakVelocity {
+            largest_m_per_s: largest,
+            at_m: [p[0] + u[0], p[1] + u[1]],
+        })
+    }
 }
 
 /// `summary.json`'s `far_field`.

@@ -115,6 +115,24 @@ pub fn zones_vtu(model: &Model, labels: &Labels) -> Result<Vec<u8>, vtkio::Error
     let (sigma1_nodal, sigma3_nodal): (Vec<f64>, Vec<f64>) = nodal.iter().map(principal).unzip();
     let int = |f: &dyn Fn(&Cell) -> i32| -> Vec<i32> { cells.iter().map(f).collect() };
     let vec3 = |v: &[[f64; 2]]| -> Vec<f64> { v.iter().flat_map(|p| [p[0], p[1], 0.0]).collect() };
+    let mut point = vec![
+        Attribute::generic("displacement", 3).with_data(
+            nodes
+                .disp
+                .iter()
+                .zip(&nodes.origin)
+                .flat_map(|(u, o)| [u[0] - o[0], u[1] - o[1], 0.0])
+                .collect::<Vec<f64>>(),
+        ),
+        Attribute::generic("velocity", 3).with_data(vec3(&nodes.vel)),
+        Attribute::generic("stress_nodal", 9)
+            .with_data(nodal.iter().flat_map(tensor).collect::<Vec<f64>>()),
+        Attribute::generic("sigma1_nodal", 1).with_data(sigma1_nodal),
+        Attribute::generic("sigma3_nodal", 1).with_data(sigma3_nodal),
+    ];
+    if let Some(peaks) = &model.peaks {
+        point.push(Attribute::generic("ppv", 1).with_data(peaks.speed.clone()));
+    }
     let piece = UnstructuredGridPiece {
         points: points.into(),
         cells: Cells {
@@ -125,21 +143,7 @@ pub fn zones_vtu(model: &Model, labels: &Labels) -> Result<Vec<u8>, vtkio::Error
             types: vec![CellType::Triangle; cells.len()],
         },
         data: Attributes {
-            point: vec![
-                Attribute::generic("displacement", 3).with_data(
-                    nodes
-                        .disp
-                        .iter()
-                        .zip(&nodes.origin)
-                        .flat_map(|(u, o)| [u[0] - o[0], u[1] - o[1], 0.0])
-                        .collect::<Vec<f64>>(),
-                ),
-                Attribute::generic("velocity", 3).with_data(vec3(&nodes.vel)),
-                Attribute::generic("stress_nodal", 9)
-                    .with_data(nodal.iter().flat_map(tensor).collect::<Vec<f64>>()),
-                Attribute::generic("sigma1_nodal", 1).with_data(sigma1_nodal),
-                Attribute::generic("sigma3_nodal", 1).with_data(sigma3_nodal),
-            ],
+            point,
             cell: vec![
                 Attribute::generic("stress", 9).with_data(stress),
                 Attribute::generic("sigma1", 1).with_data(sigma1),

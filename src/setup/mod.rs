@@ -436,6 +436,7 @@ pub fn setup_meshed(scene: &Scene, meshed: Meshed) -> anyhow::Result<Setup> {
         far_gather: Gather::default(),
         quiet: None,
         inputs: None,
+        peaks: None,
         mixed,
         materials: Materials {
             zone: zone_laws.laws,

@@ -143,7 +143,10 @@ impl Case for Quiet {
              on the top of the same column 60 m tall, its base quiet: the plane P wave it sends \
              down moves the rock at v = −p(t − (H − y)/Cp)/(ρCp). `waveform` is the largest \
              departure of the velocity at mid-height from it over the record, over its peak \
-             (0.183 m/s). Bar (ours; issue 50 sets none for a load history): within {} %.\n",
+             (0.183 m/s); `ppv` the relative error of the largest peak particle velocity \
+             (`summary.json`'s `peak_particle_velocity`, the `ppv` point field's largest: the \
+             loaded top's, p/(ρCp) there too). Bar (ours; issue 50 sets none for a load history \
+             or the PPV): both within {} %.\n",
             100.0 * PULSE_BAR
         );
         table(&mut md, &pulses);
