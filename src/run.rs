@@ -12,7 +12,7 @@ use crate::model::bodies::BodyMode;
 use crate::output::atomic::write_atomic;
 use crate::output::histories::{Probes, Samples};
 use crate::output::{FarFieldSummary, OutputWriter, StageSummary, Summary, measured};
-use crate::scene::Scene;
+use crate::scene::{OutputSpec, Scene};
 use crate::scene::{SolveMethod, SolveMode};
 use crate::setup::StagePlan;
 use crate::setup::{Plan, Setup, setup};
@@ -130,6 +130,14 @@ fn hand_over(asked: SolveMethod, solution: &Solution, sound: bool) -> Option<Str
         Status::Failed(reason) => Some(reason.clone()),
         Status::Converged | Status::Completed | Status::Interrupted => None,
     }
+}
+
+/// The solver of `stage`: its masses and time step, with intermediate output steps as `output`
+/// times them for its mode (`OutputSpec::cycles_between`).
+fn stage_solver(model: &mut Model, stage: &StagePlan, output: &OutputSpec) -> Solver {
+    let mut solver = Solver::new(model, &stage.solve, 0);
+    solver.output_every = output.cycles_between(&stage.solve, solver.params.dt);
+    solver
 }
 
 /// A solve needs a finite time step: something with stiffness to derive it from.
@@ -500,7 +508,7 @@ fn build_solve_write(
     for (i, stage) in plan.stages.iter().enumerate().skip(first) {
         staging.apply(stage, model, plan);
         writer.set_stage(i, &stage.name);
-        let mut solver = Solver::new(model, &stage.solve, scene.output.every);
+        let mut solver = stage_solver(model, stage, &scene.output);
         ensure_time_step(&solver)?;
         smallest.tighten(solver.step, i);
         let spec = &stage.solve;
@@ -541,7 +549,7 @@ fn build_solve_write(
                     // `auto`: what the iterations could not settle, explicit cycling relaxes from
                     // where they left the model.
                     Some(reason) => {
-                        solver = Solver::new(model, &stage.solve, scene.output.every);
+                        solver = stage_solver(model, stage, &scene.output);
                         ensure_time_step(&solver)?;
                         writing.offset += solution.cycles;
                         let rest = solver.solve(model, &mut writing);

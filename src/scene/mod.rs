@@ -1333,6 +1333,9 @@ pub struct OutputSpec {
     pub folder: Option<String>,
     /// Cycles between intermediate output steps; 0 = only at the end (default 0).
     pub every: u64,
+    /// Simulated seconds between intermediate output steps of dynamic stages (the nearest whole
+    /// number of steps, at least one); `every` then counts for the static stages alone.
+    pub interval: Option<f64>,
     /// Whether each stage that ends leaves its checkpoint (`checkpoints/stage_NN.ckpt`, what
     /// `adit run --from-stage` goes on from; default true). A run of many realizations that will
     /// not be restarted by stage can leave them out (`models/tunnel.json`: 1.1 MB a stage).
@@ -1344,7 +1347,21 @@ impl Default for OutputSpec {
         OutputSpec {
             folder: None,
             every: 0,
+            interval: None,
             checkpoints: true,
+        }
+    }
+}
+
+impl OutputSpec {
+    /// Cycles between intermediate output steps of a solve `spec` with time step `dt` (s): in
+    /// a dynamic solve with an `interval`, interval/Δt rounded (at least 1), else `every`.
+    pub fn cycles_between(&self, spec: &SolveSpec, dt: f64) -> u64 {
+        match self.interval {
+            Some(i) if spec.mode == SolveMode::Dynamic && dt > 0.0 => {
+                ((i / dt).round() as u64).max(1)
+            }
+            _ => self.every,
         }
     }
 }

@@ -491,6 +491,9 @@ fn validate_history(
     Ok(())
 }
 
+/// The most cycles of a sine acceleration that a motion integrates.
+const MAX_INTEGRATED_CYCLES: f64 = 5000.0;
+
 /// A prescribed motion at `p` of the condition `bc`: a part's, not quiet, its direction not also
 /// fixed; one of a velocity and an acceleration history; a baseline correction only of an
 /// acceleration, and an acceleration integrated over a record that ends (not an unending sine).
@@ -534,11 +537,27 @@ fn validate_motion(
         (None, Some(a)) => {
             let q = format!("{p}.acceleration");
             validate_history(&q, a, "amplitude", "m/s²")?;
-            if a.pulse == Some(super::PulseKind::Sine) && a.cycles.is_none() {
-                return Err(invalid(
-                    format!("{q}.cycles"),
-                    "an acceleration is integrated over its record: give the sine its cycles",
-                ));
+            if a.pulse == Some(super::PulseKind::Sine) {
+                match a.cycles {
+                    None => {
+                        return Err(invalid(
+                            format!("{q}.cycles"),
+                            "an acceleration is integrated over its record: give the sine its cycles",
+                        ));
+                    }
+                    // Sampled 200 times a cycle (`dynamics::Integrated`).
+                    Some(c) if c > MAX_INTEGRATED_CYCLES => {
+                        return Err(invalid(
+                            format!("{q}.cycles"),
+                            format!(
+                                "at most {MAX_INTEGRATED_CYCLES} cycles of an acceleration are \
+                                 integrated (200 samples each), got {}",
+                                Num(c)
+                            ),
+                        ));
+                    }
+                    Some(_) => {}
+                }
             }
         }
         _ => return Err(invalid(p, "give one of `velocity` and `acceleration`")),
@@ -889,6 +908,7 @@ impl Scene {
         }
         validate_solve("solve", &self.solve)?;
         self.validate_quiet_stages()?;
+        self.validate_output_interval()?;
         let large = self.solve.large_strain
             || self
                 .stages
@@ -1143,6 +1163,25 @@ impl Scene {
             if v.is_some_and(|v| !v.is_finite()) {
                 return Err(invalid(format!("{p}.{f}"), "must be finite"));
             }
+        }
+        Ok(())
+    }
+
+    /// `output.interval`: positive and finite, and some solve dynamic (it times their output).
+    fn validate_output_interval(&self) -> Result<(), SceneError> {
+        let Some(i) = self.output.interval else {
+            return Ok(());
+        };
+        positive("output.interval", i)?;
+        let dynamic = std::iter::once(&self.solve)
+            .chain(self.stages.iter().filter_map(|s| s.solve.as_ref()))
+            .any(|s| s.mode == SolveMode::Dynamic);
+        if !dynamic {
+            return Err(invalid(
+                "output.interval",
+                "times the output of dynamic solves, and no solve is dynamic; `every` counts \
+                 cycles of static ones",
+            ));
         }
         Ok(())
     }

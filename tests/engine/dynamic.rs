@@ -109,3 +109,48 @@ fn zones_too_coarse_for_the_incident_wave_are_warned() {
     assert!(!warned(40.0));
     assert!(warned(100.0));
 }
+
+/// `output.interval` writes a dynamic stage's steps every interval of simulated time: a stage of
+/// 0.01 s at 0.002 s writes four or five intermediate steps (the interval rounded to whole time
+/// steps) and the final one; a scene without a dynamic solve refuses it.
+#[test]
+fn a_dynamic_stage_writes_its_steps_at_the_interval() {
+    let mut text = serde_json::json!({
+        "name": "interval",
+        "materials": { "rock": { "density": 2500, "young": 1e10, "poisson": 0.25 } },
+        "region": { "polygon": [[0, 0], [2, 0], [2, 10], [0, 10]],
+                    "edge_names": ["base", "right", "top", "left"], "material": "rock" },
+        "zoning": { "edge_at_excavation": 1, "edge_far": 1 },
+        "boundary": [{ "part": "base", "quiet": true },
+                     { "part": "top", "normal_stress": -1e6,
+                       "history": { "pulse": "ricker", "amplitude": 1, "frequency": 100 } }],
+        "solve": { "mode": "dynamic", "duration": 0.01 },
+        "output": { "interval": 0.002, "checkpoints": false }
+    });
+    let dir = std::env::temp_dir().join(format!("adit-interval-{}", std::process::id()));
+    let scene = Scene::from_json(&text.to_string(), "interval").unwrap();
+    let result = adit::run_scene(&scene, &dir, &mut adit::solve::Quiet).unwrap();
+    let steps = std::fs::read_dir(&dir)
+        .unwrap()
+        .filter(|e| {
+            let name = e.as_ref().unwrap().file_name();
+            let name = name.to_string_lossy();
+            name.starts_with("interval_zones_") && name.ends_with(".vtu")
+        })
+        .count();
+    std::fs::remove_dir_all(&dir).unwrap();
+    let dt = result.summary.timestep;
+    let every = (0.002 / dt).round() as u64;
+    // Intermediate steps at the multiples of `every` before the last cycle, then the final one.
+    let expected = ((result.summary.cycles - 1) / every) as usize + 1;
+    assert!(
+        steps == expected && (5..=6).contains(&steps),
+        "{steps} steps, {expected} expected"
+    );
+    text["solve"] = serde_json::json!({});
+    text["boundary"] = serde_json::json!([{ "part": "base", "fix": "xy" }]);
+    let e = Scene::from_json(&text.to_string(), "interval")
+        .err()
+        .unwrap();
+    assert!(e.to_string().starts_with("output.interval"), "{e}");
+}
