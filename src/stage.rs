@@ -82,9 +82,19 @@ impl Staging {
             inputs.stop(&mut model.nodes.vel, &mut model.nodes.applied);
         }
         model.inputs = stage.inputs.clone();
-        if stage.solve.mode == crate::scene::SolveMode::Dynamic && model.peaks.is_none() {
+        let dynamic = stage.solve.mode == crate::scene::SolveMode::Dynamic;
+        if dynamic && model.peaks.is_none() {
             model.peaks = Some(crate::dynamics::Peaks::new(model.nodes.len()));
         }
+        model.energy = (dynamic && plan.energy).then(|| {
+            let (nodes, bodies) = (&model.nodes, &model.bodies);
+            crate::dynamics::Energy::start(
+                &nodes.vel,
+                &bodies.velocity,
+                &nodes.applied,
+                &model.zones.stress,
+            )
+        });
         if let Some((nodes, before, reactions)) = held {
             hold_reactions(model, &nodes, &before, &reactions);
         }

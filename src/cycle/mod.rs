@@ -249,6 +249,7 @@ impl Cycle {
             quiet,
             inputs,
             peaks,
+            energy,
             ..
         } = model;
         let (laws, joint_laws) = (&materials.zone, &materials.joint);
@@ -274,6 +275,9 @@ impl Cycle {
         if let Some(i) = inputs.as_mut() {
             i.impose(&mut nodes.vel, &mut nodes.applied, self.time, p.dt);
         }
+        if let Some(e) = energy.as_mut() {
+            e.remember(&nodes.vel, &bodies.velocity);
+        }
         let mut speed = self
             .motion(nodes, &gathers, p)
             .max(self.body_motion(nodes, bodies, laws, p));
@@ -293,6 +297,24 @@ impl Cycle {
         }
         if let Some(peaks) = peaks.as_mut() {
             peaks.record(&nodes.vel);
+        }
+        if let Some(e) = energy.as_mut() {
+            let (fixed, of_node) = (&nodes.fixed, &bodies.of_node);
+            let stepped = crate::dynamics::Stepped {
+                mass: &nodes.mass,
+                vel: &nodes.vel,
+                applied: &nodes.applied,
+                free: |n: usize| {
+                    let f = fixed[n];
+                    (of_node
+                        .get(n)
+                        .is_none_or(|&b| b == crate::model::bodies::NO_BODY))
+                    .then_some([f & FIX_X == 0, f & FIX_Y == 0])
+                },
+                body_mass: &bodies.mass,
+                body_vel: &bodies.velocity,
+            };
+            e.account(stepped, p.dt);
         }
         self.time += p.dt;
         self.moved += speed * p.dt;

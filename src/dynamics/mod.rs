@@ -5,10 +5,12 @@
 //! stress 2ρC v; a part with a prescribed motion has one velocity component follow a velocity or
 //! an integrated acceleration history (`motion.rs`), a part with a load history its traction
 //! scaled by it (`load.rs`), both the list's `Inputs`; every node's peak particle velocity is
-//! kept over the dynamic stages (`peaks.rs`). The mechanical cycle knows this physics only
+//! kept over the dynamic stages (`peaks.rs`), and the energy balance of a stage when a history
+//! asks for it (`energy.rs`). The mechanical cycle knows this physics only
 //! through its stages around the motion update (`Cycle::run`); a scene without them pays nothing
 //! for it.
 
+mod energy;
 mod history;
 mod inputs;
 mod load;
@@ -16,6 +18,8 @@ mod motion;
 mod peaks;
 mod quiet;
 
+pub(crate) use energy::Stepped;
+pub use energy::{Balance, Energy};
 pub use history::History;
 pub use inputs::Inputs;
 pub(crate) use load::TimedLoad;

@@ -36,6 +36,14 @@ pub struct QuietBoundary {
     /// The energy each node's dashpots have absorbed since the stage began, J/m:
     /// Σ Δt v̄ᵀ C v̄ with v̄ = (v⁺ + v⁻)/2, the velocity the centred dashpot force −C v̄ acts at.
     pub absorbed: Vec<f64>,
+    /// The work the boundary's forces (dashpots and incident waves, G = C (2vᵢ d − v̄)) have done
+    /// on the model since the stage began, J/m, by the trapezoid the energy balance takes for
+    /// every force (`dynamics::Energy`): Σ ½(G_{n−1} + G_n)·v_{n−½} Δt, from the stage's second
+    /// step on.
+    exchanged: f64,
+    /// Each node's boundary force at the last step, N/m, and the steps so far.
+    last_force: Vec<[f64; 2]>,
+    steps: u64,
     /// The incident waves.
     incident: Vec<Wave>,
     /// Each node's velocity before the motion stage, m/s (scratch).
@@ -129,12 +137,21 @@ impl QuietBoundary {
         let driving = before.clone();
         QuietBoundary {
             absorbed: vec![0.0; nodes.len()],
+            exchanged: 0.0,
+            last_force: vec![[0.0; 2]; nodes.len()],
+            steps: 0,
             nodes,
             dashpot,
             incident,
             before,
             driving,
         }
+    }
+
+    /// The net energy that has left through the boundary since the stage began, J/m: what its
+    /// dashpots absorbed less what its incident waves brought in (`exchanged`, negated).
+    pub fn net_outflow(&self) -> f64 {
+        -self.exchanged
     }
 
     /// Before the motion stage: keep each quiet node's velocity v⁻.
@@ -214,7 +231,19 @@ impl QuietBoundary {
                 * (c[0] * mean[0] * mean[0]
                     + 2.0 * c[1] * mean[0] * mean[1]
                     + c[2] * mean[1] * mean[1]);
+            let force = [
+                driving[i][0] - (c[0] * mean[0] + c[1] * mean[1]),
+                driving[i][1] - (c[1] * mean[0] + c[2] * mean[1]),
+            ];
+            if self.steps > 0 {
+                let last = self.last_force[i];
+                self.exchanged += 0.5
+                    * dt
+                    * ((last[0] + force[0]) * before[0] + (last[1] + force[1]) * before[1]);
+            }
+            self.last_force[i] = force;
         }
+        self.steps += 1;
         fastest
     }
 }

@@ -103,4 +103,6 @@ pub struct Model {
     /// Each node's peak particle velocity over the dynamic stages so far (`None` before the
     /// first).
     pub peaks: Option<crate::dynamics::Peaks>,
+    /// The energy balance of the dynamic stage in progress, when a history asks for it.
+    pub energy: Option<crate::dynamics::Energy>,
 }

@@ -5,7 +5,8 @@
 //! A point is found once, when the run starts: the node nearest it (displacement, velocity;
 //! displacements since the last `reset_displacements`, as the output shows them), the zone that
 //! holds it or else the zone whose centroid is nearest (stress; an excavated zone holds none), the
-//! bolt segment or liner element whose middle is nearest (support forces, per bolt and per set).
+//! bolt segment or liner element whose middle is nearest (support forces, per bolt and per set);
+//! the energy balance's terms are the whole model's (`dynamics::Energy`).
 
 use std::io::Write;
 
@@ -79,12 +80,13 @@ impl Probes {
     /// The node, zone, segment or element `h` reads.
     fn find(h: &HistorySpec, model: &Model, fill: &[u32]) -> Option<usize> {
         use HistoryQuantity as Q;
+        let at = h.at.unwrap_or_default();
         let nodes = &model.nodes.pos;
         let blocks = &model.blocks;
         let rock = |b: usize| fill.get(b).is_none_or(|&f| f == NOT_FILL);
         // The nearest of `items` (by `place`) that lie in rock, as an index among all.
         let nearest_in_rock = |items: Vec<usize>, place: &dyn Fn(usize) -> [f64; 2]| {
-            let k = nearest(items.iter().map(|&i| place(i)), h.at)?;
+            let k = nearest(items.iter().map(|&i| place(i)), at)?;
             Some(items[k])
         };
         match h.quantity {
@@ -101,7 +103,7 @@ impl Probes {
                     .filter(|&z| rock(blocks.block_of_node(zones.nodes[z][0])))
                     .collect();
                 (candidates.iter().copied())
-                    .find(|&z| in_triangle(corners(z), h.at))
+                    .find(|&z| in_triangle(corners(z), at))
                     .or_else(|| nearest_in_rock(candidates, &|z| zones.centroid(z, nodes)))
             }
             Q::BoltForce => {
@@ -110,12 +112,17 @@ impl Probes {
                     let [a, b] = s.map(|n| c.pos[n as usize]);
                     [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])]
                 };
-                nearest(c.segment.iter().map(middle), h.at)
+                nearest(c.segment.iter().map(middle), at)
             }
             Q::LinerThrust | Q::LinerMoment => {
                 let l = &model.supports.liners;
-                nearest((0..l.element.len()).map(|e| l.middle(e)), h.at)
+                nearest((0..l.element.len()).map(|e| l.middle(e)), at)
             }
+            Q::KineticEnergy
+            | Q::StrainEnergy
+            | Q::BoundaryWork
+            | Q::QuietEnergy
+            | Q::EnergyError => Some(0),
         }
     }
 
@@ -142,6 +149,13 @@ impl Probes {
             let (u, o) = (nodes.disp[n], nodes.origin[n]);
             [u[0] - o[0], u[1] - o[1]]
         };
+        let balance = model.energy.as_ref().map(|e| {
+            let laws = &model.materials.zone;
+            let quiet = model.quiet.as_ref().map_or(0.0, |q| q.net_outflow());
+            let moduli = |z: usize| laws[zones.material[z].0 as usize].moduli();
+            e.balance(&zones.stress, &zones.area, moduli, quiet)
+        });
+        let term = |f: fn(&crate::dynamics::Balance) -> f64| balance.as_ref().map_or(0.0, f);
         (self.probes.iter())
             .map(|p| match p.quantity {
                 Q::DisplacementX => moved(p.at)[0],
@@ -161,6 +175,11 @@ impl Probes {
                     let [a, b] = liners.section_forces(p.at);
                     0.5 * (a.moment + b.moment)
                 }
+                Q::KineticEnergy => term(|b| b.kinetic),
+                Q::StrainEnergy => term(|b| b.strain),
+                Q::BoundaryWork => term(|b| b.boundary_work),
+                Q::QuietEnergy => term(|b| b.quiet),
+                Q::EnergyError => term(|b| b.error),
             })
             .collect()
     }

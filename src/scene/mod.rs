@@ -98,8 +98,10 @@ pub struct HistorySpec {
     /// Name, the start of its column in `histories.csv`.
     pub name: String,
     /// The point, m: the node nearest it (displacement, velocity), the zone holding it (stress),
-    /// the bolt segment or liner element whose middle is nearest it (support forces).
-    pub at: [f64; 2],
+    /// the bolt segment or liner element whose middle is nearest it (support forces); none for
+    /// the energy balance's terms (`HistoryQuantity::is_energy`).
+    #[serde(default)]
+    pub at: Option<[f64; 2]>,
     /// What is recorded.
     pub quantity: HistoryQuantity,
 }
@@ -126,6 +128,15 @@ pub enum HistoryQuantity {
     /// per set, N·m.
     LinerThrust,
     LinerMoment,
+    /// The energy balance of a dynamic stage, J/m, of the whole model (no `at`): kinetic
+    /// energy, strain energy since the stage began, work of the applied loads, net energy out
+    /// through quiet boundaries, and the work less the rest (`dynamics::Energy`); 0 in static
+    /// stages.
+    KineticEnergy,
+    StrainEnergy,
+    BoundaryWork,
+    QuietEnergy,
+    EnergyError,
 }
 
 impl HistoryQuantity {
@@ -143,7 +154,24 @@ impl HistoryQuantity {
             HistoryQuantity::BoltForce => "bolt_force_n",
             HistoryQuantity::LinerThrust => "liner_thrust_n",
             HistoryQuantity::LinerMoment => "liner_moment_n_m",
+            HistoryQuantity::KineticEnergy => "kinetic_energy_j_per_m",
+            HistoryQuantity::StrainEnergy => "strain_energy_j_per_m",
+            HistoryQuantity::BoundaryWork => "boundary_work_j_per_m",
+            HistoryQuantity::QuietEnergy => "quiet_energy_j_per_m",
+            HistoryQuantity::EnergyError => "energy_error_j_per_m",
         }
+    }
+
+    /// Whether it is a term of the energy balance (read of the whole model, without `at`).
+    pub fn is_energy(self) -> bool {
+        matches!(
+            self,
+            HistoryQuantity::KineticEnergy
+                | HistoryQuantity::StrainEnergy
+                | HistoryQuantity::BoundaryWork
+                | HistoryQuantity::QuietEnergy
+                | HistoryQuantity::EnergyError
+        )
     }
 }
 

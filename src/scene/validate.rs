@@ -929,8 +929,8 @@ impl Scene {
         self.validate_limits()
     }
 
-    /// Monitoring points: distinct names, a point within the region's bounds, and a support of
-    /// the kind a support quantity asks for.
+    /// Monitoring points: distinct names, a point within the region's bounds (none for the
+    /// energy balance's terms), and a support of the kind a support quantity asks for.
     fn validate_histories(&self) -> Result<(), SceneError> {
         let (lo, hi) = self.region.bounds();
         for (i, h) in self.histories.iter().enumerate() {
@@ -941,14 +941,42 @@ impl Scene {
                     format!("'{}' is used twice", h.name),
                 ));
             }
-            let inside = (0..2).all(|d| h.at[d] >= lo[d] && h.at[d] <= hi[d]);
+            let at = match (h.at, h.quantity.is_energy()) {
+                (Some(_), true) => {
+                    return Err(invalid(
+                        format!("{p}.at"),
+                        format!(
+                            "'{}' is of the whole model: give no point",
+                            h.quantity.column()
+                        ),
+                    ));
+                }
+                (None, false) => {
+                    return Err(invalid(
+                        format!("{p}.at"),
+                        format!("'{}' is read at a point: give it", h.quantity.column()),
+                    ));
+                }
+                (None, true) if !self.any_dynamic() => {
+                    return Err(invalid(
+                        format!("{p}.quantity"),
+                        format!(
+                            "'{}' is a dynamic stage's energy balance, and no solve is dynamic",
+                            h.quantity.column()
+                        ),
+                    ));
+                }
+                (None, true) => continue,
+                (Some(at), false) => at,
+            };
+            let inside = (0..2).all(|d| at[d] >= lo[d] && at[d] <= hi[d]);
             if !inside {
                 return Err(invalid(
                     format!("{p}.at"),
                     format!(
                         "({}, {}) m is outside the region (x in [{}, {}], y in [{}, {}] m)",
-                        Num(h.at[0]),
-                        Num(h.at[1]),
+                        Num(at[0]),
+                        Num(at[1]),
                         Num(lo[0]),
                         Num(hi[0]),
                         Num(lo[1]),
@@ -1167,16 +1195,20 @@ impl Scene {
         Ok(())
     }
 
+    /// Whether any solve (the scene's or a stage's) is dynamic.
+    fn any_dynamic(&self) -> bool {
+        std::iter::once(&self.solve)
+            .chain(self.stages.iter().filter_map(|s| s.solve.as_ref()))
+            .any(|s| s.mode == SolveMode::Dynamic)
+    }
+
     /// `output.interval`: positive and finite, and some solve dynamic (it times their output).
     fn validate_output_interval(&self) -> Result<(), SceneError> {
         let Some(i) = self.output.interval else {
             return Ok(());
         };
         positive("output.interval", i)?;
-        let dynamic = std::iter::once(&self.solve)
-            .chain(self.stages.iter().filter_map(|s| s.solve.as_ref()))
-            .any(|s| s.mode == SolveMode::Dynamic);
-        if !dynamic {
+        if !self.any_dynamic() {
             return Err(invalid(
                 "output.interval",
                 "times the output of dynamic solves, and no solve is dynamic; `every` counts \

@@ -437,6 +437,7 @@ pub fn setup_meshed(scene: &Scene, meshed: Meshed) -> anyhow::Result<Setup> {
         quiet: None,
         inputs: None,
         peaks: None,
+        energy: None,
         mixed,
         materials: Materials {
             zone: zone_laws.laws,

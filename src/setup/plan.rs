@@ -92,6 +92,9 @@ pub struct Plan {
     /// Whether the scene has stages of its own (the summary lists them and the ground reaction
     /// curve is written).
     pub(crate) staged: bool,
+    /// Whether a history reads the energy balance, which dynamic stages then keep
+    /// (`dynamics::Energy`).
+    pub energy: bool,
 }
 
 /// What the plan is made from besides the scene: names resolved to ids by the catalogues and
@@ -191,6 +194,7 @@ impl Plan {
             conditions: r.initial_boundary,
             stages: plans,
             staged,
+            energy: scene.histories.iter().any(|h| h.quantity.is_energy()),
         })
     }
 }

@@ -676,3 +676,42 @@ fn prescribed_motions_out_of_place_are_refused() {
     let err = refused(&rigid, "boundary[0].motion");
     assert!(err.contains("rigid or simple block"), "{err}");
 }
+
+/// An energy history with a point, a point history without one, or an energy history in a scene
+/// with no dynamic solve: refused naming the field.
+#[test]
+fn energy_histories_out_of_place_are_refused() {
+    let column = |histories: Value, solve: Value| {
+        json!({
+            "name": "column",
+            "materials": { "rock": { "density": 2500, "young": 1e10, "poisson": 0.25 } },
+            "region": { "polygon": [[0, 0], [2, 0], [2, 10], [0, 10]], "material": "rock" },
+            "zoning": { "edge_at_excavation": 1, "edge_far": 1 },
+            "boundary": [{ "part": "outer", "fix": "xy" }],
+            "solve": solve,
+            "histories": histories
+        })
+    };
+    let dynamic = json!({ "mode": "dynamic", "duration": 0.01, "damping": 0 });
+    refused(
+        &column(
+            json!([{ "name": "k", "at": [1, 1], "quantity": "kinetic_energy" }]),
+            dynamic.clone(),
+        ),
+        "histories[0].at",
+    );
+    refused(
+        &column(
+            json!([{ "name": "u", "quantity": "displacement_x" }]),
+            dynamic,
+        ),
+        "histories[0].at",
+    );
+    refused(
+        &column(
+            json!([{ "name": "e", "quantity": "energy_error" }]),
+            json!({}),
+        ),
+        "histories[0].quantity",
+    );
+}

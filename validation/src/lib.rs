@@ -10,6 +10,7 @@ pub mod column_slide;
 pub mod corners;
 pub mod direct_shear;
 pub mod drop;
+pub mod energy;
 pub mod equivalent;
 pub mod far_field;
 pub mod flutter;

@@ -7,6 +7,7 @@ mod column_slide;
 mod corners;
 mod detection;
 mod direct_shear;
+mod energy;
 mod equivalent;
 mod far_field;
 mod glued;
@@ -91,5 +92,6 @@ pub fn all() -> Vec<Box<dyn Case>> {
         Box::new(quiet::Quiet),
         Box::new(joint_waves::JointWaves),
         Box::new(newmark::NewmarkBlock),
+        Box::new(energy::EnergyBalance),
     ]
 }

@@ -1,0 +1,182 @@
+//! The energy balance of a dynamic stage (the `kinetic_energy`, `strain_energy`,
+//! `boundary_work`, `quiet_energy` and `energy_error` histories), J per metre of tunnel. The
+//! central difference conserves, for a linear undamped model under loads F,
+//!
+//!   E_n = ½ v_{n−½}ᵀ M v_{n+½} + ½ u_nᵀ K u_n,   E_n − E_0 = Σ_{k=1..n} ½(F_{k−1} + F_k)·(u_k − u_{k−1})
+//!
+//! exactly (the momentum equation at steps n and n − 1 dotted with v_{n−½}), so the balance
+//! takes the kinetic energy as ½ Σ m v⁻·v⁺ over the nodes (and ½ Σ M q̇⁻·q̇⁺ over the rigid and
+//! simple blocks) after each step, the work of the applied loads (tractions, gravity, load
+//! histories, a quiet boundary's held reactions) by that trapezoid over the free components, the
+//! zones' strain energy from their stress change since the stage began,
+//!
+//!   U = Σ A (σ₀ + ½Δσ) : D⁻¹ : Δσ,   a : D⁻¹ : b = p_a p_b / K + s_a : s_b / (2G)
+//!
+//! (σ₀ the stress when the balance began, p the mean stress, s the deviator, σzz included: the work
+//! σ : dε of an elastic zone from σ₀; an inelastic zone's recoverable part), and the net energy
+//! out through the quiet boundaries, the work of their dashpots' and incident waves' forces by the
+//! same trapezoid, negated (`QuietBoundary::net_outflow`). The error is the work less the rest:
+//! W − ΔK − U − Q, zero to round-off for a linear undamped model. Not yet counted: joints (their springs and friction), supports, local and
+//! Rayleigh damping, and the work of prescribed motions (their reactions are not loads).
+
+use crate::law::Stress;
+
+/// A rigid or simple block's generalised vector (`model::bodies::Dof`: velocity, mass).
+type Generalised = [f64; 6];
+
+/// The energy balance's state since its stage began.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Energy {
+    /// Each node's velocity before this step's motion stage v⁻ (m/s), each body's q̇⁻.
+    before: Vec<[f64; 2]>,
+    body_before: Vec<Generalised>,
+    /// Each node's applied load at the last step, N/m.
+    last_applied: Vec<[f64; 2]>,
+    /// Each zone's stress when the balance began, Pa.
+    start_stress: Vec<Stress>,
+    /// The work of the applied loads so far, J/m.
+    work: f64,
+    /// The kinetic energy at the first step, J/m (`None` before it).
+    start_kinetic: Option<f64>,
+    /// The kinetic energy after the last step, J/m.
+    kinetic: f64,
+}
+
+/// The balance's terms, J/m.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Balance {
+    pub kinetic: f64,
+    pub strain: f64,
+    pub boundary_work: f64,
+    pub quiet: f64,
+    /// W − ΔK − U − Q.
+    pub error: f64,
+}
+
+/// The state a step's account reads: the nodes' masses (kg/m), velocities v⁺ (m/s) and applied
+/// loads (N/m), each node's free components (`None` for a rigid or simple block's node, which its
+/// block carries), and the blocks' generalised masses and velocities.
+pub(crate) struct Stepped<'a, F: Fn(usize) -> Option<[bool; 2]>> {
+    pub mass: &'a [f64],
+    pub vel: &'a [[f64; 2]],
+    pub applied: &'a [[f64; 2]],
+    pub free: F,
+    pub body_mass: &'a [Generalised],
+    pub body_vel: &'a [Generalised],
+}
+
+impl Energy {
+    /// A balance beginning from the nodes' velocities `vel` (m/s) and applied loads `applied`
+    /// (N/m), the blocks' `body_vel` and the zones' `stress` (Pa).
+    pub fn start(
+        vel: &[[f64; 2]],
+        body_vel: &[Generalised],
+        applied: &[[f64; 2]],
+        stress: &[Stress],
+    ) -> Energy {
+        Energy {
+            before: vel.to_vec(),
+            body_before: body_vel.to_vec(),
+            last_applied: applied.to_vec(),
+            start_stress: stress.to_vec(),
+            work: 0.0,
+            start_kinetic: None,
+            kinetic: 0.0,
+        }
+    }
+
+    /// Before the motion stage (the loads of the step applied): keep v⁻.
+    pub(crate) fn remember(&mut self, vel: &[[f64; 2]], body_vel: &[Generalised]) {
+        self.before.copy_from_slice(vel);
+        self.body_before.copy_from_slice(body_vel);
+    }
+
+    /// After the motion stage of a step of `dt` s: the kinetic energy ½ v⁻·M v⁺ and the loads'
+    /// work ½(F_{n−1} + F_n)·v⁻ Δt over the free components (none at the balance's first step,
+    /// whose v⁻ moved the model before it began).
+    pub(crate) fn account<F: Fn(usize) -> Option<[bool; 2]>>(&mut self, s: Stepped<F>, dt: f64) {
+        let (mut kinetic, mut work) = (0.0, 0.0);
+        for n in 0..s.vel.len() {
+            let Some(free) = (s.free)(n) else {
+                continue;
+            };
+            let (before, after) = (self.before[n], s.vel[n]);
+            kinetic += 0.5 * s.mass[n] * (before[0] * after[0] + before[1] * after[1]);
+            for d in (0..2).filter(|&d| free[d]) {
+                let f = 0.5 * (self.last_applied[n][d] + s.applied[n][d]);
+                work += f * before[d] * dt;
+            }
+        }
+        for ((m, before), after) in s.body_mass.iter().zip(&self.body_before).zip(s.body_vel) {
+            kinetic += 0.5 * (0..6).map(|d| m[d] * before[d] * after[d]).sum::<f64>();
+        }
+        self.last_applied.copy_from_slice(s.applied);
+        self.kinetic = kinetic;
+        if self.start_kinetic.is_none() {
+            self.start_kinetic = Some(kinetic);
+        } else {
+            self.work += work;
+        }
+    }
+
+    /// The balance now: the zones' strain energy from their `stress` (Pa), `area` (m²) and
+    /// `moduli` (each zone's bulk and shear moduli, Pa), with the energy the quiet boundaries
+    /// absorbed, `quiet` (J/m).
+    pub fn balance(
+        &self,
+        stress: &[Stress],
+        area: &[f64],
+        moduli: impl Fn(usize) -> (f64, f64),
+        quiet: f64,
+    ) -> Balance {
+        let strain = (0..stress.len())
+            .map(|z| {
+                let (s0, s) = (&self.start_stress[z], &stress[z]);
+                let change: Stress = std::array::from_fn(|k| s[k] - s0[k]);
+                let mid: Stress = std::array::from_fn(|k| s0[k] + 0.5 * change[k]);
+                let (bulk, shear) = moduli(z);
+                area[z] * compliance(&mid, &change, bulk, shear)
+            })
+            .sum::<f64>();
+        let kinetic = self.kinetic - self.start_kinetic.unwrap_or(self.kinetic);
+        Balance {
+            kinetic: self.kinetic,
+            strain,
+            boundary_work: self.work,
+            quiet,
+            error: self.work - kinetic - strain - quiet,
+        }
+    }
+}
+
+/// a : D⁻¹ : b for isotropic elasticity of bulk modulus K and shear modulus G (Pa): p_a p_b / K
+/// + s_a : s_b / (2G), stresses [xx, yy, zz, xy] (Pa), s : s counting xy twice; 1/Pa · Pa² = Pa.
+fn compliance(a: &Stress, b: &Stress, bulk: f64, shear: f64) -> f64 {
+    let (pa, pb) = ((a[0] + a[1] + a[2]) / 3.0, (b[0] + b[1] + b[2]) / 3.0);
+    let deviatoric = (0..3).map(|k| (a[k] - pa) * (b[k] - pb)).sum::<f64>() + 2.0 * a[3] * b[3];
+    let volumetric = if bulk > 0.0 { pa * pb / bulk } else { 0.0 };
+    let distortion = if shear > 0.0 {
+        deviatoric / (2.0 * shear)
+    } else {
+        0.0
+    };
+    volumetric + distortion
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// ½ σ : D⁻¹ : σ of a uniaxial stress σ in xx alone is σ²/(2E).
+    #[test]
+    fn the_compliance_gives_the_strain_energy_density() {
+        let (e, nu): (f64, f64) = (10e9, 0.25);
+        let (bulk, shear) = (e / (3.0 * (1.0 - 2.0 * nu)), e / (2.0 * (1.0 + nu)));
+        let s = [-3e6, 0.0, 0.0, 0.0];
+        let u = 0.5 * compliance(&s, &s, bulk, shear);
+        assert!((u - 9e12 / (2.0 * e)).abs() < 1e-9 * u, "{u}");
+        let t = [0.0, 0.0, 0.0, 2e6];
+        let u = 0.5 * compliance(&t, &t, bulk, shear);
+        assert!((u - 4e12 / (2.0 * shear)).abs() < 1e-9 * u, "{u}");
+    }
+}

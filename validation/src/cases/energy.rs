@@ -1,0 +1,67 @@
+//! The energy balance of undamped elastic dynamic stages (issue 50): kinetic and strain energy,
+//! the loads' work and the quiet boundaries' net outflow, closing within 1 %.
+
+use std::fmt::Write as _;
+
+use crate::case::{Case, Context, Section, print_row, table};
+use crate::energy::{Loading, balance};
+
+/// Bar (issue 50): the balance closes within 1 % on an undamped elastic case.
+const BAR: f64 = 0.01;
+
+pub struct EnergyBalance;
+
+impl Case for EnergyBalance {
+    fn name(&self) -> &'static str {
+        "energy"
+    }
+
+    fn run(&self, _cx: &Context) -> anyhow::Result<Section> {
+        let (mut rows, mut missed) = (Vec::new(), Vec::new());
+        for loading in [Loading::Step, Loading::Pulse, Loading::Incident] {
+            for zone in [1.0, 0.5] {
+                let (r, relative) = balance(loading, 60.0, zone)?;
+                print_row(&r);
+                if relative > BAR {
+                    missed.push(format!("{}: {:?}", r.case, r.errors));
+                }
+                rows.push(r);
+            }
+        }
+        let mut md = String::new();
+        let _ = writeln!(md, "\n## Energy balance (issue 50)\n");
+        let _ = writeln!(
+            md,
+            "The energy histories (`kinetic_energy`, `strain_energy`, `boundary_work`, \
+             `quiet_energy`, `energy_error`: `dynamics::Energy`, `docs/theory.md`) of three \
+             undamped elastic columns of the quiet section's rock, 2 m × 60 m, sides on rollers: \
+             a step normal stress of −1 MPa on the top over a fixed base (nothing leaves: the \
+             energy rings between kinetic and strain), a Ricker pressure pulse of 1 MPa at 25 Hz \
+             on the top over a quiet base (the load's work leaves through the base), and a Ricker \
+             P wave of 1 m/s brought in through a quiet base to a free top and out again (the \
+             incident wave's work in, the dashpots' out), each for 2.4/f plus three transits. \
+             The balance takes the kinetic energy ½ v⁻·M v⁺ after each step, the loads' work by \
+             the trapezoid over each step's displacement, the zones' strain energy from their \
+             stress change, and the net energy out through the quiet boundaries (their dashpots' \
+             and incident waves' work by the same trapezoid): for a linear model the central \
+             difference conserves exactly that sum, so what is left is round-off. (Taking the \
+             dashpots' dissipation at the centred velocity instead, Σ Δt v̄ᵀ C v̄, as \
+             `QuietBoundary::absorbed` does, left 0.6 % on 1 m zones and 0.22 % on 0.5 m: second \
+             order in the step.) `energy` is the largest |W − ΔK − U − Q| over the record over \
+             the largest energy that entered. Bar (issue 50): within {} %: {}.\n",
+            100.0 * BAR,
+            if missed.is_empty() {
+                "met".to_string()
+            } else {
+                format!("missed by {}", missed.join("; "))
+            }
+        );
+        table(&mut md, &rows);
+        Ok(Section {
+            markdown: md,
+            rows,
+            missed,
+            ..Default::default()
+        })
+    }
+}

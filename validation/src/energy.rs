@@ -1,0 +1,131 @@
+//! The energy balance of undamped elastic dynamic stages (issue 50): the work of the loads and
+//! what the quiet boundaries let in and out against the kinetic and strain energy
+//! (`dynamics::Energy`, read as the `kinetic_energy`, `strain_energy`, `boundary_work`,
+//! `quiet_energy` and `energy_error` histories). Three columns of the quiet section's rock: a step
+//! load on the top of a column on a fixed base (nothing leaves: the energy rings between kinetic
+//! and strain), a pressure pulse on the top of a column with a quiet base (the load's work leaves
+//! through the base), and a Ricker wave brought in through a quiet base to a free top and out
+//! again (the incident wave's work in, the dashpots' out). The error is the largest
+//! |W − ΔK − U − Q| over the record relative to the largest energy that entered.
+
+use std::time::Instant;
+
+use crate::quiet::{FREQUENCY, ROCK, history, run_to_completion, wave_speed};
+use crate::report::CaseReport;
+use adit::scene::WaveKind;
+
+/// What loads a column.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Loading {
+    /// A step normal stress on the top, the base fixed.
+    Step,
+    /// A Ricker pressure pulse on the top, the base quiet.
+    Pulse,
+    /// A Ricker P wave through the quiet base, the top free.
+    Incident,
+}
+
+impl Loading {
+    fn label(self) -> &'static str {
+        match self {
+            Loading::Step => "step load on the top, base fixed",
+            Loading::Pulse => "pressure pulse on the top, base quiet",
+            Loading::Incident => "P wave in through the quiet base, top free",
+        }
+    }
+}
+
+/// Run a column 2 m × `height` m zoned at `zone` m under `loading`: the report, with the
+/// balance's largest error relative to the largest energy that entered (`energy`).
+pub fn balance(loading: Loading, height: f64, zone: f64) -> anyhow::Result<(CaseReport, f64)> {
+    let start = Instant::now();
+    let (e, nu, rho) = ROCK;
+    let w = 2.0;
+    let ricker = serde_json::json!({ "pulse": "ricker", "amplitude": 1, "frequency": FREQUENCY });
+    let sides = [
+        serde_json::json!({ "part": "left", "fix": "x" }),
+        serde_json::json!({ "part": "right", "fix": "x" }),
+    ];
+    let (base, top) = match loading {
+        Loading::Step => (
+            serde_json::json!({ "part": "base", "fix": "xy" }),
+            Some(serde_json::json!({ "part": "top", "normal_stress": -1e6 })),
+        ),
+        Loading::Pulse => (
+            serde_json::json!({ "part": "base", "quiet": true }),
+            Some(serde_json::json!({ "part": "top", "normal_stress": -1e6, "history": ricker })),
+        ),
+        Loading::Incident => (
+            serde_json::json!({ "part": "base", "quiet": true,
+                "incident": { "wave": "p", "velocity": 1, "pulse": "ricker", "frequency": FREQUENCY } }),
+            None,
+        ),
+    };
+    let mut boundary = vec![base, sides[0].clone(), sides[1].clone()];
+    boundary.extend(top);
+    // Long enough for the wave to cross the column three times (the step rings; the pulses leave).
+    let duration = 2.4 / FREQUENCY + 3.0 * height / wave_speed(WaveKind::P);
+    let terms = [
+        ("kinetic", "kinetic_energy"),
+        ("strain", "strain_energy"),
+        ("work", "boundary_work"),
+        ("quiet", "quiet_energy"),
+        ("error", "energy_error"),
+    ];
+    let histories: Vec<_> = (terms.iter())
+        .map(|(n, q)| serde_json::json!({ "name": n, "quantity": q }))
+        .collect();
+    let text = serde_json::json!({
+        "name": "energy_balance",
+        "materials": { "rock": { "density": rho, "young": e, "poisson": nu } },
+        "region": { "polygon": [[0, 0], [w, 0], [w, height], [0, height]],
+                    "edge_names": ["base", "right", "top", "left"], "material": "rock" },
+        "zoning": { "edge_at_excavation": zone, "edge_far": zone },
+        "boundary": boundary,
+        "solve": { "mode": "dynamic", "duration": duration, "damping": 0, "monitor_every": 1,
+                   "max_cycles": 1_000_000 },
+        "histories": histories,
+        "output": { "checkpoints": false, "every": 0 }
+    });
+    let scene = adit::Scene::from_json(&text.to_string(), "energy").expect("a valid column");
+    let (r, csv) = run_to_completion(&scene)?;
+    let column = |name: &str| -> anyhow::Result<Vec<f64>> {
+        Ok(history(&csv, name)?.into_iter().map(|(_, v)| v).collect())
+    };
+    let (work, quiet, error) = (column("work")?, column("quiet")?, column("error")?);
+    // What entered: the loads' work, or the incident wave's (the quiet term's most negative).
+    let entered = (work.iter().zip(&quiet))
+        .map(|(w, q)| w.abs().max(-q))
+        .fold(0.0, f64::max);
+    anyhow::ensure!(entered > 0.0, "energy balance: nothing entered the column");
+    let worst = error.iter().fold(0.0f64, |m, e| m.max(e.abs()));
+    let relative = worst / entered;
+    let report = CaseReport::new(
+        format!(
+            "{} m column, {}, zones {zone} m, undamped",
+            height,
+            loading.label()
+        ),
+        r.summary.zones,
+        r.summary.cycles,
+        start.elapsed().as_secs_f64(),
+        Some(zone),
+        &[("energy", relative)],
+    );
+    Ok((report, relative))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The coarse twin of the report's section: each loading's balance closes within 1 % of the
+    /// energy that entered, on zones of 1 m.
+    #[test]
+    fn the_energy_balance_closes() {
+        for loading in [Loading::Step, Loading::Pulse, Loading::Incident] {
+            let (report, relative) = balance(loading, 40.0, 1.0).unwrap();
+            assert!(relative < 0.01, "{loading:?}: {:?}", report.errors);
+        }
+    }
+}
