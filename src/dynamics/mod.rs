@@ -3,7 +3,9 @@
 //! carries dashpots on its nodes (`quiet.rs`, Lysmer & Kuhlemeyer 1969), and an incident plane
 //! wave given as a particle-velocity history (`history.rs`) enters through it as the force of the
 //! stress 2ρC v; a part with a prescribed motion has one velocity component follow a velocity or
-//! an integrated acceleration history (`motion.rs`), a part with a load history its traction
+//! an integrated acceleration history (`motion.rs`); a free-field part's dashpots act on the
+//! velocity relative to a one-dimensional column beside it, whose stress loads it
+//! (`free_field.rs`), a part with a load history its traction
 //! scaled by it (`load.rs`), both the list's `Inputs`; every node's peak particle velocity is
 //! kept over the dynamic stages (`peaks.rs`), and the energy balance of a stage when a history
 //! asks for it (`energy.rs`). The mechanical cycle knows this physics only
@@ -11,6 +13,7 @@
 //! for it.
 
 mod energy;
+mod free_field;
 mod history;
 mod inputs;
 mod load;
@@ -20,6 +23,7 @@ mod quiet;
 
 pub(crate) use energy::Stepped;
 pub use energy::{Balance, Energy};
+pub use free_field::{Column, ColumnElement};
 pub use history::History;
 pub use inputs::Inputs;
 pub(crate) use load::TimedLoad;

@@ -25,6 +25,7 @@
 use crate::scene::{IncidentSpec, WaveKind};
 
 use super::History;
+use super::free_field::{Column, ColumnElement};
 
 /// The dashpots and incident waves of the quiet parts of one list of boundary conditions.
 #[derive(Debug, Clone)]
@@ -46,6 +47,8 @@ pub struct QuietBoundary {
     steps: u64,
     /// The incident waves.
     incident: Vec<Wave>,
+    /// The free-field columns of its free-field parts (`free_field.rs`).
+    columns: Vec<Column>,
     /// Each node's velocity before the motion stage, m/s (scratch).
     before: Vec<[f64; 2]>,
     /// Each node's incident-wave force this step, N/m (scratch).
@@ -65,11 +68,14 @@ struct Wave {
 pub struct QuietEdge {
     /// Its nodes.
     pub nodes: [u32; 2],
+    /// Their positions, m.
+    pub ends: [[f64; 2]; 2],
     /// Its length, m, and unit outward normal.
     pub length: f64,
     pub normal: [f64; 2],
-    /// The impedances ρCp and ρCs of the zone beside it, Pa·s/m.
+    /// The impedances ρCp and ρCs of the zone beside it, Pa·s/m, and its density, kg/m³.
     pub impedance: [f64; 2],
+    pub density: f64,
     /// The quiet condition it belongs to (its index in its list).
     pub condition: usize,
 }
@@ -99,9 +105,14 @@ impl QuietEdge {
 }
 
 impl QuietBoundary {
-    /// The dashpots of `edges`, and the waves `incident` brings in through the edges of the
-    /// quiet condition each names (its index in its list).
-    pub fn new(edges: &[QuietEdge], incident: &[(usize, &IncidentSpec)]) -> QuietBoundary {
+    /// The dashpots of `edges`, the waves `incident` brings in through the edges of the quiet
+    /// condition each names (its index in its list), and a free-field column beside each
+    /// condition `free_field` names (vertical parts: `QuietBoundary::columns`).
+    pub fn new(
+        edges: &[QuietEdge],
+        incident: &[(usize, &IncidentSpec)],
+        free_field: &[usize],
+    ) -> QuietBoundary {
         let mut nodes: Vec<u32> = edges.iter().flat_map(|e| e.nodes).collect();
         nodes.sort_unstable();
         nodes.dedup();
@@ -114,6 +125,9 @@ impl QuietBoundary {
                 (0..3).for_each(|i| c[i] += m[i]);
             }
         }
+        let columns = (free_field.iter())
+            .map(|&k| column(edges, incident, k, &index))
+            .collect();
         let incident = (incident.iter())
             .map(|&(k, spec)| {
                 let mut gain = vec![None::<[f64; 2]>; nodes.len()];
@@ -136,6 +150,7 @@ impl QuietBoundary {
         let before = vec![[0.0; 2]; nodes.len()];
         let driving = before.clone();
         QuietBoundary {
+            columns,
             absorbed: vec![0.0; nodes.len()],
             exchanged: 0.0,
             last_force: vec![[0.0; 2]; nodes.len()],
@@ -190,6 +205,9 @@ impl QuietBoundary {
                 driving[i as usize][0] += v * g[0];
                 driving[i as usize][1] += v * g[1];
             }
+        }
+        for column in &mut self.columns {
+            column.step(dt, time, &self.dashpot, driving);
         }
         for (i, &n) in self.nodes.iter().enumerate() {
             let free = free(n);
@@ -248,6 +266,51 @@ impl QuietBoundary {
     }
 }
 
+/// The free-field column beside the edges of quiet condition `k` (vertical: the set-up checked),
+/// its base loaded by the incident waves of the conditions whose edges reach the side's lowest
+/// node, each along its direction there (the P wave's −n, the S wave's t); `index` maps a node to
+/// its index among the quiet nodes.
+fn column(
+    edges: &[QuietEdge],
+    incident: &[(usize, &IncidentSpec)],
+    k: usize,
+    index: &dyn Fn(u32) -> u32,
+) -> Column {
+    let side: Vec<&QuietEdge> = edges.iter().filter(|e| e.condition == k).collect();
+    let elements: Vec<ColumnElement> = (side.iter())
+        .map(|e| {
+            let ([zp, zs], rho) = (e.impedance, e.density);
+            ColumnElement {
+                y: [e.ends[0][1], e.ends[1][1]],
+                quiet_index: e.nodes.map(index),
+                density: rho,
+                shear: zs * zs / rho,
+                constrained: zp * zp / rho,
+            }
+        })
+        .collect();
+    let lowest = (side.iter())
+        .flat_map(|e| (0..2).map(move |j| (e.nodes[j], e.ends[j][1])))
+        .min_by(|a, b| a.1.total_cmp(&b.1))
+        .map(|(n, _)| n);
+    let mut waves = Vec::new();
+    for &(c, spec) in incident {
+        let reaching = edges
+            .iter()
+            .find(|e| e.condition == c && lowest.is_some_and(|n| e.nodes.contains(&n)));
+        if let Some(e) = reaching {
+            let [nx, ny] = e.normal;
+            let d = match spec.wave {
+                WaveKind::P => [-nx, -ny],
+                WaveKind::S => [-ny, nx],
+            };
+            waves.push((History::of(&spec.history()), d));
+        }
+    }
+    let normal_x = side.first().map_or(1.0, |e| e.normal[0].signum());
+    Column::new(&elements, normal_x, waves)
+}
+
 /// The nodes' state the quiet boundary reads and corrects after the motion stage: masses (kg/m),
 /// velocities (m/s), displacements (m), recorded forces (N/m), and which components of a node are
 /// free (not fixed).
@@ -272,13 +335,15 @@ mod tests {
     fn the_dashpots_absorb_what_the_nodes_lose() {
         let edge = QuietEdge {
             nodes: [0, 1],
+            ends: [[0.0, 0.0], [1.6, 1.2]],
             length: 2.0,
             normal: [0.6, -0.8],
             impedance: [5.0e6, 3.0e6],
+            density: 2500.0,
             condition: 0,
         };
         for dt in [1e-5, 1e-3] {
-            let mut quiet = QuietBoundary::new(&[edge], &[]);
+            let mut quiet = QuietBoundary::new(&[edge], &[], &[]);
             let mass = [40.0, 60.0];
             let mut vel = [[1.0, -2.0], [-0.5, 0.3]];
             let (mut disp, mut force) = ([[0.0; 2]; 2], [[0.0; 2]; 2]);

@@ -948,6 +948,11 @@ pub struct BoundaryCondition {
     /// A plane wave entering through the quiet part.
     #[serde(default)]
     pub incident: Option<IncidentSpec>,
+    /// A free-field boundary on the quiet part (vertical sides): its dashpots act on the
+    /// velocity relative to a one-dimensional column beside it, whose stress loads it
+    /// (`dynamics::free_field`).
+    #[serde(default)]
+    pub free_field: bool,
     /// A prescribed motion of the part's nodes along x or y, in dynamic stages
     /// (`dynamics::motion`): the component is held and follows a velocity history, or the
     /// velocity integrated from an acceleration history.

@@ -1170,6 +1170,19 @@ impl Scene {
                 "m/s",
             )?;
         }
+        if bc.free_field && !bc.quiet {
+            return Err(invalid(
+                format!("{p}.free_field"),
+                "a free field acts through a quiet part's dashpots: give `quiet`: true",
+            ));
+        }
+        if bc.free_field && bc.incident.is_some() {
+            return Err(invalid(
+                format!("{p}.incident"),
+                "a free-field side takes its motion from its column, which the quiet base's \
+                 incident wave drives; bring the wave in through the base",
+            ));
+        }
         if let Some(motion) = &bc.motion {
             validate_motion(&format!("{p}.motion"), bc, motion)?;
         }

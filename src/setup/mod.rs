@@ -217,14 +217,27 @@ fn quiet(
             let ((bulk, shear), rho) = (law.moduli(), law.density());
             let (dx, dy) = (pb[0] - pa[0], pb[1] - pa[1]);
             let length = dx.hypot(dy);
+            if c.free_field && (dx.abs() > 1e-9 * length || length == 0.0) {
+                anyhow::bail!(
+                    "{path}[{k}].free_field: part '{name}' has an edge that is not vertical \
+                     (from ({:.3}, {:.3}) to ({:.3}, {:.3}) m); a free-field column stands \
+                     beside a vertical side",
+                    pa[0],
+                    pa[1],
+                    pb[0],
+                    pb[1]
+                );
+            }
             edges.push(crate::dynamics::QuietEdge {
                 nodes: e.nodes,
+                ends: [pa, pb],
                 length,
                 normal: [dy / length, -dx / length],
                 impedance: [
                     ((bulk + 4.0 * shear / 3.0) * rho).sqrt(),
                     (shear * rho).sqrt(),
                 ],
+                density: rho,
                 condition: k,
             });
         }
@@ -232,7 +245,14 @@ fn quiet(
     let incident: Vec<_> = (quiet.iter())
         .filter_map(|&(k, c)| c.incident.as_ref().map(|w| (k, w)))
         .collect();
-    Ok(Some(crate::dynamics::QuietBoundary::new(&edges, &incident)))
+    let free_field: Vec<usize> = (quiet.iter())
+        .filter_map(|&(k, c)| c.free_field.then_some(k))
+        .collect();
+    Ok(Some(crate::dynamics::QuietBoundary::new(
+        &edges,
+        &incident,
+        &free_field,
+    )))
 }
 
 /// The dynamic inputs of `conditions` (the scene's `path`), `None` when none has any: each

@@ -671,6 +671,16 @@ fn prescribed_motions_out_of_place_are_refused() {
         &column(silent, dynamic.clone()),
         "boundary[0].history.amplitude",
     );
+    // Free-field sides: quiet, without an incident wave, vertical.
+    let mut sides = column(json!({ "part": "base", "quiet": true }), dynamic.clone());
+    sides["boundary"][1] = json!({ "part": "left", "free_field": true });
+    refused(&sides, "boundary[1].free_field");
+    sides["boundary"][1] = json!({ "part": "left", "quiet": true, "free_field": true,
+        "incident": { "wave": "s", "velocity": 1, "pulse": "ricker", "frequency": 20 } });
+    refused(&sides, "boundary[1].incident");
+    sides["boundary"][1] = json!({ "part": "outer", "quiet": true, "free_field": true });
+    let err = refused(&sides, "boundary[1].free_field");
+    assert!(err.contains("not vertical"), "{err}");
     let mut rigid = column(base(&shake, json!({})), dynamic.clone());
     rigid["blocks"] = json!({ "mode": "rigid" });
     let err = refused(&rigid, "boundary[0].motion");

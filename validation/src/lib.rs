@@ -14,6 +14,7 @@ pub mod energy;
 pub mod equivalent;
 pub mod far_field;
 pub mod flutter;
+pub mod free_field;
 pub mod glued;
 pub mod grains;
 pub mod gravity;

@@ -10,6 +10,7 @@ mod direct_shear;
 mod energy;
 mod equivalent;
 mod far_field;
+mod free_field;
 mod glued;
 mod grains;
 mod gravity;
@@ -90,6 +91,7 @@ pub fn all() -> Vec<Box<dyn Case>> {
         Box::new(slope::Slope),
         Box::new(slope_hb::SlopeHoekBrown),
         Box::new(quiet::Quiet),
+        Box::new(free_field::FreeField),
         Box::new(joint_waves::JointWaves),
         Box::new(newmark::NewmarkBlock),
         Box::new(energy::EnergyBalance),
