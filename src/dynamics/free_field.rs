@@ -14,8 +14,8 @@
 //! moduli of the zone beside each; a joint cutting the side puts two model nodes at one height,
 //! both coupled to the column's node there, the column itself continuous): per unit width, node masses ½ρ h over its elements, the element stresses of a
 //! vertical plane wave, σxy = G ∂u_x/∂y, σyy = M ∂u_y/∂y and σxx = λ ∂u_y/∂y (M = λ + 2G,
-//! plane strain), its top free and its base quiet (dashpots ρCs, ρCp with the incident waves'
-//! 2ρC vᵢ, centred as the model's quiet base). Integrated by the same central difference; the
+//! plane strain), its base quiet (dashpots ρCs, ρCp with the incident waves' 2ρC vᵢ, centred as
+//! the model's quiet base), its top free, or quiet where the model's top is. Integrated by the same central difference; the
 //! column is driven by nothing the model does (one-way coupling).
 
 use super::History;
@@ -40,8 +40,10 @@ pub struct Column {
     /// Each element's (between nodes k and k + 1) shear modulus G, constrained modulus M and
     /// λ = M − 2G, Pa.
     moduli: Vec<[f64; 3]>,
-    /// The base's dashpots ρCs (x) and ρCp (y), Pa·s/m.
+    /// The base's dashpots ρCs (x) and ρCp (y), Pa·s/m, and the top's when the model's top is
+    /// quiet too (else the top is free).
     base_impedance: [f64; 2],
+    top_impedance: Option<[f64; 2]>,
     /// The incident waves at the base: each history with its direction [x, y] (the model base's
     /// particle velocity direction).
     incident: Vec<(History, [f64; 2])>,
@@ -65,11 +67,13 @@ pub struct ColumnElement {
 
 impl Column {
     /// The column of a side's `edges` (in any order; together a vertical line from bottom to top)
-    /// whose outward normal's x is `normal_x`, with the base's `incident` waves.
+    /// whose outward normal's x is `normal_x`, with the base's `incident` waves, its top quiet
+    /// when `quiet_top` (the model's top is), else free.
     pub fn new(
         edges: &[ColumnElement],
         normal_x: f64,
         incident: Vec<(History, [f64; 2])>,
+        quiet_top: bool,
     ) -> Column {
         let mut heights: Vec<f64> = edges.iter().flat_map(|e| e.y).collect();
         heights.sort_by(f64::total_cmp);
@@ -81,7 +85,7 @@ impl Column {
         };
         let elements = heights.len().saturating_sub(1);
         let (mut mass, mut moduli) = (vec![0.0; heights.len()], vec![[0.0; 3]; elements]);
-        let mut base = [0.0; 2];
+        let (mut base, mut top) = ([0.0; 2], [0.0; 2]);
         let (mut nodes, mut sides) = (Vec::new(), Vec::new());
         for e in edges {
             let ends = e.y.map(node_at);
@@ -94,11 +98,15 @@ impl Column {
                 let half = 0.5 * e.density * (heights[k + 1] - heights[k]);
                 mass[k] += half;
                 mass[k + 1] += half;
+                let impedance = [
+                    (e.shear * e.density).sqrt(),
+                    (e.constrained * e.density).sqrt(),
+                ];
                 if k == 0 {
-                    base = [
-                        (e.shear * e.density).sqrt(),
-                        (e.constrained * e.density).sqrt(),
-                    ];
+                    base = impedance;
+                }
+                if k + 1 == elements {
+                    top = impedance;
                 }
             }
             sides.push((e.quiet_index, lo, 0.5 * (e.y[1] - e.y[0]).abs()));
@@ -116,6 +124,7 @@ impl Column {
             before: vec![[0.0; 2]; n],
             moduli,
             base_impedance: base,
+            top_impedance: quiet_top.then_some(top),
             incident,
             normal_x,
             stress: vec![[0.0; 3]; elements],
@@ -161,23 +170,24 @@ impl Column {
             force[k + 1][0] -= s[2];
             force[k + 1][1] -= s[1];
         }
-        let (z, m0) = (self.base_impedance, self.mass[0]);
+        let (base, top) = (self.base_impedance, self.top_impedance.unwrap_or([0.0; 2]));
         let mut base_drive = [0.0; 2];
         for (h, d) in &self.incident {
             let v = h.at(time);
-            base_drive[0] += 2.0 * z[0] * v * d[0];
-            base_drive[1] += 2.0 * z[1] * v * d[1];
+            base_drive[0] += 2.0 * base[0] * v * d[0];
+            base_drive[1] += 2.0 * base[1] * v * d[1];
         }
         for (i, f) in force.iter().enumerate() {
+            // The ends' dashpots centred: (m/Δt + Z/2) v⁺ = (m/Δt) v⁻ + F − (Z/2) v⁻ + 2Z vᵢ.
+            let (z, drive) = match i {
+                0 => (base, base_drive),
+                _ if i + 1 == n => (top, [0.0; 2]),
+                _ => ([0.0; 2], [0.0; 2]),
+            };
+            let a = self.mass[i] / dt;
             for d in 0..2 {
                 let v = self.vel[i][d];
-                self.vel[i][d] = if i == 0 {
-                    // (m/Δt + Z/2) v⁺ = (m/Δt) v⁻ + F − (Z/2) v⁻ + 2Z vᵢ.
-                    let a = m0 / dt;
-                    (a * v + f[d] - 0.5 * z[d] * v + base_drive[d]) / (a + 0.5 * z[d])
-                } else {
-                    v + f[d] / self.mass[i] * dt
-                };
+                self.vel[i][d] = (a * v + f[d] - 0.5 * z[d] * v + drive[d]) / (a + 0.5 * z[d]);
                 self.disp[i][d] += self.vel[i][d] * dt;
             }
         }
@@ -235,7 +245,7 @@ mod tests {
             frequency: f,
             delay: 1.2 / f,
         };
-        let mut column = Column::new(&elements, -1.0, vec![(ricker, [1.0, 0.0])]);
+        let mut column = Column::new(&elements, -1.0, vec![(ricker, [1.0, 0.0])], false);
         let cs = (g / rho).sqrt();
         let dt = 0.5 * h / (m / rho).sqrt();
         let (dashpot, mut driving) = (vec![[0.0; 3]; 101], vec![[0.0; 2]; 101]);

@@ -268,8 +268,9 @@ impl QuietBoundary {
 
 /// The free-field column beside the edges of quiet condition `k` (vertical: the set-up checked),
 /// its base loaded by the incident waves of the conditions whose edges reach the side's lowest
-/// node, each along its direction there (the P wave's −n, the S wave's t); `index` maps a node to
-/// its index among the quiet nodes.
+/// node, each along its direction there (the P wave's −n, the S wave's t), its top quiet when
+/// another quiet condition's edge reaches the side's highest node; `index` maps a node to its
+/// index among the quiet nodes.
 fn column(
     edges: &[QuietEdge],
     incident: &[(usize, &IncidentSpec)],
@@ -307,8 +308,14 @@ fn column(
             waves.push((History::of(&spec.history()), d));
         }
     }
+    let highest = (side.iter())
+        .flat_map(|e| (0..2).map(move |j| (e.nodes[j], e.ends[j][1])))
+        .max_by(|a, b| a.1.total_cmp(&b.1))
+        .map(|(n, _)| n);
+    let quiet_top =
+        (edges.iter()).any(|e| e.condition != k && highest.is_some_and(|n| e.nodes.contains(&n)));
     let normal_x = side.first().map_or(1.0, |e| e.normal[0].signum());
-    Column::new(&elements, normal_x, waves)
+    Column::new(&elements, normal_x, waves, quiet_top)
 }
 
 /// The nodes' state the quiet boundary reads and corrects after the motion stage: masses (kg/m),
