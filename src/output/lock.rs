@@ -9,6 +9,10 @@ use std::path::Path;
 /// The lock's file name in the output folder.
 pub const LOCK_FILE: &str = ".adit.lock";
 
+/// How long a lock found held is tried again before the folder is refused: a child forked while
+/// this process held it keeps it until its exec (`FolderLock::take`).
+const FORK_WINDOW: std::time::Duration = std::time::Duration::from_secs(2);
+
 /// The folder held by this run, let go on drop.
 #[derive(Debug)]
 pub struct FolderLock {
@@ -26,7 +30,20 @@ impl FolderLock {
             .write(true)
             .open(&path)
             .map_err(folder)?;
-        match file.try_lock() {
+        // A process that forks (to spawn a child) while it holds the lock shares it with the
+        // child until the child's exec closes the file: a lock just let go may still be held for
+        // that moment. A run that holds the folder holds it for the whole run, so waiting a
+        // moment before refusing changes nothing else.
+        let patience = std::time::Instant::now();
+        let locked = loop {
+            match file.try_lock() {
+                Err(std::fs::TryLockError::WouldBlock) if patience.elapsed() < FORK_WINDOW => {
+                    std::thread::sleep(std::time::Duration::from_millis(10));
+                }
+                other => break other,
+            }
+        };
+        match locked {
             Ok(()) => Ok(FolderLock { _file: file }),
             Err(std::fs::TryLockError::WouldBlock) => anyhow::bail!(
                 "output folder {}: another run is writing there (it holds {}); wait for it to \
