@@ -587,6 +587,7 @@ fn build_solve_write(
         seconds.zones += s.zones;
         seconds.supports += s.supports;
         seconds.motion += s.motion;
+        seconds.dynamics += s.dynamics;
         stage_summaries.push(StageSummary {
             name: stage.name.clone(),
             cycles: solution.cycles,
@@ -681,7 +682,8 @@ fn build_solve_write(
     output_seconds += t.elapsed().as_secs_f64();
     seconds.output = output_seconds;
     let wall = start.elapsed().as_secs_f64();
-    let cycling = seconds.detect + seconds.contacts + seconds.zones + seconds.motion;
+    let cycling =
+        seconds.detect + seconds.contacts + seconds.zones + seconds.motion + seconds.dynamics;
     let zones = built.model.zones.len();
     let per_second = |items: usize| {
         if cycling > 0.0 {

@@ -5,6 +5,7 @@
 mod bodies;
 mod contacts;
 pub mod drift;
+mod dynamic;
 mod far_field;
 pub use contacts::JointCommit;
 pub(crate) use contacts::contact_normal;
@@ -142,6 +143,10 @@ pub struct StageSeconds {
     /// The structural stage's, and the far field's (`region.far_field`) with it.
     pub supports: f64,
     pub motion: f64,
+    /// The dynamic stage's (`dynamic.rs`: quiet and free-field boundaries, prescribed motions
+    /// and load histories, peak velocities, the energy balance; absent when nothing ran).
+    #[serde(skip_serializing_if = "is_zero")]
+    pub dynamics: f64,
     pub output: f64,
     /// Implicit solves: assembling, factorizing and iterating (absent when none ran).
     #[serde(skip_serializing_if = "is_zero")]
@@ -269,61 +274,28 @@ impl Cycle {
             supports: support_gather,
             far_field: far_gather,
         };
-        if let Some(q) = quiet.as_mut() {
-            q.remember(&nodes.vel);
-        }
-        if let Some(i) = inputs.as_mut() {
-            i.impose(&mut nodes.vel, &mut nodes.applied, self.time, p.dt);
-        }
-        if let Some(e) = energy.as_mut() {
-            e.remember(&nodes.vel, &bodies.velocity);
-        }
-        let mut speed = self
+        let mut dynamic = dynamic::Dynamic {
+            quiet,
+            inputs,
+            peaks,
+            energy,
+        };
+        dynamic.before_motion(nodes, bodies, self.time, p.dt);
+        let t5 = Instant::now();
+        let speed = self
             .motion(nodes, &gathers, p)
             .max(self.body_motion(nodes, bodies, laws, p));
-        if let Some(q) = quiet.as_mut() {
-            let fixed = &nodes.fixed;
-            let moving = crate::dynamics::Moving {
-                mass: &nodes.mass,
-                vel: &mut nodes.vel,
-                disp: &mut nodes.disp,
-                force: &mut nodes.force,
-                free: |n: u32| {
-                    let f = fixed[n as usize];
-                    [f & FIX_X == 0, f & FIX_Y == 0]
-                },
-            };
-            speed = speed.max(q.absorb(moving, p.dt, self.time));
-        }
-        if let Some(peaks) = peaks.as_mut() {
-            peaks.record(&nodes.vel);
-        }
-        if let Some(e) = energy.as_mut() {
-            let (fixed, of_node) = (&nodes.fixed, &bodies.of_node);
-            let stepped = crate::dynamics::Stepped {
-                mass: &nodes.mass,
-                vel: &nodes.vel,
-                applied: &nodes.applied,
-                free: |n: usize| {
-                    let f = fixed[n];
-                    (of_node
-                        .get(n)
-                        .is_none_or(|&b| b == crate::model::bodies::NO_BODY))
-                    .then_some([f & FIX_X == 0, f & FIX_Y == 0])
-                },
-                body_mass: &bodies.mass,
-                body_vel: &bodies.velocity,
-            };
-            e.account(stepped, p.dt);
-        }
+        let t6 = Instant::now();
+        let speed = speed.max(dynamic.after_motion(nodes, bodies, self.time, p.dt));
         self.time += p.dt;
         self.moved += speed * p.dt;
-        let t5 = Instant::now();
+        let t7 = Instant::now();
         self.seconds.detect += (t1 - t0).as_secs_f64();
         self.seconds.contacts += (t2 - t1).as_secs_f64();
         self.seconds.zones += (t3 - t2).as_secs_f64();
         self.seconds.supports += (t4 - t3).as_secs_f64();
-        self.seconds.motion += (t5 - t4).as_secs_f64();
+        self.seconds.motion += (t6 - t5).as_secs_f64();
+        self.seconds.dynamics += ((t5 - t4) + (t7 - t6)).as_secs_f64();
     }
 
     /// Fill the zone, contact and support forces of the state as it is, without moving it: the

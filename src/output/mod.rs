@@ -530,7 +530,7 @@ pub struct Summary {
     pub contacts: usize,
     pub cycles: u64,
     pub wall_seconds: f64,
-    pub(crate) stage_seconds: StageSeconds,
+    pub stage_seconds: StageSeconds,
     pub zone_cycles_per_second: f64,
     /// Blocks × cycles per second of cycling, the figure of merit of rigid and simple blocks.
     pub block_cycles_per_second: f64,

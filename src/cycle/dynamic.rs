@@ -1,0 +1,72 @@
+//! The dynamic stage around the motion update (`dynamics`): before it, the quiet boundary keeps
+//! the velocities v⁻, the prescribed motions and load histories set the held velocities and the
+//! loads, and the energy balance keeps v⁻; after it, the quiet and free-field boundaries correct
+//! their nodes by their dashpots and driving forces, and the peak velocities and the energy
+//! balance take the step. A scene without them pays one branch each.
+
+use crate::dynamics::{Energy, Inputs, Moving, Peaks, QuietBoundary, Stepped};
+use crate::model::bodies::{Bodies, NO_BODY};
+use crate::model::{FIX_X, FIX_Y, Nodes};
+
+/// The dynamic state of the model the stage reads and writes.
+pub(super) struct Dynamic<'a> {
+    pub quiet: &'a mut Option<QuietBoundary>,
+    pub inputs: &'a mut Option<Inputs>,
+    pub peaks: &'a mut Option<Peaks>,
+    pub energy: &'a mut Option<Energy>,
+}
+
+impl Dynamic<'_> {
+    /// Before the motion stage of the step from `time` (s since the solve began) by `dt` (s).
+    pub fn before_motion(&mut self, nodes: &mut Nodes, bodies: &Bodies, time: f64, dt: f64) {
+        if let Some(q) = self.quiet.as_mut() {
+            q.remember(&nodes.vel);
+        }
+        if let Some(i) = self.inputs.as_mut() {
+            i.impose(&mut nodes.vel, &mut nodes.applied, time, dt);
+        }
+        if let Some(e) = self.energy.as_mut() {
+            e.remember(&nodes.vel, &bodies.velocity);
+        }
+    }
+
+    /// After the motion stage: the quiet nodes' velocities and displacements corrected, then
+    /// the peaks and the energy balance. Returns the quiet nodes' largest speed, m/s (0 without).
+    pub fn after_motion(&mut self, nodes: &mut Nodes, bodies: &Bodies, time: f64, dt: f64) -> f64 {
+        let mut speed = 0.0;
+        if let Some(q) = self.quiet.as_mut() {
+            let fixed = &nodes.fixed;
+            let moving = Moving {
+                mass: &nodes.mass,
+                vel: &mut nodes.vel,
+                disp: &mut nodes.disp,
+                force: &mut nodes.force,
+                free: |n: u32| {
+                    let f = fixed[n as usize];
+                    [f & FIX_X == 0, f & FIX_Y == 0]
+                },
+            };
+            speed = q.absorb(moving, dt, time);
+        }
+        if let Some(peaks) = self.peaks.as_mut() {
+            peaks.record(&nodes.vel);
+        }
+        if let Some(e) = self.energy.as_mut() {
+            let (fixed, of_node) = (&nodes.fixed, &bodies.of_node);
+            let stepped = Stepped {
+                mass: &nodes.mass,
+                vel: &nodes.vel,
+                applied: &nodes.applied,
+                free: |n: usize| {
+                    let f = fixed[n];
+                    (of_node.get(n).is_none_or(|&b| b == NO_BODY))
+                        .then_some([f & FIX_X == 0, f & FIX_Y == 0])
+                },
+                body_mass: &bodies.mass,
+                body_vel: &bodies.velocity,
+            };
+            e.account(stepped, dt);
+        }
+        speed
+    }
+}
