@@ -487,22 +487,25 @@ fn a_flipped_in_situ_sign_and_a_friction_in_radians_are_warned() {
     assert!(warned.contains(supports), "{warned}");
 }
 
+/// A 2 m × 10 m column of elastic rock whose first boundary condition is `base`, its sides on
+/// rollers, solved by `solve`.
+fn column(base: Value, solve: Value) -> Value {
+    json!({
+        "name": "column",
+        "materials": { "rock": { "density": 2500, "young": 1e10, "poisson": 0.25 } },
+        "region": { "polygon": [[0, 0], [2, 0], [2, 10], [0, 10]],
+                    "edge_names": ["base", "right", "top", "left"], "material": "rock" },
+        "zoning": { "edge_at_excavation": 1, "edge_far": 1 },
+        "boundary": [base, { "part": "left", "fix": "x" }, { "part": "right", "fix": "x" }],
+        "solve": solve
+    })
+}
+
 /// A quiet part in force during a static stage, fixed too, or a point's; an incident wave
 /// without a quiet part, or without its velocity, or with a table and a pulse; a duration of a
 /// static solve or not positive: refused naming the field, before any solve.
 #[test]
 fn quiet_boundaries_and_waves_out_of_place_are_refused() {
-    let column = |base: Value, solve: Value| {
-        json!({
-            "name": "column",
-            "materials": { "rock": { "density": 2500, "young": 1e10, "poisson": 0.25 } },
-            "region": { "polygon": [[0, 0], [2, 0], [2, 10], [0, 10]],
-                        "edge_names": ["base", "right", "top", "left"], "material": "rock" },
-            "zoning": { "edge_at_excavation": 1, "edge_far": 1 },
-            "boundary": [base, { "part": "left", "fix": "x" }, { "part": "right", "fix": "x" }],
-            "solve": solve
-        })
-    };
     let dynamic = json!({ "mode": "dynamic", "duration": 0.1, "damping": 0 });
     let wave = json!({ "wave": "p", "velocity": 1, "pulse": "ricker", "frequency": 20 });
     let err = refused(
@@ -588,17 +591,6 @@ fn quiet_boundaries_and_waves_out_of_place_are_refused() {
 /// solve.
 #[test]
 fn prescribed_motions_out_of_place_are_refused() {
-    let column = |base: Value, solve: Value| {
-        json!({
-            "name": "column",
-            "materials": { "rock": { "density": 2500, "young": 1e10, "poisson": 0.25 } },
-            "region": { "polygon": [[0, 0], [2, 0], [2, 10], [0, 10]],
-                        "edge_names": ["base", "right", "top", "left"], "material": "rock" },
-            "zoning": { "edge_at_excavation": 1, "edge_far": 1 },
-            "boundary": [base, { "part": "left", "fix": "x" }, { "part": "right", "fix": "x" }],
-            "solve": solve
-        })
-    };
     let dynamic = json!({ "mode": "dynamic", "duration": 0.1, "damping": 0 });
     let shake = json!({ "direction": "x", "velocity": { "pulse": "sine", "amplitude": 0.1, "frequency": 5 } });
     let base = |motion: &Value, extra: Value| {
