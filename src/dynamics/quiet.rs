@@ -290,10 +290,15 @@ fn column(
             }
         })
         .collect();
-    let lowest = (side.iter())
+    let ends: Vec<(u32, f64)> = (side.iter())
         .flat_map(|e| (0..2).map(move |j| (e.nodes[j], e.ends[j][1])))
+        .collect();
+    let lowest = (ends.iter())
         .min_by(|a, b| a.1.total_cmp(&b.1))
-        .map(|(n, _)| n);
+        .map(|e| e.0);
+    let highest = (ends.iter())
+        .max_by(|a, b| a.1.total_cmp(&b.1))
+        .map(|e| e.0);
     let mut waves = Vec::new();
     for &(c, spec) in incident {
         let reaching = edges
@@ -308,10 +313,6 @@ fn column(
             waves.push((History::of(&spec.history()), d));
         }
     }
-    let highest = (side.iter())
-        .flat_map(|e| (0..2).map(move |j| (e.nodes[j], e.ends[j][1])))
-        .max_by(|a, b| a.1.total_cmp(&b.1))
-        .map(|(n, _)| n);
     let quiet_top =
         (edges.iter()).any(|e| e.condition != k && highest.is_some_and(|n| e.nodes.contains(&n)));
     let normal_x = side.first().map_or(1.0, |e| e.normal[0].signum());

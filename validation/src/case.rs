@@ -68,6 +68,15 @@ pub fn table(md: &mut String, rows: &[CaseReport]) {
     }
 }
 
+/// A section's bar line: `met`, or `missed by` the cases that missed it, `; ` between them.
+pub fn verdict(missed: &[String]) -> String {
+    if missed.is_empty() {
+        "met".to_string()
+    } else {
+        format!("missed by {}", missed.join("; "))
+    }
+}
+
 /// One row on the console.
 pub fn print_row(r: &CaseReport) {
     let errors: Vec<String> = r

@@ -7,7 +7,7 @@ use std::fmt::Write as _;
 use adit::scene::SolveMethod;
 use plotters::style::RGBColor;
 
-use crate::case::{Case, Context, Section, print_row, table};
+use crate::case::{Case, Context, Section, print_row, table, verdict};
 use crate::direct_shear::{self, Sample};
 use crate::plot::{Curve, curves};
 
@@ -65,11 +65,7 @@ impl Case for BartonBandis {
             "\n![Barton–Bandis direct shear curves](img/barton_bandis.png)\n\n\
              Bars (issue 48): closure within 1 %, peak within 2 %, dilation within 2 %, at every \
              normal stress explicit and implicit: {}.\n",
-            if missed.is_empty() {
-                "met".to_string()
-            } else {
-                format!("missed by {}", missed.join("; "))
-            }
+            verdict(&missed)
         );
         rows.push(coulomb);
         Ok(Section {

@@ -5,7 +5,7 @@ use std::fmt::Write as _;
 
 use adit::scene::BlockMode;
 
-use crate::case::{Case, Context, Section, print_row, table};
+use crate::case::{Case, Context, Section, print_row, table, verdict};
 use crate::column_slide::{Start, run};
 
 /// Joint angle and friction, degrees.
@@ -80,11 +80,7 @@ impl Case for ColumnSlide {
              it (rigid: 0.07 % settled, 1.7–3.1 % from rest undamped, and a rotation of 2e-4 of \
              the slide).\n",
             100.0 * BAR,
-            if missed.is_empty() {
-                "met".to_string()
-            } else {
-                format!("missed by {}", missed.join("; "))
-            }
+            verdict(&missed)
         );
         table(&mut md, &undamped);
         let mut rows = barred;

@@ -3,7 +3,7 @@
 
 use std::fmt::Write as _;
 
-use crate::case::{Case, Context, Section, print_row, table};
+use crate::case::{Case, Context, Section, print_row, table, verdict};
 use crate::energy::{Loading, balance};
 
 /// Bar (issue 50): the balance closes within 1 % on an undamped elastic case.
@@ -50,11 +50,7 @@ impl Case for EnergyBalance {
              order in the step.) `energy` is the largest |W − ΔK − U − Q| over the record over \
              the largest energy that entered. Bar (issue 50): within {} %: {}.\n",
             100.0 * BAR,
-            if missed.is_empty() {
-                "met".to_string()
-            } else {
-                format!("missed by {}", missed.join("; "))
-            }
+            verdict(&missed)
         );
         table(&mut md, &rows);
         Ok(Section {

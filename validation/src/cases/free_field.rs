@@ -5,7 +5,7 @@ use std::fmt::Write as _;
 
 use adit::scene::WaveKind;
 
-use crate::case::{Case, Context, Section, print_row, table};
+use crate::case::{Case, Context, Section, print_row, table, verdict};
 use crate::free_field::FreeFieldBox;
 
 /// The top's velocity within 2 % of twice the incident across the box (the quiet column's bar,
@@ -71,11 +71,7 @@ impl Case for FreeField {
              (`stage_seconds.dynamics`: the quiet base, the free-field sides with their columns) \
              took {} of the cycling seconds with free-field sides, {} with plain quiet ones.\n",
             100.0 * BAR,
-            if missed.is_empty() {
-                "met".to_string()
-            } else {
-                format!("missed by {}", missed.join("; "))
-            },
+            verdict(&missed),
             range(true),
             range(false)
         );

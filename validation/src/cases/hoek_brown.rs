@@ -7,7 +7,7 @@ use adit::scene::SolveMethod;
 
 use crate::axisymmetric::STEPS;
 use crate::carranza_torres::{self, POOR_SUPPORT, POOR_UNSUPPORTED, ROCKS, Rock};
-use crate::case::{Case, Context, Section, print_row, table};
+use crate::case::{Case, Context, Section, print_row, table, verdict};
 use crate::report::CaseReport;
 use crate::salencon::Leg;
 use crate::triaxial;
@@ -336,11 +336,7 @@ impl Case for HoekBrown {
              explicit bar is the quasi-static path then explicit cycling to a ratio of \
              {HOLD_RATIO:e}): {}.\n",
             100.0 * HOLE_BAR,
-            if missed.is_empty() {
-                "met".to_string()
-            } else {
-                format!("missed by {}", missed.join("; "))
-            }
+            verdict(&missed)
         );
         let mut rows = elements;
         rows.extend(holes);

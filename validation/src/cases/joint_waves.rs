@@ -6,7 +6,7 @@ use std::fmt::Write as _;
 
 use adit::scene::WaveKind;
 
-use crate::case::{Case, Context, Section, print_row, table};
+use crate::case::{Case, Context, Section, print_row, table, verdict};
 use crate::joint_waves::Stack;
 
 /// Bars (issue 50): |T| within 3 % over the pulse's band, the group delay within 5 %.
@@ -77,11 +77,7 @@ impl Case for JointWaves {
              (issue 50), on the 0.5 m zones: `amplitude` within {} %, `delay` within {} %: {}.\n",
             100.0 * AMPLITUDE_BAR,
             100.0 * DELAY_BAR,
-            if missed.is_empty() {
-                "met".to_string()
-            } else {
-                format!("missed by {}", missed.join("; "))
-            }
+            verdict(&missed)
         );
         table(&mut md, &rows);
         Ok(Section {

@@ -5,7 +5,7 @@ use std::fmt::Write as _;
 
 use adit::scene::BlockMode;
 
-use crate::case::{Case, Context, Section, print_row, table};
+use crate::case::{Case, Context, Section, print_row, table, verdict};
 use crate::newmark::Newmark;
 
 /// Bar (issue 50): the slip within 2 %.
@@ -61,11 +61,7 @@ impl Case for NewmarkBlock {
              slip about V τ farther (+0.35 % at A = 2a_y; a 1 m base of 10 GPa rock, τ = 0.79 ms, \
              gave +1.7 %). Bar (issue 50): the slip within {} %: {}.\n",
             100.0 * BAR,
-            if missed.is_empty() {
-                "met".to_string()
-            } else {
-                format!("missed by {}", missed.join("; "))
-            }
+            verdict(&missed)
         );
         table(&mut md, &rows);
         Ok(Section {

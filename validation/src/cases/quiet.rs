@@ -6,7 +6,7 @@ use std::fmt::Write as _;
 
 use adit::scene::WaveKind;
 
-use crate::case::{Case, Context, Section, print_row, table};
+use crate::case::{Case, Context, Section, print_row, table, verdict};
 use crate::oblique::Oblique;
 use crate::quiet::{Column, FREQUENCY, PEAK, at_rest, pressure_pulse};
 
@@ -100,11 +100,7 @@ impl Case for Quiet {
              the stage, over the wave's v₀. Bars (issue 50): `surface` and `echo` within \
              {} %, `speed` below {REST_BAR:e}: {}.\n",
             100.0 * BAR,
-            if missed.is_empty() {
-                "met".to_string()
-            } else {
-                format!("missed by {}", missed.join("; "))
-            }
+            verdict(&missed)
         );
         table(&mut md, &rows);
         let _ = writeln!(

@@ -6,7 +6,7 @@ use std::fmt::Write as _;
 
 use adit::scene::SolveMethod;
 
-use crate::case::{Case, Context, Section, print_row, table};
+use crate::case::{Case, Context, Section, print_row, table, verdict};
 use crate::readme::ModelRow;
 use crate::slope::{self, PLANAR, PUBLISHED_CHARTS, PUBLISHED_SSR};
 use adit::strength_reduction::MovingBlock;
@@ -210,15 +210,7 @@ impl Case for Slope {
             blocks(&tunnel_fos.mechanism),
         );
         rows.extend([shipped, explicit_row, implicit_row, tunnel_row]);
-        let _ = writeln!(
-            md,
-            "Bars: {}.\n",
-            if missed.is_empty() {
-                "met".to_string()
-            } else {
-                format!("missed by {}", missed.join("; "))
-            }
-        );
+        let _ = writeln!(md, "Bars: {}.\n", verdict(&missed));
         table(&mut md, &rows);
         Ok(Section {
             markdown: md,

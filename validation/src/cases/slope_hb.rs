@@ -5,7 +5,7 @@ use std::fmt::Write as _;
 
 use adit::scene::SolveMethod;
 
-use crate::case::{Case, Context, Section, print_row, table};
+use crate::case::{Case, Context, Section, print_row, table, verdict};
 use crate::slope::{self, hoek_brown_slope};
 
 /// Bar: within 5 % of Bishop's on the 0.5 m zones (as the Coulomb slope's on its finest),
@@ -102,15 +102,7 @@ impl Case for SlopeHoekBrown {
             tunnel_fos.factor,
             tunnel_fos.trials.len(),
         );
-        let _ = writeln!(
-            md,
-            "Bars: {}.\n",
-            if missed.is_empty() {
-                "met".to_string()
-            } else {
-                format!("missed by {}", missed.join("; "))
-            }
-        );
+        let _ = writeln!(md, "Bars: {}.\n", verdict(&missed));
         table(&mut md, &rows);
         Ok(Section {
             markdown: md,

@@ -3,7 +3,7 @@
 
 use std::fmt::Write as _;
 
-use crate::case::{Case, Context, Section, print_row, table};
+use crate::case::{Case, Context, Section, print_row, table, verdict};
 use crate::strength_reduction::{BLOCKS, run};
 
 /// Bar: the factor of safety within 1 % of limit equilibrium's, and the explicit and implicit
@@ -80,11 +80,7 @@ impl Case for StrengthReduction {
              {} % of each other: {}.\n",
             100.0 * BAR,
             100.0 * BAR,
-            if missed.is_empty() {
-                "met".to_string()
-            } else {
-                format!("missed by {}", missed.join("; "))
-            }
+            verdict(&missed)
         );
         table(&mut md, &rows);
         Ok(Section {

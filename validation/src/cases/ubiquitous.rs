@@ -6,7 +6,7 @@ use std::fmt::Write as _;
 use adit::scene::SolveMethod;
 use plotters::style::RGBColor;
 
-use crate::case::{Case, Context, Section, print_row, table};
+use crate::case::{Case, Context, Section, print_row, table, verdict};
 use crate::plot::{Curve, curves};
 use crate::report::CaseReport;
 use crate::triaxial;
@@ -190,11 +190,7 @@ impl Case for Ubiquitous {
              Bar (issue 48): every angle within {} % of Jaeger's strength, explicit and implicit \
              (explicit with ψj = 0 reported, not barred: above): {}.\n",
             100.0 * BAR,
-            if missed.is_empty() {
-                "met".to_string()
-            } else {
-                format!("missed by {}", missed.join("; "))
-            }
+            verdict(&missed)
         );
         Ok(Section {
             markdown: md,
