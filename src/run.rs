@@ -746,6 +746,8 @@ fn build_solve_write(
         bolts: built.model.supports.cables.bolt_loads(),
         liners,
         peak_particle_velocity: crate::output::PeakVelocity::of(&built.model),
+        ejection: (built.model.ejection.as_ref())
+            .map_or_else(Vec::new, |e| e.report(&built.plan.excavations)),
         far_field: built.model.far_field.as_ref().map(FarFieldSummary::of),
     };
     writer.write_summary(&summary)?;

@@ -86,6 +86,15 @@ impl Staging {
         if dynamic && model.peaks.is_none() {
             model.peaks = Some(crate::dynamics::Peaks::new(model.nodes.len()));
         }
+        if dynamic && model.ejection.is_none() {
+            let open: Vec<u32> = (self.support.iter().enumerate())
+                .filter(|(_, s)| s.is_some())
+                .map(|(j, _)| j as u32)
+                .collect();
+            model.ejection = Some(crate::dynamics::Ejection::new(wall_blocks(
+                model, plan, &open,
+            )));
+        }
         model.energy = (dynamic && plan.energy).then(|| {
             let (nodes, bodies) = (&model.nodes, &model.bodies);
             crate::dynamics::Energy::start(
@@ -93,6 +102,7 @@ impl Staging {
                 &bodies.velocity,
                 &nodes.applied,
                 &model.zones.stress,
+                model.supports.slot_nodes(),
             )
         });
         if let Some((nodes, before, reactions)) = held {
@@ -301,6 +311,55 @@ impl WallPoints {
             right: pick(0, hi[0])?,
         })
     }
+}
+
+/// The blocks on the walls of the `open` excavations that joints and that wall alone bound (no
+/// edge of theirs on the region's boundary), each with its excavation, its nodes, the unit
+/// normal out of the rock into the opening (the sum of its wall edges' outward normals, each as
+/// long as its edge, at the current positions) and its nodes' mean position, m.
+fn wall_blocks(model: &Model, plan: &Plan, open: &[u32]) -> Vec<crate::dynamics::WallBlock> {
+    let blocks = &model.blocks;
+    let edges = &plan.boundary.edges;
+    let at = |n: u32| {
+        let (p, u) = (model.nodes.pos[n as usize], model.nodes.disp[n as usize]);
+        [p[0] + u[0], p[1] + u[1]]
+    };
+    let on_region: std::collections::BTreeSet<usize> = (edges.iter())
+        .filter(|e| matches!(e.kind, adit_meshing::EdgeKind::Region(_)))
+        .map(|e| blocks.block_of_node(e.nodes[0]))
+        .collect();
+    let mut walls: BTreeMap<(usize, u32), [f64; 2]> = BTreeMap::new();
+    for &j in open {
+        for e in rock_walls(edges, blocks, &plan.fill, j) {
+            let b = blocks.block_of_node(e.nodes[0]);
+            if on_region.contains(&b) {
+                continue;
+            }
+            let ([x0, y0], [x1, y1]) = (at(e.nodes[0]), at(e.nodes[1]));
+            let n = walls.entry((b, j)).or_insert([0.0; 2]);
+            n[0] += y1 - y0;
+            n[1] -= x1 - x0;
+        }
+    }
+    (walls.into_iter())
+        .filter_map(|((b, j), n)| {
+            let length = n[0].hypot(n[1]);
+            let nodes = [blocks.node_start[b], blocks.node_start[b + 1]];
+            let count = (nodes[1] - nodes[0]) as f64;
+            (length > 0.0 && count > 0.0).then(|| {
+                let sum = (nodes[0]..nodes[1])
+                    .map(at)
+                    .fold([0.0; 2], |s, x| [s[0] + x[0], s[1] + x[1]]);
+                crate::dynamics::WallBlock {
+                    block: b as u32,
+                    excavation: j,
+                    nodes,
+                    normal: [n[0] / length, n[1] / length],
+                    centroid: [sum[0] / count, sum[1] / count],
+                }
+            })
+        })
+        .collect()
 }
 
 /// The force each fixity of `nodes` exerts on the model as it is: the negative of the node's

@@ -42,7 +42,9 @@ use crate::solve::HistoryRow;
 /// excavations' wall moves (`StageSummary::walls`). 8: with their liners' wall pressure. 9: the
 /// scene's part so far as text (`prefix.rs`) for its hash, the run's name, the supports' state
 /// per installed group. 10: no implicit seconds (`Cost`'s wall-clock figures are not state).
-pub const VERSION: u32 = 10;
+/// 11: each bolt node's rock displacement at the last force stage and the energy the bolt took
+/// there (`Cables::rock_last`, `absorbed`).
+pub const VERSION: u32 = 11;
 
 const MAGIC: &[u8; 8] = b"ADITCKPT";
 

@@ -250,6 +250,8 @@ fn save_supports(model: &Model, out: &mut Vec<u8>) {
         put(out, &pick(&k.mass, &n));
         put(out, &pick(&k.rock_origin, &n));
         put(out, &pick(&k.grout_force, &n));
+        put(out, &pick(&k.rock_last, &n));
+        put(out, &pick(&k.absorbed, &n));
         put(out, &pick(&k.slip, &n));
         put(out, &pick(&k.axial, &s));
         put(out, &pick(&k.plastic, &s));
@@ -307,6 +309,8 @@ fn restore_supports(model: &mut Model, r: &mut Reader) -> anyhow::Result<()> {
         scatter(r, &mut k.mass, &n, "bolt masses")?;
         scatter(r, &mut k.rock_origin, &n, "bolt rock origins")?;
         scatter(r, &mut k.grout_force, &n, "grout forces")?;
+        scatter(r, &mut k.rock_last, &n, "bolt rock displacements")?;
+        scatter(r, &mut k.absorbed, &n, "bolt energies")?;
         scatter(r, &mut k.slip, &n, "grout slips")?;
         scatter(r, &mut k.axial, &s, "bolt axial forces")?;
         scatter(r, &mut k.plastic, &s, "bolt plastic elongations")?;

@@ -25,6 +25,7 @@ impl Cycle {
         };
         *contacts = detect(d, contacts, &fresh);
         self.contact_force.resize(3 * contacts.len(), [0.0; 2]);
+        self.contact_work.resize(contacts.len(), 0.0);
         self.moved = 0.0;
         self.detections += 1;
     }
@@ -35,7 +36,10 @@ impl Cycle {
     /// Δun = v_rel·n Δt, Δus = v_rel·t Δt; the joint law returns the stresses, and the force
     /// F = −L(σn n + τ t) acts on the node while −(1 − ξ)F and −ξF act on the edge's nodes, so
     /// momentum is conserved exactly. With stiffness-proportional Rayleigh damping σn and τ take
-    /// β_R times their rate over the step on top (`CycleParams::viscous_ratio`).
+    /// β_R times their rate over the step on top (`CycleParams::viscous_ratio`). The energy the
+    /// step puts into each contact's joint (its springs, friction and viscosity), by the trapezoid
+    /// of its stresses before and after over its increments, L ½[(σn⁰ + σn) Δun + (τ⁰ + τ) Δus]
+    /// (J/m; the energy balance's `joint_energy`), goes to `contact_work`.
     ///
     /// With a `commit` (the implicit path's trial) each contact starts from its committed state
     /// and its increments add the relative displacement since that commit, u − u_c, to the
@@ -60,6 +64,7 @@ impl Cycle {
         // The contacts may have been put back to a commit's (`implicit::commit`) since the last
         // detection.
         self.contact_force.resize(3 * contacts.len(), [0.0; 2]);
+        self.contact_work.resize(contacts.len(), 0.0);
         let (pos, disp, vel) = (&nodes.pos, &nodes.disp, &nodes.vel);
         let x = |n: u32| {
             let (p, u) = (pos[n as usize], disp[n as usize]);
@@ -70,6 +75,7 @@ impl Cycle {
             .state
             .par_iter_mut()
             .zip(self.contact_force.par_chunks_mut(3))
+            .zip(self.contact_work.par_iter_mut())
             .zip(contacts.node.par_iter())
             .zip(contacts.edge.par_iter())
             .zip(contacts.xi.par_iter())
@@ -79,7 +85,7 @@ impl Cycle {
             .enumerate()
             .with_min_len(256)
             .for_each(
-                |(c, (((((((state, f), &i), &e), &xi), &len), &mat), &corner))| {
+                |(c, ((((((((state, f), work), &i), &e), &xi), &len), &mat), &corner))| {
                     let [j, k] = blocks.edges[e as usize];
                     let n = contact_normal(blocks, &x, i, e, corner);
                     let t = [-n[1], n[0]];
@@ -116,6 +122,7 @@ impl Cycle {
                         -len * (sn * n[0] + ss * t[0]),
                         -len * (sn * n[1] + ss * t[1]),
                     ];
+                    *work = 0.5 * len * ((old.0 + sn) * dn + (old.1 + ss) * ds);
                     f[0] = force;
                     f[1] = [-(1.0 - xi) * force[0], -(1.0 - xi) * force[1]];
                     f[2] = [-xi * force[0], -xi * force[1]];

@@ -1,18 +1,27 @@
 //! The dynamic stage around the motion update (`dynamics`): before it, the quiet boundary keeps
 //! the velocities v⁻, the prescribed motions and load histories set the held velocities and the
 //! loads, and the energy balance keeps v⁻; after it, the quiet and free-field boundaries correct
-//! their nodes by their dashpots and driving forces, and the peak velocities and the energy
-//! balance take the step. A scene without them pays one branch each.
+//! their nodes by their dashpots and driving forces, and the peak velocities, the wall blocks'
+//! ejection and the energy balance take the step. A scene without them pays one branch each.
 
-use crate::dynamics::{Energy, Inputs, Moving, Peaks, QuietBoundary, Stepped};
+use crate::dynamics::{Ejection, Energy, Inputs, Moving, Peaks, QuietBoundary, Stepped};
 use crate::model::bodies::{Bodies, NO_BODY};
 use crate::model::{FIX_X, FIX_Y, Nodes};
+
+/// What the step's force stages passed between the rock and its joints and supports, for the
+/// energy balance: each contact's energy into its joint (J/m) and each support slot's force on
+/// its rock node (N/m, `Supports::slot_nodes`).
+pub(super) struct Exchanged<'a> {
+    pub joints: &'a [f64],
+    pub supports: &'a [[f64; 2]],
+}
 
 /// The dynamic state of the model the stage reads and writes.
 pub(super) struct Dynamic<'a> {
     pub quiet: &'a mut Option<QuietBoundary>,
     pub inputs: &'a mut Option<Inputs>,
     pub peaks: &'a mut Option<Peaks>,
+    pub ejection: &'a mut Option<Ejection>,
     pub energy: &'a mut Option<Energy>,
 }
 
@@ -31,8 +40,17 @@ impl Dynamic<'_> {
     }
 
     /// After the motion stage: the quiet nodes' velocities and displacements corrected, then
-    /// the peaks and the energy balance. Returns the quiet nodes' largest speed, m/s (0 without).
-    pub fn after_motion(&mut self, nodes: &mut Nodes, bodies: &Bodies, time: f64, dt: f64) -> f64 {
+    /// the peaks, the wall blocks' ejection and the energy balance (with what the step
+    /// `exchanged` with the joints and supports). Returns the quiet nodes' largest speed, m/s (0
+    /// without).
+    pub fn after_motion(
+        &mut self,
+        nodes: &mut Nodes,
+        bodies: &Bodies,
+        exchanged: Exchanged,
+        time: f64,
+        dt: f64,
+    ) -> f64 {
         let mut speed = 0.0;
         if let Some(q) = self.quiet.as_mut() {
             let fixed = &nodes.fixed;
@@ -51,6 +69,9 @@ impl Dynamic<'_> {
         if let Some(peaks) = self.peaks.as_mut() {
             peaks.record(&nodes.vel);
         }
+        if let Some(ejection) = self.ejection.as_mut() {
+            ejection.record(&nodes.mass, &nodes.vel);
+        }
         if let Some(e) = self.energy.as_mut() {
             let (fixed, of_node) = (&nodes.fixed, &bodies.of_node);
             let stepped = Stepped {
@@ -64,6 +85,8 @@ impl Dynamic<'_> {
                 },
                 body_mass: &bodies.mass,
                 body_vel: &bodies.velocity,
+                joint_work: exchanged.joints,
+                support_force: exchanged.supports,
             };
             e.account(stepped, dt);
         }

@@ -164,6 +164,8 @@ pub struct Cycle {
     zone_force: Vec<[f64; 2]>,
     /// Force of each contact on its node and on the two nodes of its edge, N/m, contact·3 + role.
     contact_force: Vec<[f64; 2]>,
+    /// Energy each contact's joint took in the last contact stage, J/m (`contact_forces`).
+    contact_work: Vec<f64>,
     /// Force of the supports on the rock nodes, N/m, one per support slot
     /// (`Supports::slot_nodes`).
     support_force: Vec<[f64; 2]>,
@@ -217,6 +219,7 @@ impl Cycle {
         Cycle {
             zone_force: vec![[0.0; 2]; 3 * model.zones.len()],
             contact_force: vec![[0.0; 2]; 3 * model.contacts.len()],
+            contact_work: vec![0.0; model.contacts.len()],
             support_force: vec![[0.0; 2]; model.supports.slot_count()],
             far_force: vec![[0.0; 2]; model.far_field.as_ref().map_or(0, |f| f.nodes.len())],
             far_moved: vec![[0.0; 2]; model.far_field.as_ref().map_or(0, |f| f.nodes.len())],
@@ -254,6 +257,7 @@ impl Cycle {
             quiet,
             inputs,
             peaks,
+            ejection,
             energy,
             ..
         } = model;
@@ -278,6 +282,7 @@ impl Cycle {
             quiet,
             inputs,
             peaks,
+            ejection,
             energy,
         };
         dynamic.before_motion(nodes, bodies, self.time, p.dt);
@@ -286,7 +291,11 @@ impl Cycle {
             .motion(nodes, &gathers, p)
             .max(self.body_motion(nodes, bodies, laws, p));
         let t6 = Instant::now();
-        let speed = speed.max(dynamic.after_motion(nodes, bodies, self.time, p.dt));
+        let exchanged = dynamic::Exchanged {
+            joints: &self.contact_work,
+            supports: &self.support_force,
+        };
+        let speed = speed.max(dynamic.after_motion(nodes, bodies, exchanged, self.time, p.dt));
         self.time += p.dt;
         self.moved += speed * p.dt;
         let t7 = Instant::now();

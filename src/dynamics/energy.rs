@@ -15,9 +15,16 @@
 //! (σ₀ the stress when the balance began, p the mean stress, s the deviator, σzz included: the work
 //! σ : dε of an elastic zone from σ₀; an inelastic zone's recoverable part), and the net energy
 //! out through the quiet boundaries, the work of their dashpots' and incident waves' forces by the
-//! same trapezoid, negated (`QuietBoundary::net_outflow`). The error is the work less the rest:
-//! W − ΔK − U − Q, zero to round-off for a linear undamped model. Not yet counted: joints (their springs and friction), supports, local and
-//! Rayleigh damping, and the work of prescribed motions (their reactions are not loads).
+//! same trapezoid, negated (`QuietBoundary::net_outflow`). The joints' energy J (what their
+//! springs store and their friction and viscosity dissipate) sums each contact's
+//! L ½[(σn⁰ + σn) Δun + (τ⁰ + τ) Δus] over the steps (`Cycle::contact_forces`: the work the
+//! rock does on the joint, the same trapezoid); the supports' S (what bolts and liners store,
+//! dissipate by yielding and carry as their own motion) is the work the rock does on them,
+//! −Σ ½(f_{n−1} + f_n)·v_{n−½} Δt over their force slots f. The error is the work less the rest:
+//! W − ΔK − U − Q − J − S, zero to round-off for a linear undamped model (a joint that slips or a
+//! support that yields within a step: of the order of that step's share). Not yet counted: local
+//! and Rayleigh damping (a zone's viscous stress), and the work of prescribed motions (their
+//! reactions are not loads).
 
 use crate::law::Stress;
 
@@ -40,6 +47,13 @@ pub struct Energy {
     start_kinetic: Option<f64>,
     /// The kinetic energy after the last step, J/m.
     kinetic: f64,
+    /// The rock node each support force slot acts on (`Supports::slot_nodes`), and each slot's
+    /// force at the last step, N/m.
+    slot_nodes: Vec<u32>,
+    last_support: Vec<[f64; 2]>,
+    /// The energy into the joints and into the supports so far, J/m.
+    joints: f64,
+    supports: f64,
 }
 
 /// The balance's terms, J/m.
@@ -49,13 +63,16 @@ pub struct Balance {
     pub strain: f64,
     pub boundary_work: f64,
     pub quiet: f64,
-    /// W − ΔK − U − Q.
+    pub joints: f64,
+    pub supports: f64,
+    /// W − ΔK − U − Q − J − S.
     pub error: f64,
 }
 
 /// The state a step's account reads: the nodes' masses (kg/m), velocities v⁺ (m/s) and applied
 /// loads (N/m), each node's free components (`None` for a rigid or simple block's node, which its
-/// block carries), and the blocks' generalised masses and velocities.
+/// block carries), the blocks' generalised masses and velocities, each contact's energy into its
+/// joint this step (J/m) and each support slot's force on the rock (N/m).
 pub(crate) struct Stepped<'a, F: Fn(usize) -> Option<[bool; 2]>> {
     pub mass: &'a [f64],
     pub vel: &'a [[f64; 2]],
@@ -63,16 +80,20 @@ pub(crate) struct Stepped<'a, F: Fn(usize) -> Option<[bool; 2]>> {
     pub free: F,
     pub body_mass: &'a [Generalised],
     pub body_vel: &'a [Generalised],
+    pub joint_work: &'a [f64],
+    pub support_force: &'a [[f64; 2]],
 }
 
 impl Energy {
     /// A balance beginning from the nodes' velocities `vel` (m/s) and applied loads `applied`
-    /// (N/m), the blocks' `body_vel` and the zones' `stress` (Pa).
+    /// (N/m), the blocks' `body_vel`, the zones' `stress` (Pa) and the rock node of each support
+    /// force slot.
     pub fn start(
         vel: &[[f64; 2]],
         body_vel: &[Generalised],
         applied: &[[f64; 2]],
         stress: &[Stress],
+        slot_nodes: Vec<u32>,
     ) -> Energy {
         Energy {
             before: vel.to_vec(),
@@ -82,6 +103,10 @@ impl Energy {
             work: 0.0,
             start_kinetic: None,
             kinetic: 0.0,
+            last_support: vec![[0.0; 2]; slot_nodes.len()],
+            slot_nodes,
+            joints: 0.0,
+            supports: 0.0,
         }
     }
 
@@ -91,9 +116,10 @@ impl Energy {
         self.body_before.copy_from_slice(body_vel);
     }
 
-    /// After the motion stage of a step of `dt` s: the kinetic energy ½ v⁻·M v⁺ and the loads'
-    /// work ½(F_{n−1} + F_n)·v⁻ Δt over the free components (none at the balance's first step,
-    /// whose v⁻ moved the model before it began).
+    /// After the motion stage of a step of `dt` s: the kinetic energy ½ v⁻·M v⁺, the loads'
+    /// work ½(F_{n−1} + F_n)·v⁻ Δt over the free components, the joints' energy and the supports'
+    /// −½(f_{n−1} + f_n)·v⁻ Δt (none at the balance's first step, whose v⁻ moved the model before
+    /// it began).
     pub(crate) fn account<F: Fn(usize) -> Option<[bool; 2]>>(&mut self, s: Stepped<F>, dt: f64) {
         let (mut kinetic, mut work) = (0.0, 0.0);
         for n in 0..s.vel.len() {
@@ -110,12 +136,24 @@ impl Energy {
         for ((m, before), after) in s.body_mass.iter().zip(&self.body_before).zip(s.body_vel) {
             kinetic += 0.5 * (0..6).map(|d| m[d] * before[d] * after[d]).sum::<f64>();
         }
+        let joints: f64 = s.joint_work.iter().sum();
+        let mut supports = 0.0;
+        for ((&n, last), f) in (self.slot_nodes.iter())
+            .zip(&mut self.last_support)
+            .zip(s.support_force)
+        {
+            let v = self.before[n as usize];
+            supports -= 0.5 * ((last[0] + f[0]) * v[0] + (last[1] + f[1]) * v[1]) * dt;
+            *last = *f;
+        }
         self.last_applied.copy_from_slice(s.applied);
         self.kinetic = kinetic;
         if self.start_kinetic.is_none() {
             self.start_kinetic = Some(kinetic);
         } else {
             self.work += work;
+            self.joints += joints;
+            self.supports += supports;
         }
     }
 
@@ -144,7 +182,9 @@ impl Energy {
             strain,
             boundary_work: self.work,
             quiet,
-            error: self.work - kinetic - strain - quiet,
+            joints: self.joints,
+            supports: self.supports,
+            error: self.work - kinetic - strain - quiet - self.joints - self.supports,
         }
     }
 }

@@ -8,10 +8,12 @@
 //! (`free_field.rs`), a part with a load history its traction
 //! scaled by it (`load.rs`), both the list's `Inputs`; every node's peak particle velocity is
 //! kept over the dynamic stages (`peaks.rs`), and the energy balance of a stage when a history
-//! asks for it (`energy.rs`). The mechanical cycle knows this physics only
+//! asks for it (`energy.rs`); the blocks on an excavation's wall are watched for the velocity
+//! they leave it with (`ejection.rs`). The mechanical cycle knows this physics only
 //! through its stages around the motion update (`Cycle::run`); a scene without them pays nothing
 //! for it.
 
+mod ejection;
 mod energy;
 mod free_field;
 mod history;
@@ -21,6 +23,7 @@ mod motion;
 mod peaks;
 mod quiet;
 
+pub use ejection::{Ejected, Ejection, WallBlock};
 pub(crate) use energy::Stepped;
 pub use energy::{Balance, Energy};
 pub use free_field::{Column, ColumnElement};

@@ -103,6 +103,9 @@ pub struct Model {
     /// Each node's peak particle velocity over the dynamic stages so far (`None` before the
     /// first).
     pub peaks: Option<crate::dynamics::Peaks>,
+    /// The blocks on the excavations' walls watched for ejection since the first dynamic stage
+    /// (`None` before it).
+    pub ejection: Option<crate::dynamics::Ejection>,
     /// The energy balance of the dynamic stage in progress, when a history asks for it.
     pub energy: Option<crate::dynamics::Energy>,
 }

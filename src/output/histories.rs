@@ -122,6 +122,8 @@ impl Probes {
             | Q::StrainEnergy
             | Q::BoundaryWork
             | Q::QuietEnergy
+            | Q::JointEnergy
+            | Q::SupportEnergy
             | Q::EnergyError => Some(0),
         }
     }
@@ -179,6 +181,8 @@ impl Probes {
                 Q::StrainEnergy => term(|b| b.strain),
                 Q::BoundaryWork => term(|b| b.boundary_work),
                 Q::QuietEnergy => term(|b| b.quiet),
+                Q::JointEnergy => term(|b| b.joints),
+                Q::SupportEnergy => term(|b| b.supports),
                 Q::EnergyError => term(|b| b.error),
             })
             .collect()

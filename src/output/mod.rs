@@ -587,6 +587,11 @@ pub struct Summary {
     /// dynamic stage).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub peak_particle_velocity: Option<PeakVelocity>,
+    /// The blocks on the excavations' walls at the first dynamic stage, each bounded by joints
+    /// and its wall, with the peak of its velocity into the opening, fastest first (absent
+    /// without a dynamic stage or such blocks).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub ejection: Vec<crate::dynamics::Ejected>,
     /// The far field's interface and what condensing it cost (absent without one).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub far_field: Option<FarFieldSummary>,

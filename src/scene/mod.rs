@@ -136,6 +136,10 @@ pub enum HistoryQuantity {
     StrainEnergy,
     BoundaryWork,
     QuietEnergy,
+    /// The energy the joints took (their springs, friction and viscosity) and the supports took
+    /// (bolts and liners: stored, yielded and their own motion), J/m.
+    JointEnergy,
+    SupportEnergy,
     EnergyError,
 }
 
@@ -158,6 +162,8 @@ impl HistoryQuantity {
             HistoryQuantity::StrainEnergy => "strain_energy_j_per_m",
             HistoryQuantity::BoundaryWork => "boundary_work_j_per_m",
             HistoryQuantity::QuietEnergy => "quiet_energy_j_per_m",
+            HistoryQuantity::JointEnergy => "joint_energy_j_per_m",
+            HistoryQuantity::SupportEnergy => "support_energy_j_per_m",
             HistoryQuantity::EnergyError => "energy_error_j_per_m",
         }
     }
@@ -170,6 +176,8 @@ impl HistoryQuantity {
                 | HistoryQuantity::StrainEnergy
                 | HistoryQuantity::BoundaryWork
                 | HistoryQuantity::QuietEnergy
+                | HistoryQuantity::JointEnergy
+                | HistoryQuantity::SupportEnergy
                 | HistoryQuantity::EnergyError
         )
     }

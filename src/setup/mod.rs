@@ -457,6 +457,7 @@ pub fn setup_meshed(scene: &Scene, meshed: Meshed) -> anyhow::Result<Setup> {
         quiet: None,
         inputs: None,
         peaks: None,
+        ejection: None,
         energy: None,
         mixed,
         materials: Materials {

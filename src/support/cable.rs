@@ -45,6 +45,10 @@ pub struct BoltLoad {
     pub capacity_n: f64,
     /// |force| / capacity (1 at yield).
     pub utilization: f64,
+    /// The energy the rock has put into it since its installation, J per bolt: the work of its
+    /// grout's forces over the rock's displacement along the path the run took (what its steel
+    /// stored and dissipated by yielding, its grout by slipping, and its own motion).
+    pub energy_j: f64,
     /// Whether a segment has yielded.
     pub yielded: bool,
 }
@@ -81,6 +85,12 @@ pub struct Cables {
     pub(crate) rock_origin: Vec<f64>,
     /// Force of the grout on the cable node along the bolt, N/m.
     pub(crate) grout_force: Vec<f64>,
+    /// Rock displacement along the bolt at the node at the last force stage, m, and the energy
+    /// the rock has put into the bolt there since installation, ∫ f d(u_rock), J/m (the grout
+    /// force's work over the rock's displacement: the steel's stored and yielded energy, the
+    /// grout's slip and the bolt's own motion).
+    pub(crate) rock_last: Vec<f64>,
+    pub(crate) absorbed: Vec<f64>,
     /// Plastic slip of the grout, m.
     pub slip: Vec<f64>,
     /// First segment of each bolt (its segments run to the next bolt's first, or to the end).
@@ -132,6 +142,8 @@ impl Cables {
             &mut self.mass,
             &mut self.rock_origin,
             &mut self.grout_force,
+            &mut self.rock_last,
+            &mut self.absorbed,
             &mut self.slip,
         ] {
             v.resize(n, 0.0);
@@ -190,6 +202,9 @@ impl Cables {
                 let worst = (segments.clone())
                     .max_by(|&a, &b| self.utilization(a).total_cmp(&self.utilization(b)))
                     .expect("a bolt has a segment");
+                let nodes = self.segment[segments.start][0] as usize
+                    ..=self.segment[segments.end - 1][1] as usize;
+                let absorbed: f64 = self.absorbed[nodes].iter().sum();
                 BoltLoad {
                     group: self.names[g].clone(),
                     head: self.head(segments.start),
@@ -197,6 +212,7 @@ impl Cables {
                     capacity_n: self.capacity(g),
                     utilization: self.utilization(worst),
                     yielded: segments.into_iter().any(|s| self.plastic[s] != 0.0),
+                    energy_j: absorbed * self.props[g].spacing,
                 }
             })
             .collect()
@@ -221,6 +237,9 @@ impl Cables {
         self.active[g] = true;
         for n in (0..self.nodes()).filter(|&n| self.group[n] as usize == g) {
             self.rock_origin[n] = self.rock_disp(n, rock);
+            self.rock_last[n] = self.rock_origin[n];
+            self.grout_force[n] = 0.0;
+            self.absorbed[n] = 0.0;
             self.disp[n] = 0.0;
             self.vel[n] = 0.0;
             self.slip[n] = 0.0;
@@ -243,12 +262,15 @@ impl Cables {
             let p = &self.props[g];
             let k = p.grout_stiffness * self.length[n];
             let cap = p.bond_strength * self.length[n];
-            let rel = self.rock_disp(n, rock) - self.rock_origin[n] - self.disp[n];
+            let along = self.rock_disp(n, rock);
+            let rel = along - self.rock_origin[n] - self.disp[n];
             let mut f = k * (rel - self.slip[n]);
             if f.abs() > cap {
                 self.slip[n] += (f.abs() - cap) / k * f.signum();
                 f = cap * f.signum();
             }
+            self.absorbed[n] += 0.5 * (self.grout_force[n] + f) * (along - self.rock_last[n]);
+            self.rock_last[n] = along;
             self.grout_force[n] = f;
             self.force[n] = f + self.applied[n];
             let a = self.axis[n];
@@ -375,6 +397,32 @@ mod tests {
             ([5.0, 0.0], 1.2e5, 0.8)
         );
         assert!(!first.yielded);
+    }
+
+    /// The rock moving along a held bolt puts the grout's work into it: ½ k u² per node while
+    /// the grout holds, then the bond strength times the further slip (k = ks L, cap = τb L per
+    /// node; the bolt's energy per bolt is the sum times its spacing).
+    #[test]
+    fn the_rock_puts_the_grouts_work_into_the_bolt() {
+        let mut c = bolt();
+        let mut rock = vec![[0.0; 2]; 3];
+        c.install(0, &rock);
+        let mut slots = vec![[0.0; 2]; 12];
+        // The rock moves 0.2 mm along the bolt (+y) in 200 steps; the cable nodes stay put.
+        let (total, steps) = (2e-4, 200);
+        for i in 1..=steps {
+            rock[0] = [0.0, total * i as f64 / steps as f64];
+            c.forces(&rock, &mut slots);
+        }
+        // Per node: k = 1e8 L, cap = 1e4 L, so the grout slips past u_y = 1e-4 m.
+        let yielding = 1e-4;
+        let per_length = 0.5 * 1e8 * yielding * yielding + 1e4 * (total - yielding);
+        let exact = per_length * c.length.iter().sum::<f64>() * 1.5;
+        let energy = c.bolt_loads()[0].energy_j;
+        assert!(
+            (energy - exact).abs() < 1e-3 * exact,
+            "{energy} against {exact}"
+        );
     }
 
     #[test]

@@ -157,7 +157,8 @@ fn a_dynamic_stage_writes_its_steps_at_the_interval() {
 
 /// `models/tunnel_rockburst.json` runs as shipped but for a shorter event (0.02 s): its static
 /// stages settle, the dynamic stage with its quiet base, free-field sides and quiet top
-/// completes, and the run reports a peak particle velocity and the energy the wave brought in.
+/// completes, and the run reports a peak particle velocity, the energy the wave brought in and
+/// what the joints and supports took of it, the wall blocks' ejection and each bolt's energy.
 #[test]
 fn the_rockburst_model_runs() {
     let path =
@@ -185,4 +186,28 @@ fn the_rockburst_model_runs() {
         .map(|l| l.split(',').nth(net).unwrap().parse::<f64>().unwrap())
         .fold(0.0, f64::min);
     assert!(least < 0.0, "{least}");
+    let last: Vec<f64> = (csv.lines().last().unwrap().split(','))
+        .map(|v| v.parse().unwrap())
+        .collect();
+    for name in ["joints:", "supports:"] {
+        let k = header.iter().position(|h| h.starts_with(name)).unwrap();
+        assert!(last[k] > 0.0 && last[k].is_finite(), "{name} {}", last[k]);
+    }
+    let ejection = &r.summary.ejection;
+    assert!(!ejection.is_empty());
+    assert!(
+        ejection
+            .windows(2)
+            .all(|w| w[0].peak_velocity_m_per_s >= w[1].peak_velocity_m_per_s)
+    );
+    assert!(
+        ejection
+            .iter()
+            .all(|e| e.mass_kg_per_m > 0.0 && e.excavation == "tunnel")
+    );
+    assert!(
+        r.summary.bolts.iter().all(|b| b.energy_j > 0.0),
+        "{:?}",
+        r.summary.bolts
+    );
 }

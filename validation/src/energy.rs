@@ -5,8 +5,9 @@
 //! load on the top of a column on a fixed base (nothing leaves: the energy rings between kinetic
 //! and strain), a pressure pulse on the top of a column with a quiet base (the load's work leaves
 //! through the base), and a Ricker wave brought in through a quiet base to a free top and out
-//! again (the incident wave's work in, the dashpots' out). The error is the largest
-//! |W − ΔK − U − Q| over the record relative to the largest energy that entered.
+//! again (the incident wave's work in, the dashpots' out); and the step load on a column cut by
+//! two glued joints (their springs store what the rock passes them: `joint_energy`). The error is
+//! the largest |W − ΔK − U − Q − J| over the record relative to the largest energy that entered.
 
 use std::time::Instant;
 
@@ -23,7 +24,14 @@ pub enum Loading {
     Pulse,
     /// A Ricker P wave through the quiet base, the top free.
     Incident,
+    /// The step load on a column cut across by two glued joints at a third and two thirds of
+    /// its height.
+    JointedStep,
 }
+
+/// The glued joints' stiffness, kn = ks, Pa/m: about the rock's over 2 m, so that they hold a
+/// good share of the energy.
+const JOINT_STIFFNESS: f64 = 5e9;
 
 impl Loading {
     fn label(self) -> &'static str {
@@ -31,6 +39,7 @@ impl Loading {
             Loading::Step => "step load on the top, base fixed",
             Loading::Pulse => "pressure pulse on the top, base quiet",
             Loading::Incident => "P wave in through the quiet base, top free",
+            Loading::JointedStep => "step load on the top, base fixed, two glued joints",
         }
     }
 }
@@ -47,7 +56,7 @@ pub fn balance(loading: Loading, height: f64, zone: f64) -> anyhow::Result<(Case
         serde_json::json!({ "part": "right", "fix": "x" }),
     ];
     let (base, top) = match loading {
-        Loading::Step => (
+        Loading::Step | Loading::JointedStep => (
             serde_json::json!({ "part": "base", "fix": "xy" }),
             Some(serde_json::json!({ "part": "top", "normal_stress": -1e6 })),
         ),
@@ -70,12 +79,22 @@ pub fn balance(loading: Loading, height: f64, zone: f64) -> anyhow::Result<(Case
         ("strain", "strain_energy"),
         ("work", "boundary_work"),
         ("quiet", "quiet_energy"),
+        ("joints", "joint_energy"),
         ("error", "energy_error"),
     ];
+    let joints: Vec<_> = match loading {
+        Loading::JointedStep => [1.0, 2.0]
+            .map(|k| {
+                let y = k * height / 3.0;
+                serde_json::json!({ "from": [0, y], "to": [w, y], "material": "joint" })
+            })
+            .to_vec(),
+        _ => Vec::new(),
+    };
     let histories: Vec<_> = (terms.iter())
         .map(|(n, q)| serde_json::json!({ "name": n, "quantity": q }))
         .collect();
-    let text = serde_json::json!({
+    let mut text = serde_json::json!({
         "name": "energy_balance",
         "materials": { "rock": { "density": rho, "young": e, "poisson": nu } },
         "region": { "polygon": [[0, 0], [w, 0], [w, height], [0, height]],
@@ -87,6 +106,11 @@ pub fn balance(loading: Loading, height: f64, zone: f64) -> anyhow::Result<(Case
         "histories": histories,
         "output": { "checkpoints": false, "every": 0 }
     });
+    if !joints.is_empty() {
+        text["joint_materials"] = serde_json::json!({ "joint": { "law": "glued",
+            "normal_stiffness": JOINT_STIFFNESS, "shear_stiffness": JOINT_STIFFNESS } });
+        text["joints"] = serde_json::Value::Array(joints);
+    }
     let scene = adit::Scene::from_json(&text.to_string(), "energy").expect("a valid column");
     let (r, csv) = run_to_completion(&scene)?;
     let column = |name: &str| -> anyhow::Result<Vec<f64>> {
@@ -123,7 +147,12 @@ mod tests {
     /// energy that entered, on zones of 1 m.
     #[test]
     fn the_energy_balance_closes() {
-        for loading in [Loading::Step, Loading::Pulse, Loading::Incident] {
+        for loading in [
+            Loading::Step,
+            Loading::Pulse,
+            Loading::Incident,
+            Loading::JointedStep,
+        ] {
             let (report, relative) = balance(loading, 40.0, 1.0).unwrap();
             assert!(relative < 0.01, "{loading:?}: {:?}", report.errors);
         }

@@ -26,6 +26,7 @@ pub mod joint_waves;
 pub mod kirsch;
 pub mod kirsch_case;
 pub mod lined;
+pub mod miller;
 pub mod modes;
 pub mod newmark;
 pub mod oblique;

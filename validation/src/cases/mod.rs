@@ -23,6 +23,7 @@ mod incompressible;
 mod joint_waves;
 mod kirsch;
 mod lined;
+mod miller;
 mod modes;
 mod newmark;
 mod patch;
@@ -93,6 +94,7 @@ pub fn all() -> Vec<Box<dyn Case>> {
         Box::new(quiet::Quiet),
         Box::new(free_field::FreeField),
         Box::new(joint_waves::JointWaves),
+        Box::new(miller::Miller),
         Box::new(newmark::NewmarkBlock),
         Box::new(energy::EnergyBalance),
     ]
