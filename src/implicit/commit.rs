@@ -120,10 +120,15 @@ impl Committed {
     }
 
     /// Put the bolts' grout slip and plastic elongation back to the commit, before the force
-    /// stage evaluates them from the total displacements.
+    /// stage evaluates them from the total displacements; their grout forces, rock displacements
+    /// and energies too, so that a load step puts its energy into the bolts once, by the
+    /// trapezoid from the commit (`Cables::absorbed`).
     pub fn trial_supports(&self, supports: &mut Supports) {
-        let cables = &self.supports.cables;
-        supports.cables.slip.copy_from_slice(&cables.slip);
-        supports.cables.plastic.copy_from_slice(&cables.plastic);
+        let (to, from) = (&mut supports.cables, &self.supports.cables);
+        to.slip.copy_from_slice(&from.slip);
+        to.plastic.copy_from_slice(&from.plastic);
+        to.grout_force.copy_from_slice(&from.grout_force);
+        to.rock_last.copy_from_slice(&from.rock_last);
+        to.absorbed.copy_from_slice(&from.absorbed);
     }
 }

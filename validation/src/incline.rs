@@ -420,8 +420,10 @@ pub fn sweep_damping(mode: BlockMode) -> Rayleigh {
 /// `sweep_damping`, zones of `h`. From rest: every mode at 45° on φ = 44°, the deformable and
 /// simple blocks at 21° on φ = 20° (slide), the deformable block at 43° on φ = 44° (holds); the
 /// deformable block at 45° on φ = 44° released at 0.1 m/s; then from rest at 45° on φ = 44° the
-/// deformable and simple blocks at half the step and the deformable one on zones of 2h. Rows in
-/// that order (`DAMPED_STEP_PAIRS` pairs the step rows).
+/// deformable block at half the step and on zones of 2h. Rows in that order
+/// (`DAMPED_STEP_PAIRS` pairs the step rows). (The simple block at half the step, 20 million
+/// cycles and 852 s, changed its final slide by nothing to three figures, 2.97e-3 at both steps,
+/// in the complete run on `ccb6213`'s code; it is left out of the report's run.)
 pub fn damped_sweep(h: f64) -> anyhow::Result<Vec<CaseReport>> {
     let damped = |alpha, phi, mode| Slide {
         damping: Some(sweep_damping(mode)),
@@ -444,7 +446,6 @@ pub fn damped_sweep(h: f64) -> anyhow::Result<Vec<CaseReport>> {
             ..damped(45.0, 44.0, d)
         },
         half(damped(45.0, 44.0, d)),
-        half(damped(45.0, 44.0, s)),
         Slide {
             h: 2.0 * h,
             ..damped(45.0, 44.0, d)
@@ -477,7 +478,7 @@ pub fn holding_sweep(h: f64) -> anyhow::Result<Vec<CaseReport>> {
 }
 
 /// Rows of `damped_sweep` that differ only in the step (full, half).
-pub const DAMPED_STEP_PAIRS: [(usize, usize); 2] = [(0, 7), (1, 8)];
+pub const DAMPED_STEP_PAIRS: [(usize, usize); 1] = [(0, 7)];
 
 #[cfg(test)]
 mod tests {

@@ -528,29 +528,34 @@ pub fn search(scene: &adit::Scene, tag: &str) -> anyhow::Result<(FactorOfSafety,
     ))
 }
 
-/// The homogeneous slope by `method` on zones of `zone` m within `max_cycles`: the row
-/// (`bishop`: |F − F_Bishop| / F_Bishop, `published`: |F − 1.4| / 1.4, `charts`:
-/// |F − 1.380| / 1.380) and F.
+/// The homogeneous slope by `method` on zones of `zone` m within `max_cycles` (and, given,
+/// `max_iterations` an implicit load step): the row (`bishop`: |F − F_Bishop| / F_Bishop,
+/// `published`: |F − 1.4| / 1.4, `charts`: |F − 1.380| / 1.380) and F.
 pub fn homogeneous(
     method: SolveMethod,
     zone: f64,
     max_cycles: u64,
+    max_iterations: Option<u64>,
 ) -> anyhow::Result<(CaseReport, f64)> {
     let slope = GRIFFITHS_LANE;
     let (bishop, _) = slope.bishop();
-    let scene = slope.scene(method, zone, max_cycles);
+    let mut scene = slope.scene(method, zone, max_cycles);
+    if let Some(n) = max_iterations {
+        scene.solve.max_iterations = n;
+    }
     let (found, zones, cycles, seconds) = search(&scene, method.name())?;
     let f = found.factor;
     let row = CaseReport::new(
         format!(
-            "Griffiths & Lane's 2:1 slope, c'/γH 0.05, φ' 20°: Bishop {bishop:.3}, found {f:.3} in {} trials, zones ~{zone} m, `{}`{}",
+            "Griffiths & Lane's 2:1 slope, c'/γH 0.05, φ' 20°: Bishop {bishop:.3}, found {f:.3} in {} trials, zones ~{zone} m, `{}`{}{}",
             found.trials.len(),
             method.name(),
             if method == SolveMethod::Implicit {
                 String::new()
             } else {
                 format!(", max_cycles {max_cycles}")
-            }
+            },
+            max_iterations.map_or(String::new(), |n| format!(", max_iterations {n}"))
         ),
         zones,
         cycles,
@@ -708,7 +713,7 @@ mod tests {
     /// of Bishop's and of Griffiths & Lane's.
     #[test]
     fn the_homogeneous_slope_meets_bishop() {
-        let (r, _) = homogeneous(SolveMethod::Implicit, 0.25, 40_000).unwrap();
+        let (r, _) = homogeneous(SolveMethod::Implicit, 0.25, 40_000, None).unwrap();
         assert!(
             r.errors["bishop"] < 0.05 && r.errors["published"] < 0.05,
             "{r:?}"

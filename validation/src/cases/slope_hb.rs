@@ -9,7 +9,7 @@ use crate::case::{Case, Context, Section, print_row, table, verdict};
 use crate::slope::{self, hoek_brown_slope};
 
 /// Bar: within 5 % of Bishop's on the 0.5 m zones (as the Coulomb slope's on its finest),
-/// explicit and implicit within 1 % of each other there.
+/// explicit and implicit within 1 % of each other on the 1 m zones.
 const SLOPE_BAR: f64 = 0.05;
 const APART_BAR: f64 = 0.01;
 
@@ -19,8 +19,10 @@ const APART_BAR: f64 = 0.01;
 /// path's apex handling.)
 const ZONES: [f64; 2] = [1.0, 0.5];
 
-/// `max_cycles` of the explicit search on the 0.5 m zones.
-const EXPLICIT_CYCLES: u64 = 150_000;
+/// `max_cycles` of the explicit search, on the 1 m zones. (On the 0.5 m zones, 150 000 cycles a
+/// trial found 1.8281 against the implicit 1.8203 in 1 361 s, measured on `3731ada`'s code: the
+/// report's second costliest row, so the paths are compared on the coarser zones.)
+const EXPLICIT_CYCLES: u64 = 100_000;
 
 pub struct SlopeHoekBrown;
 
@@ -47,14 +49,14 @@ impl Case for SlopeHoekBrown {
                 at_bar.case, at_bar.errors
             ));
         }
-        let (r, explicit, _) = slope::hoek_brown(SolveMethod::Explicit, ZONES[1], EXPLICIT_CYCLES)?;
+        let (r, explicit, _) = slope::hoek_brown(SolveMethod::Explicit, ZONES[0], EXPLICIT_CYCLES)?;
         print_row(&r);
         rows.push(r);
-        let apart = (explicit - implicit[1]).abs() / implicit[1];
+        let apart = (explicit - implicit[0]).abs() / implicit[0];
         if apart > APART_BAR {
             missed.push(format!(
-                "0.5 m zones: explicit {explicit:.4}, implicit {:.4} ({:.2} % apart)",
-                implicit[1],
+                "1 m zones: explicit {explicit:.4}, implicit {:.4} ({:.2} % apart)",
+                implicit[0],
                 100.0 * apart
             ));
         }
@@ -83,11 +85,14 @@ impl Case for SlopeHoekBrown {
              its normal stress (iterated with the slice's vertical equilibrium; \
              `validation/src/slope.rs`, written apart from the engine's reduction): F = \
              {bishop:.4}. `bishop`: |F − F_Bishop| / F_Bishop. Implicitly on 1 and 0.5 m zones: \
-             {}; explicitly on the 0.5 m zones ({EXPLICIT_CYCLES} cycles): {explicit:.4}. On \
+             {}; explicitly on the 1 m zones ({EXPLICIT_CYCLES} cycles): {explicit:.4} (on the \
+             0.5 m zones, 150 000 cycles a trial, 1.8281 in 1 361 s, measured on `3731ada`'s \
+             code: the paths are compared on the coarser zones). On \
              0.25 m zones (44 271) the implicit path does not settle the gravity stage itself \
              (its ratio stalls where the surface rock sits at the envelope's apex) and the search \
              returns F < 1: left for the implicit path's apex handling. Bars: within {} % of \
-             Bishop's and explicit and implicit within {} % of each other, on the 0.5 m zones. **The Hoek–Brown tunnel** \
+             Bishop's on the 0.5 m zones, explicit and implicit within {} % of each other on the \
+             1 m zones. **The Hoek–Brown tunnel** \
              (`models/tunnel_hb.json`) with its last stage searched: F = {:.3} in {} trials.\n",
             rock.mb,
             rock.s,
