@@ -57,11 +57,6 @@ impl Ejection {
         }
     }
 
-    /// Whether no block is watched.
-    pub fn is_empty(&self) -> bool {
-        self.blocks.is_empty()
-    }
-
     /// After a step: each block's velocity into the opening from its nodes' `mass` (kg/m) and
     /// `vel` (m/s), its peak kept.
     pub fn record(&mut self, mass: &[f64], vel: &[[f64; 2]]) {

@@ -11,7 +11,7 @@
 
 use std::time::Instant;
 
-use crate::quiet::{FREQUENCY, ROCK, history, run_to_completion, wave_speed};
+use crate::quiet::{FREQUENCY, ROCK, run_to_completion, values_after, wave_speed};
 use crate::report::CaseReport;
 use adit::scene::WaveKind;
 
@@ -113,9 +113,7 @@ pub fn balance(loading: Loading, height: f64, zone: f64) -> anyhow::Result<(Case
     }
     let scene = adit::Scene::from_json(&text.to_string(), "energy").expect("a valid column");
     let (r, csv) = run_to_completion(&scene)?;
-    let column = |name: &str| -> anyhow::Result<Vec<f64>> {
-        Ok(history(&csv, name)?.into_iter().map(|(_, v)| v).collect())
-    };
+    let column = |name: &str| values_after(&csv, name, 0);
     let (work, quiet, error) = (column("work")?, column("quiet")?, column("error")?);
     // What entered: the loads' work, or the incident wave's (the quiet term's most negative).
     let entered = (work.iter().zip(&quiet))

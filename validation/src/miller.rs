@@ -32,7 +32,7 @@ use std::time::Instant;
 
 use adit::scene::WaveKind;
 
-use crate::quiet::{ROCK, history_after, run_to_completion, wave_speed};
+use crate::quiet::{ROCK, history_after, run_to_completion, values_after, wave_speed};
 use crate::report::CaseReport;
 
 /// The wave's frequency, Hz, its peak particle velocity, m/s, and the cycles of its train.
@@ -183,14 +183,9 @@ impl Slip {
         // the joint took (its friction: its springs hold nothing once the wave has passed) and
         // what the balance leaves unaccounted.
         let brought = ROCK.2 * wave_speed(WaveKind::S) * incident * WIDTH;
-        let last = |name: &str| -> anyhow::Result<Vec<f64>> {
-            Ok(history_after(&csv, name, settled)?
-                .into_iter()
-                .map(|(_, v)| v)
-                .collect())
-        };
-        let joint = last("joint")?.last().copied().unwrap_or(f64::NAN) / brought;
-        let unaccounted = last("error")?.iter().fold(0.0f64, |m, e| m.max(e.abs())) / brought;
+        let values = |name: &str| values_after(&csv, name, settled);
+        let joint = values("joint")?.last().copied().unwrap_or(f64::NAN) / brought;
+        let unaccounted = values("error")?.iter().fold(0.0f64, |m, e| m.max(e.abs())) / brought;
         let exact = Energies::miller(self.ratio);
         let report = CaseReport::new(
             format!(

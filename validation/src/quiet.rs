@@ -163,6 +163,15 @@ pub(crate) fn history(csv: &str, name: &str) -> anyhow::Result<Vec<(f64, f64)>> 
     history_after(csv, name, 0)
 }
 
+/// The values alone of `history_after`: the history `name`'s column over the rows of cycles
+/// after `cycle`.
+pub(crate) fn values_after(csv: &str, name: &str, cycle: u64) -> anyhow::Result<Vec<f64>> {
+    Ok(history_after(csv, name, cycle)?
+        .into_iter()
+        .map(|(_, v)| v)
+        .collect())
+}
+
 /// `history` over the rows of cycles after `cycle` (a later stage's, when `cycle` is the
 /// earlier stages' count).
 pub(crate) fn history_after(csv: &str, name: &str, cycle: u64) -> anyhow::Result<Vec<(f64, f64)>> {
