@@ -25,6 +25,7 @@ pub mod incompressible;
 pub mod joint_waves;
 pub mod kirsch;
 pub mod kirsch_case;
+pub mod lamb;
 pub mod lined;
 pub mod miller;
 pub mod modes;

@@ -22,6 +22,7 @@ mod inclusion;
 mod incompressible;
 mod joint_waves;
 mod kirsch;
+mod lamb;
 mod lined;
 mod miller;
 mod modes;
@@ -95,6 +96,7 @@ pub fn all() -> Vec<Box<dyn Case>> {
         Box::new(free_field::FreeField),
         Box::new(joint_waves::JointWaves),
         Box::new(miller::Miller),
+        Box::new(lamb::Lamb),
         Box::new(newmark::NewmarkBlock),
         Box::new(energy::EnergyBalance),
     ]
