@@ -31,6 +31,7 @@ pub mod miller;
 pub mod modes;
 pub mod newmark;
 pub mod oblique;
+pub mod pao_mow;
 pub mod patch;
 pub mod peer;
 pub mod plot;
