@@ -123,8 +123,14 @@ def test_ctrl_c_stops_the_run_and_leaves_it_interrupted(root, tmp_path):
             # machine the run (on its own thread) could end before it looks: wait for it here.
             time.sleep(1.0)
 
-    with pytest.raises(KeyboardInterrupt):
-        adit.run(tunnel, out=tmp_path, progress=ctrl_c)
+    # A shell starts a background job with SIGINT ignored, and Python then leaves it ignored:
+    # give it Python's own handler, as an interactive session has.
+    previous = signal.signal(signal.SIGINT, signal.default_int_handler)
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            adit.run(tunnel, out=tmp_path, progress=ctrl_c)
+    finally:
+        signal.signal(signal.SIGINT, previous)
     assert sent
     summary = (tmp_path / "summary.json").read_text()
     assert '"interrupted"' in summary
