@@ -87,6 +87,7 @@ impl Observer for Writing<'_> {
         self.inner.monitored(&row);
     }
     fn sampled(&mut self, model: &Model) {
+        self.inner.sampled(model);
         if self.probes.is_empty() {
             return;
         }

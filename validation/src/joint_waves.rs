@@ -300,13 +300,13 @@ fn product(a: &[[Complex64; 2]; 2], b: &[[Complex64; 2]; 2]) -> [[Complex64; 2];
 /// A window over time: 1 until `end`, falling to 0 as a half cosine over `fall` s (a Tukey
 /// window's tail), so that the records' spectra hold the pulse and its ringing, not the faint
 /// coda the mesh scatters behind them.
-struct Taper {
+pub(crate) struct Taper {
     /// The pulse's arrival, s: the time the spectra's slopes measure from (the group delays'
     /// difference does not depend on it, but what is not pulse weighs in it by its distance
     /// from it).
-    arrival: f64,
-    end: f64,
-    fall: f64,
+    pub(crate) arrival: f64,
+    pub(crate) end: f64,
+    pub(crate) fall: f64,
 }
 
 impl Taper {
@@ -319,14 +319,14 @@ impl Taper {
 /// A record's Fourier transform at one angular frequency ω, X(ω) = ∫ v(t) e^(iωt) dt (the
 /// closed form's convention, e^(−iωt) in time), by the trapezoidal rule over the record's own
 /// samples, and its derivative dX/dω = ∫ i t v(t) e^(iωt) dt, less i t₀ X for the arrival t₀.
-struct Spectrum {
-    value: Complex64,
+pub(crate) struct Spectrum {
+    pub(crate) value: Complex64,
     slope: Complex64,
 }
 
 impl Spectrum {
     /// The transform of the record weighted by `taper`.
-    fn of(samples: &[(f64, f64)], omega: f64, taper: &Taper) -> Spectrum {
+    pub(crate) fn of(samples: &[(f64, f64)], omega: f64, taper: &Taper) -> Spectrum {
         let (mut value, mut slope) = (Complex64::from(0.0), Complex64::from(0.0));
         for w in samples.windows(2) {
             let ((t0, v0), (t1, v1)) = (w[0], w[1]);

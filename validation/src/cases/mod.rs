@@ -27,6 +27,7 @@ mod lined;
 mod miller;
 mod modes;
 mod newmark;
+mod pao_mow;
 mod patch;
 mod plastic_zoning;
 mod pullout;
@@ -97,6 +98,7 @@ pub fn all() -> Vec<Box<dyn Case>> {
         Box::new(joint_waves::JointWaves),
         Box::new(miller::Miller),
         Box::new(lamb::Lamb),
+        Box::new(pao_mow::PaoMow),
         Box::new(newmark::NewmarkBlock),
         Box::new(energy::EnergyBalance),
     ]
