@@ -43,8 +43,9 @@ use crate::solve::HistoryRow;
 /// scene's part so far as text (`prefix.rs`) for its hash, the run's name, the supports' state
 /// per installed group. 10: no implicit seconds (`Cost`'s wall-clock figures are not state).
 /// 11: each bolt node's rock displacement at the last force stage and the energy the bolt took
-/// there (`Cables::rock_last`, `absorbed`).
-pub const VERSION: u32 = 11;
+/// there (`Cables::rock_last`, `absorbed`). 12: each trial's farthest block departure
+/// (`Trial::departure_m`).
+pub const VERSION: u32 = 12;
 
 const MAGIC: &[u8; 8] = b"ADITCKPT";
 
@@ -321,6 +322,7 @@ impl Codec for Trial {
         put(out, &self.status);
         put(out, &self.cycles);
         put(out, &self.displacement_m);
+        put(out, &self.departure_m);
         put(out, &self.moving);
     }
     fn get(r: &mut Reader) -> anyhow::Result<Self> {
@@ -330,6 +332,7 @@ impl Codec for Trial {
             status: Codec::get(r)?,
             cycles: Codec::get(r)?,
             displacement_m: Codec::get(r)?,
+            departure_m: Codec::get(r)?,
             moving: Codec::get(r)?,
         })
     }

@@ -14,6 +14,11 @@ pub struct Trial {
     pub cycles: u64,
     /// The largest displacement of a node during the trial, from the stage's equilibrium, m.
     pub displacement_m: f64,
+    /// The farthest a block moved beyond the rock around it (the least displacement of its
+    /// nodes less the largest of the nodes of the blocks it touched at the stage's equilibrium;
+    /// the largest over the blocks, at least 0), m: a trial whose block left the rock around it
+    /// by more than `displacement_limit` is unstable.
+    pub departure_m: f64,
     /// The block still sliding when the trial converged (named with its speed), which makes it
     /// unstable; absent when none was.
     #[serde(default, skip_serializing_if = "Option::is_none")]

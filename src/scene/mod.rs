@@ -246,7 +246,8 @@ pub struct FactorOfSafetySpec {
     /// smallest. A stage stable at it reports a factor of at least this.
     #[serde(default = "FactorOfSafetySpec::default_max_factor")]
     pub max_factor: f64,
-    /// A trial whose largest node displacement from the stage's equilibrium exceeds this is
+    /// A trial in which a block moved further than this beyond the rock around it (every node of
+    /// it, beyond the farthest node of the blocks it touched at the stage's equilibrium) is
     /// unstable though its solve converged (a block that slid off and came to rest elsewhere),
     /// m (positive; default 1 % of the region's size).
     #[serde(default)]
