@@ -229,31 +229,61 @@ impl Hole {
         }
     }
 
-    pub fn scene(&self) -> adit::Scene {
+    /// The square with its hole, zoned, as JSON: the scenes' common part, named `name`.
+    fn square(&self, name: &str) -> serde_json::Value {
         let (e, nu, rho) = ROCK;
         let h = 0.5 * self.size;
-        let taper = self.taper();
         let segments = (2.0 * PI * self.radius / self.wall_zone).round() as u32;
-        let text = serde_json::json!({
-            "name": "pao_mow",
+        serde_json::json!({
+            "name": name,
             "materials": { "rock": { "density": rho, "young": e, "poisson": nu } },
             "region": { "polygon": [[-h, -h], [h, -h], [h, h], [-h, h]],
                         "edge_names": ["base", "right", "top", "left"], "material": "rock" },
             "excavations": [{ "name": "hole",
                               "circle": { "center": [0, 0], "radius": self.radius, "segments": segments } }],
             "zoning": { "edge_at_excavation": self.wall_zone, "edge_far": self.far_zone },
-            "boundary": [
-                { "part": "base", "quiet": true,
-                  "incident": { "wave": "p", "velocity": PEAK, "pulse": "ricker", "frequency": self.frequency } },
-                { "part": "top", "quiet": true },
-                { "part": "left", "quiet": true, "free_field": true },
-                { "part": "right", "quiet": true, "free_field": true }
-            ],
-            "solve": { "mode": "dynamic", "duration": taper.end + taper.fall, "damping": 0,
-                       "monitor_every": 1, "max_cycles": 10_000_000 },
             "output": { "checkpoints": false, "every": 0 }
-        });
+        })
+    }
+
+    pub fn scene(&self) -> adit::Scene {
+        let taper = self.taper();
+        let mut text = self.square("pao_mow");
+        text["boundary"] = serde_json::json!([
+            { "part": "base", "quiet": true,
+              "incident": { "wave": "p", "velocity": PEAK, "pulse": "ricker", "frequency": self.frequency } },
+            { "part": "top", "quiet": true },
+            { "part": "left", "quiet": true, "free_field": true },
+            { "part": "right", "quiet": true, "free_field": true }
+        ]);
+        text["solve"] = serde_json::json!({ "mode": "dynamic", "duration": taper.end + taper.fall,
+                                             "damping": 0, "monitor_every": 1, "max_cycles": 10_000_000 });
         adit::Scene::from_json(&text.to_string(), "pao_mow").expect("a valid hole")
+    }
+
+    /// Run `scene` in a scratch folder with the wall's gauge: the result and the gauge's
+    /// samples; an error unless it ended `status`.
+    fn gauged(
+        &self,
+        scene: &adit::Scene,
+        status: &str,
+    ) -> anyhow::Result<(adit::RunResult, Vec<(f64, f64)>)> {
+        let out = std::env::temp_dir().join(format!(
+            "adit-validation-{}-{}",
+            scene.name,
+            std::process::id()
+        ));
+        let mut gauge = WallGauge::new(self.radius, REACH * self.radius);
+        let r = adit::run_scene(scene, &out, &mut gauge);
+        let _ = std::fs::remove_dir_all(&out);
+        let r = r?;
+        anyhow::ensure!(
+            r.summary.status == status,
+            "{}: {}",
+            scene.name,
+            r.summary.status
+        );
+        Ok((r, gauge.samples))
     }
 
     /// The incident particle velocity at the base, m/s: the Ricker wavelet.
@@ -265,19 +295,7 @@ impl Hole {
     /// Run the hole and compare |σθθ|/σ₀ with the series over the band.
     pub fn run(&self) -> anyhow::Result<Measured> {
         let start = Instant::now();
-        let scene = self.scene();
-        let out =
-            std::env::temp_dir().join(format!("adit-validation-pao-mow-{}", std::process::id()));
-        let mut gauge = WallGauge::new(self.radius, REACH * self.radius);
-        let r = adit::run_scene(&scene, &out, &mut gauge);
-        let _ = std::fs::remove_dir_all(&out);
-        let r = r?;
-        anyhow::ensure!(
-            r.summary.status == "completed",
-            "pao_mow: {}",
-            r.summary.status
-        );
-        let wall = gauge.samples;
+        let (r, wall) = self.gauged(&self.scene(), "completed")?;
         let incident: Vec<(f64, f64)> = (wall.iter())
             .map(|&(t, _)| (t, ROCK.2 * Self::speed() * self.incident(t)))
             .collect();
@@ -345,39 +363,19 @@ impl Hole {
     /// hoop stress over σ₀ against Kirsch's 3 − ν/(1 − ν), and the row.
     pub fn quasi_static(&self) -> anyhow::Result<(CaseReport, f64)> {
         let start = Instant::now();
-        let (e, nu, rho) = ROCK;
+        let nu = ROCK.1;
         let (h, s0) = (0.5 * self.size, 1e6);
-        let segments = (2.0 * PI * self.radius / self.wall_zone).round() as u32;
-        let text = serde_json::json!({
-            "name": "pao_mow_static",
-            "materials": { "rock": { "density": rho, "young": e, "poisson": nu } },
-            "region": { "polygon": [[-h, -h], [h, -h], [h, h], [-h, h]],
-                        "edge_names": ["base", "right", "top", "left"], "material": "rock" },
-            "excavations": [{ "name": "hole",
-                              "circle": { "center": [0, 0], "radius": self.radius, "segments": segments } }],
-            "zoning": { "edge_at_excavation": self.wall_zone, "edge_far": self.far_zone },
-            "in_situ": { "sxx": -s0 * nu / (1.0 - nu), "syy": -s0, "sxy": 0 },
-            "boundary": [{ "part": "outer", "in_situ_traction": true },
-                         { "at": [h, 0], "fix": "y" }, { "at": [-h, 0], "fix": "y" },
-                         { "at": [0, h], "fix": "x" }, { "at": [0, -h], "fix": "x" }],
-            "solve": { "ratio": 1e-8, "max_cycles": 100_000 },
-            "output": { "checkpoints": false, "every": 0 }
-        });
+        let mut text = self.square("pao_mow_static");
+        text["in_situ"] = serde_json::json!({ "sxx": -s0 * nu / (1.0 - nu), "syy": -s0, "sxy": 0 });
+        text["boundary"] = serde_json::json!([
+            { "part": "outer", "in_situ_traction": true },
+            { "at": [h, 0], "fix": "y" }, { "at": [-h, 0], "fix": "y" },
+            { "at": [0, h], "fix": "x" }, { "at": [0, -h], "fix": "x" }
+        ]);
+        text["solve"] = serde_json::json!({ "ratio": 1e-8, "max_cycles": 100_000 });
         let scene = adit::Scene::from_json(&text.to_string(), "pao_mow_static")?;
-        let out = std::env::temp_dir().join(format!(
-            "adit-validation-pao-mow-static-{}",
-            std::process::id()
-        ));
-        let mut gauge = WallGauge::new(self.radius, REACH * self.radius);
-        let r = adit::run_scene(&scene, &out, &mut gauge);
-        let _ = std::fs::remove_dir_all(&out);
-        let r = r?;
-        anyhow::ensure!(
-            r.summary.status == "converged",
-            "pao_mow_static: {}",
-            r.summary.status
-        );
-        let hoop = gauge.samples.last().map_or(f64::NAN, |s| -s.1 / s0);
+        let (r, samples) = self.gauged(&scene, "converged")?;
+        let hoop = samples.last().map_or(f64::NAN, |s| -s.1 / s0);
         let kirsch = 3.0 - nu / (1.0 - nu);
         let error = (hoop / kirsch - 1.0).abs();
         let report = CaseReport::new(
