@@ -732,6 +732,7 @@ fn build_solve_write(
         warnings: [
             built.warnings.clone(),
             moving_warnings(&stage_summaries, built.plan.staged),
+            inverted_warnings(&stage_summaries, built.plan.staged),
             over_capacity_warnings(&liners),
             plot_warnings,
         ]
@@ -776,17 +777,30 @@ fn over_capacity_warnings(liners: &[crate::support::LinerLoad]) -> Vec<String> {
         .collect()
 }
 
+/// The stages' factors of safety whose trial turned zones inside out
+/// (`FactorOfSafety::inverted_warning`), each named by its stage in a `staged` run.
+fn inverted_warnings(stages: &[StageSummary], staged: bool) -> Vec<String> {
+    (stages.iter())
+        .filter_map(|s| {
+            let warning = s.factor_of_safety.as_ref()?.inverted_warning()?;
+            Some(of_stage(s, staged, warning))
+        })
+        .collect()
+}
+
 /// The stages' blocks still moving at convergence or at a cycle limit (`cycle::drift`) as
 /// warnings, each named by its stage in a `staged` run.
 fn moving_warnings(stages: &[StageSummary], staged: bool) -> Vec<String> {
     (stages.iter())
-        .filter_map(|s| {
-            let moving = s.moving.as_ref()?;
-            Some(if staged {
-                format!("stage '{}': {moving}", s.name)
-            } else {
-                moving.clone()
-            })
-        })
+        .filter_map(|s| Some(of_stage(s, staged, s.moving.clone()?)))
         .collect()
+}
+
+/// A stage's `warning`, named by its stage in a `staged` run.
+fn of_stage(stage: &StageSummary, staged: bool, warning: String) -> String {
+    if staged {
+        format!("stage '{}': {warning}", stage.name)
+    } else {
+        warning
+    }
 }

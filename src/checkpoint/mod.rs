@@ -44,8 +44,9 @@ use crate::solve::HistoryRow;
 /// per installed group. 10: no implicit seconds (`Cost`'s wall-clock figures are not state).
 /// 11: each bolt node's rock displacement at the last force stage and the energy the bolt took
 /// there (`Cables::rock_last`, `absorbed`). 12: each trial's farthest block departure
-/// (`Trial::departure_m`).
-pub const VERSION: u32 = 12;
+/// (`Trial::departure_m`). 13: each trial's inverted zones and a failed trial's reason
+/// (`Trial::inverted`, `Trial::reason`).
+pub const VERSION: u32 = 13;
 
 const MAGIC: &[u8; 8] = b"ADITCKPT";
 
@@ -323,7 +324,9 @@ impl Codec for Trial {
         put(out, &self.cycles);
         put(out, &self.displacement_m);
         put(out, &self.departure_m);
+        put(out, &self.inverted);
         put(out, &self.moving);
+        put(out, &self.reason);
     }
     fn get(r: &mut Reader) -> anyhow::Result<Self> {
         Ok(Trial {
@@ -333,7 +336,9 @@ impl Codec for Trial {
             cycles: Codec::get(r)?,
             displacement_m: Codec::get(r)?,
             departure_m: Codec::get(r)?,
+            inverted: Codec::get(r)?,
             moving: Codec::get(r)?,
+            reason: Codec::get(r)?,
         })
     }
 }

@@ -5,7 +5,9 @@
 //! ejection and the energy balance take the step. A scene without them pays one branch each.
 
 use crate::dynamics::{Ejection, Energy, Inputs, Moving, Peaks, QuietBoundary, Stepped};
+use crate::law::ZoneLaw;
 use crate::model::bodies::{Bodies, NO_BODY};
+use crate::model::zones::Zones;
 use crate::model::{FIX_X, FIX_Y, Nodes};
 
 /// What the step's force stages passed between the rock and its joints and supports, for the
@@ -14,6 +16,16 @@ use crate::model::{FIX_X, FIX_Y, Nodes};
 pub(super) struct Exchanged<'a> {
     pub joints: &'a [f64],
     pub supports: &'a [[f64; 2]],
+}
+
+/// What the step's damping acted on, for the energy balance: whether the motion stage damped the
+/// nodes (local or mass-proportional damping), β_R/Δt (`CycleParams::viscous_ratio`), and the
+/// zones' stress after the step (Pa), areas (m²), materials and laws (their moduli).
+pub(super) struct Damped<'a> {
+    pub nodes: bool,
+    pub viscous: f64,
+    pub zones: &'a Zones,
+    pub laws: &'a [Box<dyn ZoneLaw>],
 }
 
 /// The dynamic state of the model the stage reads and writes.
@@ -48,9 +60,18 @@ impl Dynamic<'_> {
         nodes: &mut Nodes,
         bodies: &Bodies,
         exchanged: Exchanged,
+        damped: Damped,
         time: f64,
         dt: f64,
     ) -> f64 {
+        if let Some(e) = self.energy.as_mut() {
+            e.damp_nodes(
+                &stepped(nodes, bodies, &exchanged),
+                &nodes.force,
+                damped.nodes,
+                dt,
+            );
+        }
         let mut speed = 0.0;
         if let Some(q) = self.quiet.as_mut() {
             let fixed = &nodes.fixed;
@@ -73,23 +94,35 @@ impl Dynamic<'_> {
             ejection.record(&nodes.mass, &nodes.vel);
         }
         if let Some(e) = self.energy.as_mut() {
-            let (fixed, of_node) = (&nodes.fixed, &bodies.of_node);
-            let stepped = Stepped {
-                mass: &nodes.mass,
-                vel: &nodes.vel,
-                applied: &nodes.applied,
-                free: |n: usize| {
-                    let f = fixed[n];
-                    (of_node.get(n).is_none_or(|&b| b == NO_BODY))
-                        .then_some([f & FIX_X == 0, f & FIX_Y == 0])
-                },
-                body_mass: &bodies.mass,
-                body_vel: &bodies.velocity,
-                joint_work: exchanged.joints,
-                support_force: exchanged.supports,
-            };
-            e.account(stepped, dt);
+            let zones = damped.zones;
+            let moduli = |z: usize| damped.laws[zones.material[z].0 as usize].moduli();
+            e.damp_zones(&zones.stress, &zones.area, moduli, damped.viscous);
+            e.account(stepped(nodes, bodies, &exchanged), dt);
         }
         speed
+    }
+}
+
+/// The nodes' and blocks' state as the energy balance reads it after a step (`Stepped`): a node's
+/// free components, none for a rigid or simple block's node (its block carries it).
+fn stepped<'a>(
+    nodes: &'a Nodes,
+    bodies: &'a Bodies,
+    exchanged: &Exchanged<'a>,
+) -> Stepped<'a, impl Fn(usize) -> Option<[bool; 2]> + 'a> {
+    let (fixed, of_node) = (&nodes.fixed, &bodies.of_node);
+    Stepped {
+        mass: &nodes.mass,
+        vel: &nodes.vel,
+        applied: &nodes.applied,
+        free: move |n: usize| {
+            let f = fixed[n];
+            (of_node.get(n).is_none_or(|&b| b == NO_BODY))
+                .then_some([f & FIX_X == 0, f & FIX_Y == 0])
+        },
+        body_mass: &bodies.mass,
+        body_vel: &bodies.velocity,
+        joint_work: exchanged.joints,
+        support_force: exchanged.supports,
     }
 }

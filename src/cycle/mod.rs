@@ -295,7 +295,14 @@ impl Cycle {
             joints: &self.contact_work,
             supports: &self.support_force,
         };
-        let speed = speed.max(dynamic.after_motion(nodes, bodies, exchanged, self.time, p.dt));
+        let damped = dynamic::Damped {
+            nodes: p.damping > 0.0 || p.mass_damping > 0.0,
+            viscous: p.viscous_ratio(),
+            zones,
+            laws,
+        };
+        let time = self.time;
+        let speed = speed.max(dynamic.after_motion(nodes, bodies, exchanged, damped, time, p.dt));
         self.time += p.dt;
         self.moved += speed * p.dt;
         let t7 = Instant::now();

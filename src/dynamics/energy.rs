@@ -21,10 +21,15 @@
 //! rock does on the joint, the same trapezoid); the supports' S (what bolts and liners store,
 //! dissipate by yielding and carry as their own motion) is the work the rock does on them,
 //! −Σ ½(f_{n−1} + f_n)·v_{n−½} Δt over their force slots f. The error is the work less the rest:
-//! W − ΔK − U − Q − J − S, zero to round-off for a linear undamped model (a joint that slips or a
-//! support that yields within a step: of the order of that step's share). Not yet counted: local
-//! and Rayleigh damping (a zone's viscous stress), and the work of prescribed motions (their
-//! reactions are not loads).
+//! W − ΔK − U − Q − J − S − D, zero to round-off for a linear model (a joint that slips or a
+//! support that yields within a step: of the order of that step's share), with D what damping
+//! took: at the nodes, the force the motion stage's local and mass-proportional damping took from
+//! each free component, f_d = m (v⁺ − v⁻)/Δt − F (read before the quiet boundary corrects its
+//! nodes), by the same trapezoid, negated; in the zones, the stiffness-proportional viscous stress
+//! σ_v = (β_R/Δt) Δσ by ½ A (σ_v,n−1 + σ_v,n) : D⁻¹ : Δσ_n over each step's stress change Δσ_n
+//! (exact for an elastic zone, whose strain increment is D⁻¹ Δσ; a yielding zone's viscous stress
+//! works on its elastic part only). Not yet counted: the damping of rigid and simple blocks, and the
+//! work of prescribed motions (their reactions are not loads).
 
 use crate::law::Stress;
 
@@ -54,6 +59,15 @@ pub struct Energy {
     /// The energy into the joints and into the supports so far, J/m.
     joints: f64,
     supports: f64,
+    /// Each node's damping force at the last step (local and mass-proportional, free components),
+    /// N/m.
+    last_damping: Vec<[f64; 2]>,
+    /// Each zone's stress after the last step and its viscous stress then (stiffness-proportional
+    /// damping), Pa.
+    last_stress: Vec<Stress>,
+    last_viscous: Vec<Stress>,
+    /// The energy damping took so far, J/m.
+    damping: f64,
 }
 
 /// The balance's terms, J/m.
@@ -65,7 +79,8 @@ pub struct Balance {
     pub quiet: f64,
     pub joints: f64,
     pub supports: f64,
-    /// W − ΔK − U − Q − J − S.
+    pub damping: f64,
+    /// W − ΔK − U − Q − J − S − D.
     pub error: f64,
 }
 
@@ -107,6 +122,71 @@ impl Energy {
             slot_nodes,
             joints: 0.0,
             supports: 0.0,
+            last_damping: vec![[0.0; 2]; vel.len()],
+            last_stress: stress.to_vec(),
+            last_viscous: vec![[0.0; 4]; stress.len()],
+            damping: 0.0,
+        }
+    }
+
+    /// After the motion stage, before the quiet boundary corrects its nodes: each free node
+    /// component's damping force f_d = m (v⁺ − v⁻)/Δt − F, what local and mass-proportional damping
+    /// took from the force F the motion stage gathered (`force`, N/m), and the energy it took,
+    /// −½(f_d,n−1 + f_d,n)·v⁻ Δt (not at the balance's first step). An undamped step's f_d is 0
+    /// and is not computed (`damped` false).
+    pub(crate) fn damp_nodes<F: Fn(usize) -> Option<[bool; 2]>>(
+        &mut self,
+        s: &Stepped<F>,
+        force: &[[f64; 2]],
+        damped: bool,
+        dt: f64,
+    ) {
+        if !damped {
+            return;
+        }
+        let mut took = 0.0;
+        for n in 0..s.vel.len() {
+            let Some(free) = (s.free)(n) else {
+                continue;
+            };
+            let (before, after, last) = (self.before[n], s.vel[n], &mut self.last_damping[n]);
+            for d in (0..2).filter(|&d| free[d]) {
+                let f = s.mass[n] * (after[d] - before[d]) / dt - force[n][d];
+                took -= 0.5 * (last[d] + f) * before[d] * dt;
+                last[d] = f;
+            }
+        }
+        if self.start_kinetic.is_some() {
+            self.damping += took;
+        }
+    }
+
+    /// After the step: each zone's viscous stress σ_v = `viscous` Δσ (β_R/Δt,
+    /// `CycleParams::viscous_ratio`; nothing without stiffness-proportional damping) over its
+    /// stress change Δσ since the last step (`stress`, Pa), and the energy it took,
+    /// ½ A (σ_v,n−1 + σ_v,n) : D⁻¹ : Δσ, with the zones' `area` (m²) and `moduli` (bulk, shear, Pa).
+    pub(crate) fn damp_zones(
+        &mut self,
+        stress: &[Stress],
+        area: &[f64],
+        moduli: impl Fn(usize) -> (f64, f64),
+        viscous: f64,
+    ) {
+        if viscous == 0.0 {
+            return;
+        }
+        let mut took = 0.0;
+        for z in 0..stress.len() {
+            let change: Stress = std::array::from_fn(|k| stress[z][k] - self.last_stress[z][k]);
+            let rate: Stress = change.map(|c| viscous * c);
+            let mean: Stress = std::array::from_fn(|k| 0.5 * (self.last_viscous[z][k] + rate[k]));
+            let (bulk, shear) = moduli(z);
+            took += area[z] * compliance(&mean, &change, bulk, shear);
+            self.last_stress[z] = stress[z];
+            self.last_viscous[z] = rate;
+        }
+        if self.start_kinetic.is_some() {
+            self.damping += took;
         }
     }
 
@@ -184,7 +264,14 @@ impl Energy {
             quiet,
             joints: self.joints,
             supports: self.supports,
-            error: self.work - kinetic - strain - quiet - self.joints - self.supports,
+            damping: self.damping,
+            error: self.work
+                - kinetic
+                - strain
+                - quiet
+                - self.joints
+                - self.supports
+                - self.damping,
         }
     }
 }

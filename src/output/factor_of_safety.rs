@@ -19,10 +19,20 @@ pub struct Trial {
     /// the largest over the blocks, at least 0), m: a trial whose block left the rock around it
     /// by more than `displacement_limit` is unstable.
     pub departure_m: f64,
+    /// How many zones the trial turned inside out (their area in the deformed configuration
+    /// reversed: the rock gone through itself, which small strain does not see). Reported, not
+    /// judged (where it first happens depends on the solve's path); a factor of safety whose own
+    /// trial has any is warned of (`FactorOfSafety::inverted_warning`).
+    #[serde(default)]
+    pub inverted: usize,
     /// The block still sliding when the trial converged (named with its speed), which makes it
     /// unstable; absent when none was.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub moving: Option<String>,
+    /// Why its solve stopped, when it `failed` (the monitor's or the step's reason: a runaway,
+    /// interpenetration, an unstable step, naming the node or zone); absent otherwise.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub reason: Option<String>,
 }
 
 /// A factor of safety found.
@@ -75,6 +85,27 @@ impl FactorOfSafety {
         self.bracket() + &moving
     }
 
+    /// A warning when the trial at the factor of safety turned zones inside out
+    /// (`Trial::inverted`): its rock has passed through itself, which small strain does not see,
+    /// so the factor is where a path-dependent flow stopped, not a property of the rock; it names
+    /// the largest factor tried whose trial turned none.
+    pub fn inverted_warning(&self) -> Option<String> {
+        let found = (self.trials.iter()).find(|t| t.stable && t.factor == self.factor)?;
+        (found.inverted > 0).then(|| {
+            let sound = (self.trials.iter())
+                .filter(|t| t.stable && t.inverted == 0)
+                .map(|t| t.factor)
+                .fold(0.0, f64::max);
+            format!(
+                "factor of safety {:.4}: its trial turned {} zones inside out (nodes moved up to \
+                 {:.2} m from the stage's equilibrium): the rock has passed through itself, which \
+                 small strain does not see, and the factor depends on the solve's path; the \
+                 largest factor tried whose trial turned none is {sound:.4}",
+                self.factor, found.inverted, found.displacement_m
+            )
+        })
+    }
+
     /// The factor, its bracket and the trials.
     fn bracket(&self) -> String {
         let trials = self.trials.len();
@@ -91,5 +122,45 @@ impl FactorOfSafety {
                 self.factor
             ),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn trial(factor: f64, stable: bool, inverted: usize) -> Trial {
+        Trial {
+            factor,
+            stable,
+            status: "converged".into(),
+            cycles: 10,
+            displacement_m: factor,
+            departure_m: 0.0,
+            inverted,
+            moving: None,
+            reason: None,
+        }
+    }
+
+    #[test]
+    fn a_factor_whose_trial_inverted_zones_is_warned_of() {
+        let mut fos = FactorOfSafety {
+            factor: 3.5,
+            unstable: Some(4.0),
+            tolerance: 0.01,
+            trials: vec![
+                trial(2.0, true, 0),
+                trial(4.0, false, 9),
+                trial(3.0, true, 0),
+            ],
+            mechanism: Vec::new(),
+        };
+        fos.trials.push(trial(3.5, true, 0));
+        assert_eq!(fos.inverted_warning(), None);
+        fos.trials[3].inverted = 2;
+        let warning = fos.inverted_warning().expect("a warning");
+        assert!(warning.contains("turned 2 zones inside out"), "{warning}");
+        assert!(warning.contains("turned none is 3.0000"), "{warning}");
     }
 }

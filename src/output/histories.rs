@@ -124,6 +124,7 @@ impl Probes {
             | Q::QuietEnergy
             | Q::JointEnergy
             | Q::SupportEnergy
+            | Q::DampingEnergy
             | Q::EnergyError => Some(0),
         }
     }
@@ -183,6 +184,7 @@ impl Probes {
                 Q::QuietEnergy => term(|b| b.quiet),
                 Q::JointEnergy => term(|b| b.joints),
                 Q::SupportEnergy => term(|b| b.supports),
+                Q::DampingEnergy => term(|b| b.damping),
                 Q::EnergyError => term(|b| b.error),
             })
             .collect()

@@ -140,6 +140,8 @@ pub enum HistoryQuantity {
     /// (bolts and liners: stored, yielded and their own motion), J/m.
     JointEnergy,
     SupportEnergy,
+    /// The energy damping took (local, Rayleigh mass- and stiffness-proportional), J/m.
+    DampingEnergy,
     EnergyError,
 }
 
@@ -164,6 +166,7 @@ impl HistoryQuantity {
             HistoryQuantity::QuietEnergy => "quiet_energy_j_per_m",
             HistoryQuantity::JointEnergy => "joint_energy_j_per_m",
             HistoryQuantity::SupportEnergy => "support_energy_j_per_m",
+            HistoryQuantity::DampingEnergy => "damping_energy_j_per_m",
             HistoryQuantity::EnergyError => "energy_error_j_per_m",
         }
     }
@@ -178,6 +181,7 @@ impl HistoryQuantity {
                 | HistoryQuantity::QuietEnergy
                 | HistoryQuantity::JointEnergy
                 | HistoryQuantity::SupportEnergy
+                | HistoryQuantity::DampingEnergy
                 | HistoryQuantity::EnergyError
         )
     }

@@ -7,7 +7,7 @@ use super::geometry::Meshed;
 use crate::dynamics::History;
 use crate::law::ZoneLaw;
 use crate::model::Zones;
-use crate::scene::{BlockMode, Scene};
+use crate::scene::{BlockMode, DEFAULT_DAMPING, Scene, SolveMode};
 
 /// Most thin blocks named one by one in the warnings; the rest are counted.
 const THIN_NAMED: usize = 10;
@@ -81,6 +81,7 @@ fn input_warnings(scene: &Scene) -> Vec<String> {
              them (`stages[i].install`)"
         ));
     }
+    out.extend(undamped_default_warnings(scene));
     let ys = scene.region.polygon.iter().map(|p| p[1]);
     let (low, high) = ys.fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), y| {
         (l.min(y), h.max(y))
@@ -120,6 +121,34 @@ fn input_warnings(scene: &Scene) -> Vec<String> {
         }
     }
     out
+}
+
+/// A warning for each dynamic solve that gives neither `damping` nor `rayleigh` and so takes the
+/// static default local damping (`DEFAULT_DAMPING`, 0.8: about a quarter of critical, α = πξ), which
+/// takes most of a wave's energy within a few periods; a dynamic analysis names its damping.
+fn undamped_default_warnings(scene: &Scene) -> Vec<String> {
+    let solves = std::iter::once(("solve".to_string(), &scene.solve)).chain(
+        (scene.stages.iter().enumerate())
+            .filter_map(|(i, st)| Some((format!("stages[{i}].solve"), st.solve.as_ref()?))),
+    );
+    let used_by_stages = scene.stages.is_empty() || scene.stages.iter().any(|s| s.solve.is_none());
+    (solves)
+        .filter(|(field, s)| {
+            (field != "solve" || used_by_stages)
+                && s.mode == SolveMode::Dynamic
+                && s.damping.is_none()
+                && s.rayleigh.is_none()
+        })
+        .map(|(field, _)| {
+            format!(
+                "{field}: a dynamic solve with neither `damping` nor `rayleigh` takes the static \
+                 default local damping {DEFAULT_DAMPING} (about {:.0} % of critical), which takes \
+                 most of a wave's energy within a few periods; give `damping` (0 for none, \
+                 π ξ for a fraction ξ of critical) or `rayleigh`",
+                100.0 * DEFAULT_DAMPING / std::f64::consts::PI
+            )
+        })
+        .collect()
 }
 
 /// The warnings of `meshed`, in the order `adit check` prints them; an error when a zone is sharper
@@ -322,5 +351,39 @@ mod tests {
             "{}",
             merged[0]
         );
+    }
+
+    /// A dynamic solve that names no damping is warned of, naming its field; one that names
+    /// either is not, nor is the scene's `solve` when every stage gives its own.
+    #[test]
+    fn a_dynamic_solve_on_the_default_damping_is_warned_of() {
+        let scene = |solve: &str, stage: &str| {
+            let text = format!(
+                r#"{{ "name": "d", "materials": {{ "rock": {{ "density": 2600, "young": 2e10, "poisson": 0.25 }} }},
+                  "region": {{ "polygon": [[0, 0], [4, 0], [4, 4], [0, 4]], "material": "rock" }},
+                  "zoning": {{ "edge_at_excavation": 1.0, "edge_far": 1.0 }},
+                  "boundary": [{{ "part": "outer", "fix": "xy" }}],
+                  "solve": {solve}, "stages": [{{ "name": "a" }}, {{ "name": "b"{stage} }}] }}"#
+            );
+            let scene = crate::Scene::from_json(&text, "d").unwrap();
+            super::undamped_default_warnings(&scene)
+        };
+        let dynamic = r#"{ "mode": "dynamic", "duration": 0.01 }"#;
+        let warned = scene(dynamic, "");
+        assert_eq!(warned.len(), 1, "{warned:?}");
+        assert!(
+            warned[0].starts_with("solve: a dynamic solve"),
+            "{}",
+            warned[0]
+        );
+        let own = format!(r#", "solve": {dynamic}"#);
+        let warned = scene("{}", &own);
+        assert_eq!(warned.len(), 1, "{warned:?}");
+        assert!(warned[0].starts_with("stages[1].solve:"), "{}", warned[0]);
+        let damped = r#", "solve": { "mode": "dynamic", "duration": 0.01, "damping": 0 }"#;
+        assert!(scene("{}", damped).is_empty());
+        let rayleigh = r#", "solve": { "mode": "dynamic", "duration": 0.01,
+            "rayleigh": { "fraction": 0.02, "frequency": 10 } }"#;
+        assert!(scene("{}", rayleigh).is_empty());
     }
 }

@@ -79,6 +79,7 @@ pub fn search(
         }
         let displacement = largest_move(&at_rest, &model.nodes.disp);
         let departed = farthest_departure(model, &at_rest, &touching);
+        let inverted = inverted_zones(model);
         let stable = solution.status == Status::Converged && moving.is_none() && departed <= limit;
         if !stable {
             let mut at = Vec::new();
@@ -87,6 +88,10 @@ pub fn search(
             moving_blocks = moved_blocks(model, &at_rest);
         }
         bracket.record(factor, stable);
+        let reason = match &solution.status {
+            Status::Failed(reason) => Some(reason.clone()),
+            _ => None,
+        };
         trials.push(Trial {
             factor,
             stable,
@@ -94,7 +99,9 @@ pub fn search(
             cycles: solution.cycles,
             displacement_m: displacement,
             departure_m: departed,
+            inverted,
             moving,
+            reason,
         });
     }
     restore(model, &equilibrium)?;
@@ -158,6 +165,28 @@ fn farthest_departure(model: &Model, at_rest: &[[f64; 2]], touching: &[Vec<u32>]
             span[b].0 - around
         })
         .fold(0.0, f64::max)
+}
+
+/// How many zones of the rock (blocks not excavated) the trial turned inside out: their area in
+/// the current configuration x = X + u of the opposite sign to their reference area, or zero (a
+/// triangle whose vertex has passed through its opposite edge: the rock gone through itself).
+/// Small strain does not see it, so it does not judge a trial (the factor at which it first
+/// happens depends on the path as the displacement does); a factor of safety whose trial has
+/// any is warned of (`FactorOfSafety::inverted_warning`).
+fn inverted_zones(model: &Model) -> usize {
+    let (zones, nodes) = (&model.zones, &model.nodes);
+    let at = |n: u32| {
+        let (p, u) = (nodes.pos[n as usize], nodes.disp[n as usize]);
+        [p[0] + u[0], p[1] + u[1]]
+    };
+    (0..zones.len())
+        .filter(|&z| !model.blocks.is_removed(zones.block[z] as usize))
+        .filter(|&z| {
+            let [a, b, c] = zones.nodes[z].map(at);
+            let twice = (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]);
+            twice * zones.area[z].signum() <= 0.0
+        })
+        .count()
 }
 
 /// The most blocks a mechanism names.
@@ -439,6 +468,31 @@ mod tests {
         let (b, _) = search_for(1e-6, 0.005);
         assert_eq!(b.stable, 0.0);
         assert!(b.unstable >= 0.01 && b.unstable < 0.02, "{b:?}");
+    }
+
+    /// No rigid move inverts a zone; a vertex moved through the line of its opposite edge does.
+    #[test]
+    fn a_zone_is_inverted_when_a_vertex_passes_its_opposite_edge() {
+        let scene = crate::Scene::from_json(&block_on_a_plane("explicit", 40.0, 0.0), "d").unwrap();
+        let mut model = crate::setup::setup(&scene).unwrap().model;
+        assert!(!model.zones.is_empty());
+        assert_eq!(inverted_zones(&model), 0);
+        // A rigid move of everything, a metre across and a quarter-turn: no zone inverted.
+        let (s, c) = std::f64::consts::FRAC_PI_2.sin_cos();
+        for (u, p) in model.nodes.disp.iter_mut().zip(&model.nodes.pos) {
+            let turned = [c * p[0] - s * p[1] + 1.0, s * p[0] + c * p[1] - 0.5];
+            *u = [turned[0] - p[0], turned[1] - p[1]];
+        }
+        assert_eq!(inverted_zones(&model), 0);
+        // Zone 0's first vertex mirrored through the line of its opposite edge.
+        model.nodes.disp.fill([0.0; 2]);
+        let [a, b, c] = model.zones.nodes[0].map(|n| model.nodes.pos[n as usize]);
+        let (e, f) = ([c[0] - b[0], c[1] - b[1]], [a[0] - b[0], a[1] - b[1]]);
+        let along = (e[0] * f[0] + e[1] * f[1]) / (e[0] * e[0] + e[1] * e[1]);
+        let foot = [b[0] + along * e[0], b[1] + along * e[1]];
+        let n = model.zones.nodes[0][0] as usize;
+        model.nodes.disp[n] = [2.0 * (foot[0] - a[0]), 2.0 * (foot[1] - a[1])];
+        assert!(inverted_zones(&model) >= 1);
     }
 
     /// A block that moved further than the rock around it has departed by the difference; one

@@ -109,12 +109,13 @@ impl Stack {
     }
 
     /// The window the spectra are taken over: until the pulse has passed the gauge and rung
-    /// down (8 joint delays Z/2κ per joint and 10 round trips of the stack), then a fall over
-    /// one period of the peak frequency.
+    /// down (8 joint delays Z/2κ per joint and 19 round trips of the stack: near the edges of a
+    /// stack's stop bands, where the group delay is judged, its ringing lasts many round trips),
+    /// then a fall over one period of the peak frequency, within the record.
     fn taper(&self) -> Taper {
         let c = wave_speed(self.wave);
         let joint = impedance(self.wave) / (2.0 * self.stiffness);
-        let ring = 8.0 * self.joints as f64 * joint + 10.0 * 2.0 * self.thickness() / c;
+        let ring = 8.0 * self.joints as f64 * joint + 19.0 * 2.0 * self.thickness() / c;
         let arrival = 1.2 / FREQUENCY + self.gauge() / c;
         Taper {
             arrival,
@@ -376,9 +377,11 @@ mod tests {
     }
 
     /// The coarse twin of the report's rows, on its coarser zones: a P and an S pulse across one
-    /// joint and a P pulse across three, |T| within 3 % over the band; the group delay within 5 %
-    /// across one joint for P, within 10 % for the others (the report's 1 m rows: 7.4 % and
-    /// 9.6 %, a faint spurious arrival moving it at the band's edges).
+    /// joint (1 m zones) and a P pulse across three (0.5 m zones: the stack's window holds 19
+    /// round trips of its ringing, and on 1 m zones the mesh's coda within it moves the delay by
+    /// 22 %), |T| within 3 % over the band; the group delay within 5 % across one joint for P,
+    /// within 10 % for the others (7.4 % for S on 1 m zones, 7.5 % for the stack on 0.5 m,
+    /// measured: a faint spurious arrival moving it at the band's edges).
     #[test]
     fn a_pulse_crosses_joints_as_the_displacement_discontinuity_model_says() {
         for (wave, joints, delay) in [
@@ -391,7 +394,7 @@ mod tests {
                 joints,
                 spacing: 10.0,
                 stiffness: Stack::matched(wave, if joints == 1 { 1.0 } else { 0.5 }),
-                zone: 1.0,
+                zone: if joints == 1 { 1.0 } else { 0.5 },
             };
             let m = stack.run().unwrap();
             assert!(m.amplitude < 0.03 && m.delay < delay, "{:?}", m.report);

