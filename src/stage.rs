@@ -83,8 +83,10 @@ impl Staging {
         }
         model.inputs = stage.inputs.clone();
         let dynamic = stage.solve.mode == crate::scene::SolveMode::Dynamic;
-        if dynamic && model.peaks.is_none() {
-            model.peaks = Some(crate::dynamics::Peaks::new(model.nodes.len()));
+        match model.peaks.as_mut() {
+            Some(peaks) => peaks.begin(&model.nodes.vel),
+            None if dynamic => model.peaks = Some(crate::dynamics::Peaks::new(&model.nodes.vel)),
+            None => {}
         }
         if dynamic && model.ejection.is_none() {
             let open: Vec<u32> = (self.support.iter().enumerate())

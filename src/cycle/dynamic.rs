@@ -18,14 +18,17 @@ pub(super) struct Exchanged<'a> {
     pub supports: &'a [[f64; 2]],
 }
 
-/// What the step's damping acted on, for the energy balance: whether the motion stage damped the
-/// nodes (local or mass-proportional damping), β_R/Δt (`CycleParams::viscous_ratio`), and the
-/// zones' stress after the step (Pa), areas (m²), materials and laws (their moduli).
+/// What the step's damping and prescribed motions acted on, for the energy balance: whether the
+/// motion stage damped the nodes (local or mass-proportional damping), β_R/Δt
+/// (`CycleParams::viscous_ratio`), the zones' stress after the step (Pa), areas (m²), materials
+/// and laws (their moduli), and the force the rock put on a node this step (`internal`, N/m: on a
+/// held component, what the prescribed motion works against).
 pub(super) struct Damped<'a> {
     pub nodes: bool,
     pub viscous: f64,
     pub zones: &'a Zones,
     pub laws: &'a [Box<dyn ZoneLaw>],
+    pub internal: &'a dyn Fn(usize) -> [f64; 2],
 }
 
 /// The dynamic state of the model the stage reads and writes.
@@ -88,7 +91,7 @@ impl Dynamic<'_> {
             speed = q.absorb(moving, dt, time);
         }
         if let Some(peaks) = self.peaks.as_mut() {
-            peaks.record(&nodes.vel);
+            peaks.record(&nodes.vel, dt);
         }
         if let Some(ejection) = self.ejection.as_mut() {
             ejection.record(&nodes.mass, &nodes.vel);
@@ -97,6 +100,9 @@ impl Dynamic<'_> {
             let zones = damped.zones;
             let moduli = |z: usize| damped.laws[zones.material[z].0 as usize].moduli();
             e.damp_zones(&zones.stress, &zones.area, moduli, damped.viscous);
+            if let Some(inputs) = self.inputs.as_ref() {
+                e.drive(inputs.held(), damped.internal, &nodes.vel, dt);
+            }
             e.account(stepped(nodes, bodies, &exchanged), dt);
         }
         speed

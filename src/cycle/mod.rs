@@ -300,6 +300,7 @@ impl Cycle {
             viscous: p.viscous_ratio(),
             zones,
             laws,
+            internal: &|n| self.internal_force(&gathers, n),
         };
         let time = self.time;
         let speed = speed.max(dynamic.after_motion(nodes, bodies, exchanged, damped, time, p.dt));
@@ -544,12 +545,25 @@ impl Cycle {
     /// and support forces gathered as the motion stage does, before fixities and damping. At a
     /// fixed node its negative is the reaction of the support (a platen's load, for instance).
     pub fn node_force(&self, model: &Model, n: usize) -> [f64; 2] {
-        let mut f = model.nodes.applied[n];
+        let gathers = Gathers {
+            zones: &model.gather,
+            contacts: &model.contacts.gather,
+            supports: &model.support_gather,
+            far_field: &model.far_gather,
+        };
+        let [a, f] = [model.nodes.applied[n], self.internal_force(&gathers, n)];
+        [a[0] + f[0], a[1] + f[1]]
+    }
+
+    /// The force the rock, its joints, supports and far field put on node `n` in the last
+    /// cycle (its zone, contact, support and far-field forces gathered by `gathers`), N/m.
+    fn internal_force(&self, gathers: &Gathers, n: usize) -> [f64; 2] {
+        let mut f = [0.0; 2];
         let sources = [
-            (&model.gather, &self.zone_force),
-            (&model.contacts.gather, &self.contact_force),
-            (&model.support_gather, &self.support_force),
-            (&model.far_gather, &self.far_force),
+            (gathers.zones, &self.zone_force),
+            (gathers.contacts, &self.contact_force),
+            (gathers.supports, &self.support_force),
+            (gathers.far_field, &self.far_force),
         ];
         for (gather, forces) in sources {
             for &s in gather.of(n) {

@@ -5,7 +5,8 @@
 //!   E_n = ½ v_{n−½}ᵀ M v_{n+½} + ½ u_nᵀ K u_n,   E_n − E_0 = Σ_{k=1..n} ½(F_{k−1} + F_k)·(u_k − u_{k−1})
 //!
 //! exactly (the momentum equation at steps n and n − 1 dotted with v_{n−½}), so the balance
-//! takes the kinetic energy as ½ Σ m v⁻·v⁺ over the nodes (and ½ Σ M q̇⁻·q̇⁺ over the rigid and
+//! takes the kinetic energy as ½ Σ m v⁻·v⁺ over the nodes' free components (a held one moves
+//! as its boundary says, whose work on the rock is W's; and ½ Σ M q̇⁻·q̇⁺ over the rigid and
 //! simple blocks) after each step, the work of the applied loads (tractions, gravity, load
 //! histories, a quiet boundary's held reactions) by that trapezoid over the free components, the
 //! zones' strain energy from their stress change since the stage began,
@@ -28,8 +29,9 @@
 //! nodes), by the same trapezoid, negated; in the zones, the stiffness-proportional viscous stress
 //! σ_v = (β_R/Δt) Δσ by ½ A (σ_v,n−1 + σ_v,n) : D⁻¹ : Δσ_n over each step's stress change Δσ_n
 //! (exact for an elastic zone, whose strain increment is D⁻¹ Δσ; a yielding zone's viscous stress
-//! works on its elastic part only). Not yet counted: the damping of rigid and simple blocks, and the
-//! work of prescribed motions (their reactions are not loads).
+//! works on its elastic part only). The prescribed motions' work on the rock is in W: −½(G_{n−1} +
+//! G_n)·Δu over each held component, G the force the rock puts on it (`drive`). Not yet counted:
+//! the damping of rigid and simple blocks.
 
 use crate::law::Stress;
 
@@ -68,6 +70,9 @@ pub struct Energy {
     last_viscous: Vec<Stress>,
     /// The energy damping took so far, J/m.
     damping: f64,
+    /// Each held component's force from the rock at the last step (N/m) and its velocity then,
+    /// v_{n+½} (m/s), in the order `Inputs::held` gives them.
+    held_last: Vec<(f64, f64)>,
 }
 
 /// The balance's terms, J/m.
@@ -126,6 +131,36 @@ impl Energy {
             last_stress: stress.to_vec(),
             last_viscous: vec![[0.0; 4]; stress.len()],
             damping: 0.0,
+            held_last: Vec::new(),
+        }
+    }
+
+    /// After the step: the work of the prescribed motions on the rock, −½(G_{n−1} + G_n)·Δu over
+    /// each held component (`held`: node, axis), with G the force the rock put on it
+    /// (`internal`, N/m) and Δu = u_n − u_{n−1} = v_{n−½} Δt its move over the step before (the
+    /// motion held it at v_{n+½}, `vel`, m/s, for the next); counted as the loads' work W (not at
+    /// the balance's first step).
+    pub(crate) fn drive(
+        &mut self,
+        held: impl Iterator<Item = (u32, usize)>,
+        internal: &dyn Fn(usize) -> [f64; 2],
+        vel: &[[f64; 2]],
+        dt: f64,
+    ) {
+        let (mut work, mut k) = (0.0, 0);
+        for (n, axis) in held {
+            let (g, v) = (internal(n as usize)[axis], vel[n as usize][axis]);
+            match self.held_last.get_mut(k) {
+                Some(last) => {
+                    work -= 0.5 * (last.0 + g) * last.1 * dt;
+                    *last = (g, v);
+                }
+                None => self.held_last.push((g, v)),
+            }
+            k += 1;
+        }
+        if self.start_kinetic.is_some() {
+            self.work += work;
         }
     }
 
@@ -145,13 +180,13 @@ impl Energy {
             return;
         }
         let mut took = 0.0;
-        for n in 0..s.vel.len() {
+        for (n, gathered) in force.iter().enumerate() {
             let Some(free) = (s.free)(n) else {
                 continue;
             };
             let (before, after, last) = (self.before[n], s.vel[n], &mut self.last_damping[n]);
             for d in (0..2).filter(|&d| free[d]) {
-                let f = s.mass[n] * (after[d] - before[d]) / dt - force[n][d];
+                let f = s.mass[n] * (after[d] - before[d]) / dt - gathered[d];
                 took -= 0.5 * (last[d] + f) * before[d] * dt;
                 last[d] = f;
             }
@@ -196,7 +231,8 @@ impl Energy {
         self.body_before.copy_from_slice(body_vel);
     }
 
-    /// After the motion stage of a step of `dt` s: the kinetic energy ½ v⁻·M v⁺, the loads'
+    /// After the motion stage of a step of `dt` s: the kinetic energy ½ v⁻·M v⁺ over the free
+    /// components, the loads'
     /// work ½(F_{n−1} + F_n)·v⁻ Δt over the free components, the joints' energy and the supports'
     /// −½(f_{n−1} + f_n)·v⁻ Δt (none at the balance's first step, whose v⁻ moved the model before
     /// it began).
@@ -207,8 +243,8 @@ impl Energy {
                 continue;
             };
             let (before, after) = (self.before[n], s.vel[n]);
-            kinetic += 0.5 * s.mass[n] * (before[0] * after[0] + before[1] * after[1]);
             for d in (0..2).filter(|&d| free[d]) {
+                kinetic += 0.5 * s.mass[n] * before[d] * after[d];
                 let f = 0.5 * (self.last_applied[n][d] + s.applied[n][d]);
                 work += f * before[d] * dt;
             }

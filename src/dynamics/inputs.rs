@@ -35,6 +35,11 @@ impl Inputs {
         }
     }
 
+    /// The held components: each prescribed motion's nodes with its axis (0 x, 1 y).
+    pub(crate) fn held(&self) -> impl Iterator<Item = (u32, usize)> + '_ {
+        (self.motions.iter()).flat_map(|m| m.nodes.iter().map(move |&n| (n, m.axis)))
+    }
+
     /// When the list stops being in force: the held components come to rest (a held component
     /// keeps its velocity, so one a motion left moving would go on moving in the next stage,
     /// which holds it still or frees it), and the load histories come off the applied loads.

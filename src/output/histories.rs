@@ -90,7 +90,13 @@ impl Probes {
             Some(items[k])
         };
         match h.quantity {
-            Q::DisplacementX | Q::DisplacementY | Q::Displacement | Q::VelocityX | Q::VelocityY => {
+            Q::DisplacementX
+            | Q::DisplacementY
+            | Q::Displacement
+            | Q::VelocityX
+            | Q::VelocityY
+            | Q::AccelerationX
+            | Q::AccelerationY => {
                 let candidates = (0..nodes.len())
                     .filter(|&n| rock(blocks.block_of_node(n as u32)))
                     .collect();
@@ -152,6 +158,7 @@ impl Probes {
             let (u, o) = (nodes.disp[n], nodes.origin[n]);
             [u[0] - o[0], u[1] - o[1]]
         };
+        let accelerated = |n: usize| model.peaks.as_ref().map_or([0.0; 2], |p| p.acceleration[n]);
         let balance = model.energy.as_ref().map(|e| {
             let laws = &model.materials.zone;
             let quiet = model.quiet.as_ref().map_or(0.0, |q| q.net_outflow());
@@ -169,6 +176,8 @@ impl Probes {
                 }
                 Q::VelocityX => nodes.vel[p.at][0],
                 Q::VelocityY => nodes.vel[p.at][1],
+                Q::AccelerationX => accelerated(p.at)[0],
+                Q::AccelerationY => accelerated(p.at)[1],
                 Q::StressXx => zones.stress[p.at][0],
                 Q::StressYy => zones.stress[p.at][1],
                 Q::StressXy => zones.stress[p.at][3],
@@ -241,5 +250,43 @@ mod tests {
             nearest([[0.0, 0.0], [2.0, 0.0]].into_iter(), [1.5, 0.1]),
             Some(1)
         );
+    }
+
+    /// A dynamic run's acceleration history is the central difference's own, (v_{n+½} −
+    /// v_{n−½})/Δt: sampled every step, each sample is the change of the velocity history over
+    /// the step, damped or not.
+    #[test]
+    fn the_acceleration_is_the_velocitys_change_over_the_step() {
+        for damping in [r#""damping": 0"#, r#""damping": 0.1"#] {
+            let text = format!(
+                r#"{{ "name": "a", "materials": {{ "rock": {{ "density": 2500, "young": 1e10, "poisson": 0.25 }} }},
+                  "region": {{ "polygon": [[0, 0], [2, 0], [2, 10], [0, 10]], "edge_names": ["base", "right", "top", "left"], "material": "rock" }},
+                  "zoning": {{ "edge_at_excavation": 1.0, "edge_far": 1.0 }},
+                  "boundary": [{{ "part": "base", "fix": "xy" }}, {{ "part": "left", "fix": "x" }},
+                               {{ "part": "right", "fix": "x" }}, {{ "part": "top", "normal_stress": -1e6 }}],
+                  "solve": {{ "mode": "dynamic", "duration": 0.005, {damping}, "monitor_every": 1 }},
+                  "histories": [{{ "name": "v", "at": [1, 10], "quantity": "velocity_y" }},
+                                {{ "name": "a", "at": [1, 10], "quantity": "acceleration_y" }}],
+                  "output": {{ "checkpoints": false }} }}"#
+            );
+            let scene = crate::Scene::from_json(&text, "a").unwrap();
+            let out =
+                std::env::temp_dir().join(format!("adit-test-acceleration-{}", damping.len()));
+            crate::run_scene(&scene, &out, &mut crate::solve::Quiet).unwrap();
+            let csv = std::fs::read_to_string(out.join("histories.csv")).unwrap();
+            let _ = std::fs::remove_dir_all(&out);
+            let rows: Vec<Vec<f64>> = (csv.lines().skip(1))
+                .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
+                .collect();
+            let largest = rows.iter().map(|r| r[3].abs()).fold(0.0, f64::max);
+            assert!(largest > 1.0, "{damping}: {largest} m/s²");
+            for w in rows.windows(2).skip(1) {
+                let change = (w[1][2] - w[0][2]) / (w[1][1] - w[0][1]);
+                assert!(
+                    (w[1][3] - change).abs() < 1e-6 * largest,
+                    "{damping}: {w:?}"
+                );
+            }
+        }
     }
 }

@@ -118,6 +118,9 @@ pub enum HistoryQuantity {
     /// Velocity components, m/s.
     VelocityX,
     VelocityY,
+    /// A node's acceleration over the last step of a dynamic stage, m/s² (0 in static stages).
+    AccelerationX,
+    AccelerationY,
     /// Zone stress components, Pa.
     StressXx,
     StressYy,
@@ -154,6 +157,8 @@ impl HistoryQuantity {
             HistoryQuantity::Displacement => "displacement_m",
             HistoryQuantity::VelocityX => "velocity_x_m_per_s",
             HistoryQuantity::VelocityY => "velocity_y_m_per_s",
+            HistoryQuantity::AccelerationX => "acceleration_x_m_per_s2",
+            HistoryQuantity::AccelerationY => "acceleration_y_m_per_s2",
             HistoryQuantity::StressXx => "stress_xx_pa",
             HistoryQuantity::StressYy => "stress_yy_pa",
             HistoryQuantity::StressXy => "stress_xy_pa",

@@ -7,7 +7,8 @@
 //! through the base), and a Ricker wave brought in through a quiet base to a free top and out
 //! again (the incident wave's work in, the dashpots' out); and the step load on a column cut by
 //! two glued joints (their springs store what the rock passes them: `joint_energy`); and the step
-//! load damped locally and by Rayleigh damping (`damping_energy`). The error is the largest
+//! load damped locally and by Rayleigh damping (`damping_energy`); and a Ricker velocity prescribed
+//! on the base (the motion's work on the rock is in the loads' W). The error is the largest
 //! |W − ΔK − U − Q − J − D| over the record relative to the largest energy that entered.
 
 use std::time::Instant;
@@ -28,6 +29,8 @@ pub enum Loading {
     /// The step load on a column cut across by two glued joints at a third and two thirds of
     /// its height.
     JointedStep,
+    /// A Ricker velocity prescribed on the base (its y component held), the top free.
+    Shaken,
 }
 
 /// The glued joints' stiffness, kn = ks, Pa/m: about the rock's over 2 m, so that they hold a
@@ -41,6 +44,7 @@ impl Loading {
             Loading::Pulse => "pressure pulse on the top, base quiet",
             Loading::Incident => "P wave in through the quiet base, top free",
             Loading::JointedStep => "step load on the top, base fixed, two glued joints",
+            Loading::Shaken => "Ricker velocity prescribed on the base, top free",
         }
     }
 }
@@ -104,6 +108,11 @@ pub fn balance(
             serde_json::json!({ "part": "base", "quiet": true }),
             Some(serde_json::json!({ "part": "top", "normal_stress": -1e6, "history": ricker })),
         ),
+        Loading::Shaken => (
+            serde_json::json!({ "part": "base", "motion": { "direction": "y",
+                "velocity": { "pulse": "ricker", "amplitude": 1, "frequency": FREQUENCY } } }),
+            None,
+        ),
         Loading::Incident => (
             serde_json::json!({ "part": "base", "quiet": true,
                 "incident": { "wave": "p", "velocity": 1, "pulse": "ricker", "frequency": FREQUENCY } }),
@@ -135,8 +144,13 @@ pub fn balance(
     let histories: Vec<_> = (terms.iter())
         .map(|(n, q)| serde_json::json!({ "name": n, "quantity": q }))
         .collect();
+    // Its own name, so that runs side by side (the tests') write their own folders.
+    let name: String = format!("energy_{loading:?}_{damping:?}_{zone}")
+        .chars()
+        .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
+        .collect();
     let mut text = serde_json::json!({
-        "name": "energy_balance",
+        "name": name,
         "materials": { "rock": { "density": rho, "young": e, "poisson": nu } },
         "region": { "polygon": [[0, 0], [w, 0], [w, height], [0, height]],
                     "edge_names": ["base", "right", "top", "left"], "material": "rock" },
@@ -200,6 +214,7 @@ mod tests {
             Loading::Pulse,
             Loading::Incident,
             Loading::JointedStep,
+            Loading::Shaken,
         ] {
             let (report, relative) = balance(loading, Damping::None, 40.0, 1.0).unwrap();
             assert!(relative < 0.01, "{loading:?}: {:?}", report.errors);

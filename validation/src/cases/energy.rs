@@ -32,6 +32,7 @@ impl Case for EnergyBalance {
             Loading::Pulse,
             Loading::Incident,
             Loading::JointedStep,
+            Loading::Shaken,
         ] {
             for zone in [1.0, 0.5] {
                 let (r, relative) = balance(loading, Damping::None, 60.0, zone)?;
@@ -55,7 +56,7 @@ impl Case for EnergyBalance {
         let _ = writeln!(
             md,
             "The energy histories (`kinetic_energy`, `strain_energy`, `boundary_work`, \
-             `quiet_energy`, `energy_error`: `dynamics::Energy`, `docs/theory.md`) of three \
+             `quiet_energy`, `energy_error`: `dynamics::Energy`, `docs/theory.md`) of four \
              undamped elastic columns of the quiet section's rock, 2 m × 60 m, sides on rollers: \
              a step normal stress of −1 MPa on the top over a fixed base (nothing leaves: the \
              energy rings between kinetic and strain), a Ricker pressure pulse of 1 MPa at 25 Hz \
@@ -67,8 +68,11 @@ impl Case for EnergyBalance {
              (`joint_energy`: each contact's stresses by the same trapezoid over its \
              increments; it leaves 1e-7 rather than round-off, as each step takes the \
              contacts' normals and lengths where the nodes are now: a small geometric \
-             nonlinearity). \
-             The balance takes the kinetic energy ½ v⁻·M v⁺ after each step, the loads' work by \
+             nonlinearity); and a Ricker velocity of 1 m/s at 25 Hz prescribed on the base (its \
+             y component held), the top free (the motion's work on the rock, −½(G_{{n−1}} + G_n)·Δu \
+             over the held components with G the force the rock puts on them, in the loads' W). \
+             The balance takes the kinetic energy ½ v⁻·M v⁺ over the free components after each \
+             step, the loads' work by \
              the trapezoid over each step's displacement, the zones' strain energy from their \
              stress change, and the net energy out through the quiet boundaries (their dashpots' \
              and incident waves' work by the same trapezoid): for a linear model the central \
