@@ -90,12 +90,9 @@ impl FactorOfSafety {
     /// so the factor is where a path-dependent flow stopped, not a property of the rock; it names
     /// the largest factor tried whose trial turned none.
     pub fn inverted_warning(&self) -> Option<String> {
-        let found = (self.trials.iter()).find(|t| t.stable && t.factor == self.factor)?;
+        let found = self.at_factor()?;
         (found.inverted > 0).then(|| {
-            let sound = (self.trials.iter())
-                .filter(|t| t.stable && t.inverted == 0)
-                .map(|t| t.factor)
-                .fold(0.0, f64::max);
+            let sound = self.largest_whole();
             format!(
                 "factor of safety {:.4}: its trial turned {} zones inside out (nodes moved up to \
                  {:.2} m from the stage's equilibrium): the rock has passed through itself, which \
@@ -104,6 +101,19 @@ impl FactorOfSafety {
                 self.factor, found.inverted, found.displacement_m
             )
         })
+    }
+
+    /// The trial at the factor of safety (a stable one; none when no trial was stable).
+    pub fn at_factor(&self) -> Option<&Trial> {
+        (self.trials.iter()).find(|t| t.stable && t.factor == self.factor)
+    }
+
+    /// The largest factor tried whose trial was stable and turned no zone inside out (0: none).
+    pub fn largest_whole(&self) -> f64 {
+        (self.trials.iter())
+            .filter(|t| t.stable && t.inverted == 0)
+            .map(|t| t.factor)
+            .fold(0.0, f64::max)
     }
 
     /// The factor, its bracket and the trials.

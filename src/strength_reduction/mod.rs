@@ -77,15 +77,16 @@ pub fn search(
             laws.put(&mut model.materials);
             return Ok(Searched::Interrupted);
         }
-        let displacement = largest_move(&at_rest, &model.nodes.disp);
-        let departed = farthest_departure(model, &at_rest, &touching);
+        let moved = distances(&at_rest, &model.nodes.disp);
+        let displacement = moved.iter().fold(0.0, |m: f64, &d| m.max(d));
+        let departed = farthest_departure(model, &moved, &touching);
         let inverted = inverted_zones(model);
         let stable = solution.status == Status::Converged && moving.is_none() && departed <= limit;
         if !stable {
             let mut at = Vec::new();
             state::save(model, &mut at);
             mechanism = Some(at);
-            moving_blocks = moved_blocks(model, &at_rest);
+            moving_blocks = moved_blocks(model, &moved);
         }
         bracket.record(factor, stable);
         let reason = match &solution.status {
@@ -119,11 +120,12 @@ pub fn search(
 /// The default `displacement_limit`: this fraction of the region's size.
 pub const DISPLACEMENT_LIMIT: f64 = 0.01;
 
-/// The largest distance between a node's displacement in `from` and in `to`, m.
-fn largest_move(from: &[[f64; 2]], to: &[[f64; 2]]) -> f64 {
+/// Each node's distance between its displacement in `from` and in `to`, m: how far it moved in
+/// a trial, which the trial's largest displacement, its blocks' departures and its mechanism read.
+fn distances(from: &[[f64; 2]], to: &[[f64; 2]]) -> Vec<f64> {
     (from.iter().zip(to))
         .map(|(a, b)| (b[0] - a[0]).hypot(b[1] - a[1]))
-        .fold(0.0, f64::max)
+        .collect()
 }
 
 /// The blocks each block touched at the stage's equilibrium (either side of a contact).
@@ -142,18 +144,16 @@ fn neighbours(model: &Model) -> Vec<Vec<u32>> {
 }
 
 /// How far the block that left the rock around it furthest moved beyond it, m: for each block,
-/// the least distance one of its nodes moved from `at_rest` (the nodes' displacements) less the
-/// most one of the nodes of the blocks it touched at the stage's equilibrium (`touching`) moved;
-/// the largest over the blocks (0 when none moved further than the rock around it).
-fn farthest_departure(model: &Model, at_rest: &[[f64; 2]], touching: &[Vec<u32>]) -> f64 {
+/// the least distance one of its nodes moved (`moved`, per node, m) less the most one of the
+/// nodes of the blocks it touched at the stage's equilibrium (`touching`) moved; the largest over
+/// the blocks (0 when none moved further than the rock around it).
+fn farthest_departure(model: &Model, moved: &[f64], touching: &[Vec<u32>]) -> f64 {
     let blocks = &model.blocks;
     let moves = |b: usize| {
         let nodes = blocks.node_start[b] as usize..blocks.node_start[b + 1] as usize;
-        (at_rest[nodes.clone()].iter().zip(&model.nodes.disp[nodes]))
-            .map(|(a, d)| (d[0] - a[0]).hypot(d[1] - a[1]))
-            .fold((f64::INFINITY, 0.0f64), |(least, most), m| {
-                (least.min(m), most.max(m))
-            })
+        (moved[nodes].iter()).fold((f64::INFINITY, 0.0f64), |(least, most), &m| {
+            (least.min(m), most.max(m))
+        })
     };
     let span: Vec<(f64, f64)> = (0..blocks.len()).map(moves).collect();
     (0..blocks.len())
@@ -192,26 +192,27 @@ fn inverted_zones(model: &Model) -> usize {
 /// The most blocks a mechanism names.
 const MECHANISM_BLOCKS: usize = 10;
 
-/// The blocks of `model` that moved from `at_rest` (the nodes' displacements) at least half as
-/// far as the farthest, farthest first, at most [`MECHANISM_BLOCKS`].
-fn moved_blocks(model: &Model, at_rest: &[[f64; 2]]) -> Vec<MovingBlock> {
+/// The blocks of `model` whose nodes moved (`moved`, per node, m) at least half as far as the
+/// farthest block's, farthest first, at most [`MECHANISM_BLOCKS`]; a block's move is its
+/// farthest node's.
+fn moved_blocks(model: &Model, moved: &[f64]) -> Vec<MovingBlock> {
     let blocks = &model.blocks;
-    let mut moved: Vec<MovingBlock> = (0..blocks.len())
+    let mut named: Vec<MovingBlock> = (0..blocks.len())
         .filter(|&b| !blocks.is_removed(b))
         .map(|b| {
             let nodes = blocks.node_start[b] as usize..blocks.node_start[b + 1] as usize;
             MovingBlock {
                 block: b as u32,
                 at: blocks.node_mean(b, &model.nodes.pos),
-                displacement_m: largest_move(&at_rest[nodes.clone()], &model.nodes.disp[nodes]),
+                displacement_m: moved[nodes].iter().fold(0.0, |m: f64, &d| m.max(d)),
             }
         })
         .collect();
-    let farthest = moved.iter().map(|m| m.displacement_m).fold(0.0, f64::max);
-    moved.retain(|m| m.displacement_m >= 0.5 * farthest && farthest > 0.0);
-    moved.sort_by(|a, b| b.displacement_m.total_cmp(&a.displacement_m));
-    moved.truncate(MECHANISM_BLOCKS);
-    moved
+    let farthest = named.iter().map(|m| m.displacement_m).fold(0.0, f64::max);
+    named.retain(|m| m.displacement_m >= 0.5 * farthest && farthest > 0.0);
+    named.sort_by(|a, b| b.displacement_m.total_cmp(&a.displacement_m));
+    named.truncate(MECHANISM_BLOCKS);
+    named
 }
 
 /// Put a state saved by `checkpoint::state::save` of this model back into it.
@@ -514,11 +515,13 @@ mod tests {
         for n in nodes(block) {
             model.nodes.disp[n] = [at_rest[n][0] + 3.0, at_rest[n][1] - 0.5];
         }
-        let departed = farthest_departure(&model, &at_rest, &touching);
+        let departed =
+            farthest_departure(&model, &distances(&at_rest, &model.nodes.disp), &touching);
         assert!((departed - 3.0f64.hypot(0.5)).abs() < 1e-12, "{departed}");
         // The base flows under it as far at one node: the block rode the flow.
         let base = nodes(1 - block).start;
         model.nodes.disp[base] = [at_rest[base][0] + 3.5, at_rest[base][1]];
-        assert_eq!(farthest_departure(&model, &at_rest, &touching), 0.0);
+        let moved = distances(&at_rest, &model.nodes.disp);
+        assert_eq!(farthest_departure(&model, &moved, &touching), 0.0);
     }
 }

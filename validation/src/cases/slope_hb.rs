@@ -33,17 +33,8 @@ pub struct SlopeHoekBrown;
 /// The zones the trial at a search's factor of safety turned inside out and its largest node
 /// displacement, m (none and 0 when no trial was stable).
 fn at_factor(fos: &FactorOfSafety) -> (usize, f64) {
-    (fos.trials.iter())
-        .find(|t| t.stable && t.factor == fos.factor)
+    fos.at_factor()
         .map_or((0, 0.0), |t| (t.inverted, t.displacement_m))
-}
-
-/// The largest factor a search found stable with no zone turned inside out (0: none).
-fn whole_factor(fos: &FactorOfSafety) -> f64 {
-    (fos.trials.iter())
-        .filter(|t| t.stable && t.inverted == 0)
-        .map(|t| t.factor)
-        .fold(0.0, f64::max)
 }
 
 impl Case for SlopeHoekBrown {
@@ -170,8 +161,8 @@ impl Case for SlopeHoekBrown {
             explicit_at.1,
             auto_at.0,
             explicit_at.0,
-            whole_factor(&tunnel_fos),
-            whole_factor(&tunnel_explicit),
+            tunnel_fos.largest_whole(),
+            tunnel_explicit.largest_whole(),
             100.0 * APART_BAR,
         );
         let _ = writeln!(md, "Bars: {}.\n", verdict(&missed));
