@@ -12,6 +12,7 @@ pub mod cycle;
 mod damping;
 pub mod dynamics;
 pub mod far_field;
+pub mod flow;
 pub mod implicit;
 pub mod interrupt;
 pub mod joint;

@@ -49,7 +49,7 @@ pub mod assemble;
 mod bodies;
 mod commit;
 mod drive;
-mod factor;
+pub(crate) mod factor;
 mod moving;
 mod steps;
 mod structural;

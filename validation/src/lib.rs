@@ -13,6 +13,7 @@ pub mod drop;
 pub mod energy;
 pub mod equivalent;
 pub mod far_field;
+pub mod flow_network;
 pub mod flutter;
 pub mod free_field;
 pub mod glued;

@@ -10,6 +10,7 @@ mod direct_shear;
 mod energy;
 mod equivalent;
 mod far_field;
+mod flow_network;
 mod free_field;
 mod glued;
 mod grains;
@@ -101,5 +102,6 @@ pub fn all() -> Vec<Box<dyn Case>> {
         Box::new(pao_mow::PaoMow),
         Box::new(newmark::NewmarkBlock),
         Box::new(energy::EnergyBalance),
+        Box::new(flow_network::FlowNetwork),
     ]
 }
