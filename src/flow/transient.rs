@@ -112,6 +112,11 @@ impl Transient {
         }
     }
 
+    /// The largest flow through a pipe the ratio has seen, m²/s per metre: its denominator.
+    pub fn largest_flow(&self) -> f64 {
+        self.largest_flow
+    }
+
     /// Step by `dt` s until the flow ratio falls below `ratio`, at most `max_steps` steps; the
     /// steps taken, or an error when they do not reach it.
     pub fn run_to_ratio(
