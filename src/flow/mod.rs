@@ -9,11 +9,15 @@
 //! stepped explicitly at its derived stable step (`transient.rs`). Heads are pressures plus
 //! ρw g y (y up, m), so that water at rest in a column carries the hydrostatic gradient.
 //!
-//! Not yet here (issue 51 continues): the network built from the blocks' contacts, the pressure
-//! acting on the blocks and the joint laws' effective stress, and the scene's fields for water;
-//! no scene reaches this module yet.
+//! The network of a model's joints (`build.rs`): domains where the joint faces' nodes meet, pipes
+//! along the joint edges between blocks.
+//!
+//! Not yet here (issue 51 continues): the apertures following the contacts, the pressure acting
+//! on the blocks and the joint laws' effective stress, and the scene's fields for water; no scene
+//! reaches this module yet.
 
 mod aperture;
+mod build;
 mod cubic;
 mod fluid;
 mod network;
@@ -21,6 +25,7 @@ mod steady;
 mod transient;
 
 pub use aperture::HydraulicAperture;
+pub use build::{JointNetwork, NO_DOMAIN, joint_network};
 pub use cubic::cubic_law_conductance;
 pub use fluid::Fluid;
 pub use network::{DomainId, Domains, Network, Pipes};
