@@ -52,7 +52,7 @@ pub fn joint_network(
                 let p = pos[n as usize];
                 let d = *at_place
                     .entry(p.map(f64::to_bits))
-                    .or_insert_with(|| out.network.add_domain(f64::MIN_POSITIVE, p[1], 0.0));
+                    .or_insert_with(|| out.network.add_domain(0.0, p[1], 0.0));
                 out.domain_of[n as usize] = d.0;
                 d
             });
@@ -75,7 +75,6 @@ pub fn joint_network(
         }
     }
     let (domains, pipes) = (&mut out.network.domains, &out.network.pipes);
-    domains.volume.iter_mut().for_each(|v| *v = 0.0);
     for ((&[a, b], &ap), &l) in pipes.ends.iter().zip(&pipes.aperture).zip(&pipes.length) {
         domains.volume[a.0 as usize] += 0.5 * ap * l;
         domains.volume[b.0 as usize] += 0.5 * ap * l;

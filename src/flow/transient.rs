@@ -62,20 +62,32 @@ impl Transient {
     /// Advance `net`'s pressures by `dt` s; refused, naming both, when `dt` exceeds the stable
     /// step.
     pub fn step(&mut self, net: &mut Network, dt: f64) -> Result<(), String> {
-        if !(dt > 0.0 && dt <= self.limit) {
-            return Err(format!(
-                "flow: the step {dt:.4e} s is not within the fluid's stable step {:.4e} s \
-                 (min V / (Kw Σ C) over the domains)",
-                self.limit
-            ));
-        }
+        self.stable(dt)?;
         self.advance(net, dt);
         Ok(())
+    }
+
+    /// `dt` (s), or an error naming it and the stable step when it is not within it.
+    fn stable(&self, dt: f64) -> Result<(), String> {
+        if dt > 0.0 && dt <= self.limit {
+            return Ok(());
+        }
+        Err(format!(
+            "flow: the step {dt:.4e} s is not within the fluid's stable step {:.4e} s \
+             (min V / (Kw Σ C) over the domains)",
+            self.limit
+        ))
     }
 
     /// One forward step of `dt` s, unchecked.
     fn advance(&mut self, net: &mut Network, dt: f64) {
         self.balance(net);
+        self.gain(net, dt);
+    }
+
+    /// Each free domain's pressure by the water it gained over `dt` s at the inflows `balance`
+    /// left in the scratch.
+    fn gain(&self, net: &mut Network, dt: f64) {
         let d = &mut net.domains;
         let k = self.fluid.bulk_modulus * dt;
         for i in 0..d.len() {
@@ -126,11 +138,13 @@ impl Transient {
         ratio: f64,
         max_steps: usize,
     ) -> Result<usize, String> {
+        self.stable(dt)?;
         for n in 0..max_steps {
+            // The ratio's balance is the step's: its inflows move the pressures.
             if self.ratio(net) < ratio {
                 return Ok(n);
             }
-            self.step(net, dt)?;
+            self.gain(net, dt);
         }
         Err(format!(
             "flow: the flow ratio is still {:.3e} after {max_steps} steps (asked {ratio:.1e})",
